@@ -1,0 +1,140 @@
+//! Avalanching (MODEL.md section 5): sand cannot stand steeper than its
+//! angle of repose θr.
+//!
+//! With s = Δx tan θr, the surface must satisfy |y_{i+1} − y_i| ≤ s. The
+//! downslope constraint y_{i+1} ≥ y_i − s says g_i = y_i + s i is
+//! non-decreasing; the upslope one says y_i − s i is non-increasing. Each is
+//! restored by one pass of the pool-adjacent-violators algorithm with the
+//! trapezoid node weights: every pooled run of nodes is replaced by a line at
+//! exactly the angle of repose holding the same weighted area, so soil moves
+//! from above that line to below it (downslope) and area is conserved
+//! exactly. The two passes alternate until neither pools anything.
+//!
+//! State travels with the soil: the soil removed from the nodes above the
+//! line is mixed (mass-weighted) and deposited on the nodes below it, whose
+//! unit weight and accumulated shear become the mass-weighted mean of their
+//! column and the deposit. Mass is therefore conserved exactly as well.
+
+use crate::surface::Surface;
+
+/// Violations smaller than this fraction of s are round-off, not slopes.
+const SLOPE_TOLERANCE: f64 = 1e-9;
+/// Alternating passes before giving up on the last round-off residue.
+const MAX_PASSES: usize = 64;
+
+/// A pooled run of nodes: first node, node count, Σw, Σw g.
+#[derive(Clone, Copy, Debug)]
+struct Pool {
+    start: usize,
+    len: usize,
+    weight: f64,
+    weighted: f64,
+}
+
+impl Pool {
+    fn mean(&self) -> f64 {
+        self.weighted / self.weight
+    }
+}
+
+/// Reusable scratch for avalanching (no allocation per step).
+#[derive(Debug, Default)]
+pub struct Avalanche {
+    pools: Vec<Pool>,
+    old_height: Vec<f64>,
+}
+
+impl Avalanche {
+    /// Relaxes every slope steeper than `tan_repose` among the nodes from
+    /// `first` (the face) to the end of the domain.
+    pub fn relax(&mut self, surface: &mut Surface, first: usize, tan_repose: f64) {
+        let s = surface.spacing * tan_repose;
+        for _ in 0..MAX_PASSES {
+            let down = self.pass(surface, first, s, 1.0);
+            let up = self.pass(surface, first, s, -1.0);
+            if !down && !up {
+                break;
+            }
+        }
+    }
+
+    /// One pool-adjacent-violators pass on g_i = σ y_i + s (i − first);
+    /// returns whether anything moved.
+    fn pass(&mut self, surface: &mut Surface, first: usize, s: f64, sign: f64) -> bool {
+        self.pools.clear();
+        let tolerance = SLOPE_TOLERANCE * s;
+        for i in first..surface.len() {
+            let w = surface.node_weight(i, first);
+            let g = sign * surface.height[i] + s * (i - first) as f64;
+            self.pools.push(Pool {
+                start: i,
+                len: 1,
+                weight: w,
+                weighted: w * g,
+            });
+            while self.pools.len() >= 2 {
+                let top = self.pools[self.pools.len() - 1];
+                let below = self.pools[self.pools.len() - 2];
+                if below.mean() <= top.mean() + tolerance {
+                    break;
+                }
+                self.pools.pop();
+                let merged = self.pools.last_mut().expect("two pools");
+                merged.len += top.len;
+                merged.weight += top.weight;
+                merged.weighted += top.weighted;
+            }
+        }
+        let mut moved = false;
+        for k in 0..self.pools.len() {
+            let pool = self.pools[k];
+            if pool.len > 1 {
+                moved = true;
+                self.level(surface, first, pool, s, sign);
+            }
+        }
+        moved
+    }
+
+    /// Replaces the pooled run by the repose line and moves state with soil.
+    fn level(&mut self, surface: &mut Surface, first: usize, pool: Pool, s: f64, sign: f64) {
+        let range = pool.start..pool.start + pool.len;
+        self.old_height.clear();
+        self.old_height.extend_from_slice(&surface.height[range.clone()]);
+        let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
+        for i in range.clone() {
+            let new = sign * (pool.mean() - s * (i - first) as f64);
+            let w = surface.node_weight(i, first) * surface.spacing;
+            let delta = (new - surface.height[i]) * w;
+            if delta < 0.0 {
+                let m = -delta * surface.unit_weight[i];
+                lost_area -= delta;
+                lost_mass += m;
+                lost_shear += m * surface.accumulated_shear[i];
+            } else {
+                gained_area += delta;
+            }
+            surface.height[i] = new;
+        }
+        if gained_area <= 0.0 || lost_area <= 0.0 {
+            return;
+        }
+        // Deposit exactly the removed mass, spread over the gained area.
+        let deposit_weight = lost_mass / gained_area;
+        let deposit_shear = lost_shear / lost_mass;
+        for (k, i) in range.enumerate() {
+            let w = surface.node_weight(i, first) * surface.spacing;
+            let old_area = (self.old_height[k] - surface.floor) * w;
+            let gain = (surface.height[i] - self.old_height[k]) * w;
+            if gain <= 0.0 {
+                continue;
+            }
+            let old_mass = surface.unit_weight[i] * old_area;
+            let new_mass = old_mass + deposit_weight * gain;
+            surface.accumulated_shear[i] = (old_mass * surface.accumulated_shear[i]
+                + deposit_weight * gain * deposit_shear)
+                / new_mass;
+            surface.unit_weight[i] = new_mass / (old_area + gain);
+        }
+    }
+}

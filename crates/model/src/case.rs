@@ -1,0 +1,287 @@
+//! A fully resolved, validated simulation case: plain data, every default
+//! already filled in by whoever read the case file.
+//!
+//! Lengths are in any consistent unit (the paper's cases use mm); angles are
+//! in degrees; unit weight in force per length³ of the same length unit.
+
+use std::fmt;
+
+/// Which of the paper's two models to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Model {
+    /// Kashizadeh (2018): one slip line, incompressible, softening.
+    Original,
+    /// Jin & Hambleton: shear band of width dB, hardening-softening, dilatancy.
+    Refined,
+}
+
+impl Model {
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Original => "original",
+            Model::Refined => "refined",
+        }
+    }
+}
+
+/// An angle that evolves with accumulated shear: `initial` at ut = 0,
+/// `peak` at ut = up, `residual` from ut = ur on (degrees).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AngleLaw {
+    pub initial: f64,
+    pub peak: f64,
+    pub residual: f64,
+}
+
+impl AngleLaw {
+    /// The same angle at every stage.
+    pub fn constant(angle: f64) -> Self {
+        AngleLaw {
+            initial: angle,
+            peak: angle,
+            residual: angle,
+        }
+    }
+
+    fn values(&self) -> [f64; 3] {
+        [self.initial, self.peak, self.residual]
+    }
+
+    pub fn min(&self) -> f64 {
+        self.values().into_iter().fold(f64::INFINITY, f64::min)
+    }
+
+    pub fn max(&self) -> f64 {
+        self.values().into_iter().fold(f64::NEG_INFINITY, f64::max)
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blade {
+    /// d: depth of the blade tip below the undisturbed surface.
+    pub depth: f64,
+    /// φw: blade-soil friction angle, degrees.
+    pub wall_friction: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Soil {
+    /// γ0: initial unit weight.
+    pub unit_weight: f64,
+    /// φc → φp → φr (degrees). The original model has `initial == peak`.
+    pub friction: AngleLaw,
+    /// ψc → ψp → ψr (degrees). The original model has all zero.
+    pub dilation: AngleLaw,
+    /// up: accumulated shear at the peak (0 in the original model).
+    pub peak_shear: f64,
+    /// ur: accumulated shear at which the residual values are reached.
+    pub residual_shear: f64,
+    /// θr: angle of repose for avalanching, degrees.
+    pub repose: f64,
+    /// dB: shear band width (0 in the original model: a slip line).
+    pub band_width: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Run {
+    /// Total blade displacement.
+    pub travel: f64,
+    /// v0: blade displacement per increment (also the node spacing).
+    pub increment: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Case {
+    pub name: String,
+    pub title: String,
+    pub model: Model,
+    pub blade: Blade,
+    pub soil: Soil,
+    pub run: Run,
+}
+
+/// Largest number of increments a case may ask for (memory and time guard).
+pub const MAX_STEPS: f64 = 2.0e7;
+
+/// Why a case cannot be run: the offending key (dotted path as in the case
+/// file) and what it must satisfy.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseError {
+    pub key: String,
+    pub message: String,
+}
+
+impl CaseError {
+    pub fn new(key: &str, message: impl Into<String>) -> Self {
+        CaseError {
+            key: key.to_string(),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for CaseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.key, self.message)
+    }
+}
+
+impl std::error::Error for CaseError {}
+
+fn finite(key: &str, value: f64) -> Result<f64, CaseError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(CaseError::new(key, format!("must be a finite number (got {value})")))
+    }
+}
+
+fn positive(key: &str, value: f64) -> Result<(), CaseError> {
+    if finite(key, value)? > 0.0 {
+        Ok(())
+    } else {
+        Err(CaseError::new(key, format!("must be > 0 (got {value})")))
+    }
+}
+
+fn non_negative(key: &str, value: f64) -> Result<(), CaseError> {
+    if finite(key, value)? >= 0.0 {
+        Ok(())
+    } else {
+        Err(CaseError::new(key, format!("must be >= 0 (got {value})")))
+    }
+}
+
+fn open_range(key: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<(), CaseError> {
+    let v = finite(key, value)?;
+    if v > lo && v < hi {
+        Ok(())
+    } else {
+        Err(CaseError::new(
+            key,
+            format!("must be in ({lo}{unit}, {hi}{unit}) (got {value}{unit})"),
+        ))
+    }
+}
+
+impl Case {
+    /// Number of increments: the run ends at the first increment at or beyond
+    /// `travel` (a travel within 1e-9 of a whole number of increments counts
+    /// as that number).
+    pub fn steps(&self) -> usize {
+        let ratio = self.run.travel / self.run.increment;
+        (ratio - 1e-9 * ratio.max(1.0)).ceil().max(1.0) as usize
+    }
+
+    /// Checks every value against its allowed range; the error names the key.
+    pub fn validate(&self) -> Result<(), CaseError> {
+        positive("blade.depth", self.blade.depth)?;
+        self.validate_soil()?;
+        self.validate_wall_friction()?;
+        self.validate_run()
+    }
+
+    fn validate_wall_friction(&self) -> Result<(), CaseError> {
+        let phi_w = finite("blade.wall_friction", self.blade.wall_friction)?;
+        let phi_min = self.soil.friction.min();
+        if !(0.0..phi_min).contains(&phi_w) {
+            return Err(CaseError::new(
+                "blade.wall_friction",
+                format!(
+                    "must be in [0°, {phi_min}°), below every soil friction angle (got {phi_w}°)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_soil(&self) -> Result<(), CaseError> {
+        let s = &self.soil;
+        positive("soil.unit_weight", s.unit_weight)?;
+        let f = &s.friction;
+        for (key, v) in [
+            ("soil.friction.initial", f.initial),
+            ("soil.friction.peak", f.peak),
+            ("soil.friction.residual", f.residual),
+        ] {
+            open_range(key, v, 0.0, 90.0, "°")?;
+            // β > 0 and β + φ + φw < 90° must leave room for a mechanism.
+            if v + self.blade.wall_friction >= 90.0 {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "φ + φw must be < 90° for any admissible mechanism (β + φ + φw < 90°, β > 0); got {v}° + {}°",
+                        self.blade.wall_friction
+                    ),
+                ));
+            }
+        }
+        if f.residual > f.peak {
+            return Err(CaseError::new(
+                "soil.friction.residual",
+                format!("must be <= soil.friction.peak ({}°) (got {}°)", f.peak, f.residual),
+            ));
+        }
+        if f.initial > f.peak {
+            return Err(CaseError::new(
+                "soil.friction.initial",
+                format!("must be <= soil.friction.peak ({}°) (got {}°)", f.peak, f.initial),
+            ));
+        }
+        let d = &s.dilation;
+        for (key, v) in [
+            ("soil.dilation.initial", d.initial),
+            ("soil.dilation.peak", d.peak),
+            ("soil.dilation.residual", d.residual),
+        ] {
+            open_range(key, v, -45.0, 45.0, "°")?;
+        }
+        non_negative("soil.peak_shear", s.peak_shear)?;
+        non_negative("soil.residual_shear", s.residual_shear)?;
+        if s.residual_shear < s.peak_shear {
+            return Err(CaseError::new(
+                "soil.residual_shear",
+                format!(
+                    "must be >= soil.peak_shear ({}) (got {})",
+                    s.peak_shear, s.residual_shear
+                ),
+            ));
+        }
+        open_range("soil.repose", s.repose, 0.0, 90.0, "°")?;
+        non_negative("soil.band_width", s.band_width)?;
+        if s.band_width >= self.blade.depth {
+            return Err(CaseError::new(
+                "soil.band_width",
+                format!(
+                    "must be < blade.depth ({}) (got {})",
+                    self.blade.depth, s.band_width
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_run(&self) -> Result<(), CaseError> {
+        positive("run.travel", self.run.travel)?;
+        positive("run.increment", self.run.increment)?;
+        if self.run.increment >= self.blade.depth {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "must be in (0, blade.depth = {}) (got {})",
+                    self.blade.depth, self.run.increment
+                ),
+            ));
+        }
+        let steps = self.run.travel / self.run.increment;
+        if steps > MAX_STEPS {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "run.travel / run.increment must be <= {MAX_STEPS:e} increments (got {steps:.3e})"
+                ),
+            ));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,21 @@
+//! soilcut-model: the soil cutting simulation of Jin & Hambleton,
+//! "Simulation of the Cutting Process in Softening and Hardening Soils",
+//! by sequential limit analysis. A pure library: no files, no terminal.
+//!
+//! Start from a [`Case`], create a [`Simulation`] and call
+//! [`Simulation::step`] (or [`Simulation::run_to_end`]).
+
+pub mod avalanche;
+pub mod case;
+pub mod kinematics;
+pub mod material;
+pub mod mechanism;
+pub mod peaks;
+pub mod search;
+pub mod simulation;
+pub mod summary;
+pub mod surface;
+
+pub use case::{AngleLaw, Blade, Case, CaseError, Model, Run, Soil};
+pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};
+pub use summary::{Peak, Summary};

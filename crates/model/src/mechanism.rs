@@ -1,0 +1,85 @@
+//! The force on the blade for one trial mechanism: paper Eq. (1).
+//!
+//! Equilibrium of the rigid block (weight W) pushed by the blade (reaction
+//! inclined at φw below the face normal, the block sliding up the face) and
+//! resisted by the slip surface (reaction inclined at φ to its normal) gives
+//!
+//! ```text
+//! P = W tan(β + φ) / (cos φw − sin φw tan(β + φ)) = W sin(β + φ) / cos(β + φ + φw)   (1)
+//! ```
+//!
+//! Dividing numerator and denominator by cos β gives the form used in the
+//! search loop, trigonometry-free in t = tan β:
+//!
+//! ```text
+//! P / W = (t cos φ + sin φ) / (cos(φ + φw) − t sin(φ + φw))
+//! ```
+//!
+//! A mechanism is admissible only for β > 0 and β + φ + φw < 90°, i.e. for
+//! t > 0 and a positive denominator.
+
+/// Eq. (1) for one friction angle φ and wall friction φw, precomputed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForceFactor {
+    cos_phi: f64,
+    sin_phi: f64,
+    cos_phi_w: f64,
+    sin_phi_w: f64,
+}
+
+impl ForceFactor {
+    /// `phi`, `wall_friction` in radians.
+    pub fn new(phi: f64, wall_friction: f64) -> Self {
+        ForceFactor {
+            cos_phi: phi.cos(),
+            sin_phi: phi.sin(),
+            cos_phi_w: (phi + wall_friction).cos(),
+            sin_phi_w: (phi + wall_friction).sin(),
+        }
+    }
+
+    /// P / W at t = tan β, or `None` if the mechanism is not admissible.
+    #[inline]
+    pub fn at(&self, t: f64) -> Option<f64> {
+        let denominator = self.cos_phi_w - t * self.sin_phi_w;
+        if t > 0.0 && denominator > 0.0 {
+            Some((t * self.cos_phi + self.sin_phi) / denominator)
+        } else {
+            None
+        }
+    }
+
+    /// The infimum of P / W over admissible β (β → 0): sin φ / cos(φ + φw).
+    /// P / W grows with β and with φ, so this bounds every candidate.
+    pub fn at_zero_angle(&self) -> f64 {
+        self.sin_phi / self.cos_phi_w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tangent_form_equals_eq_1() {
+        let (phi, phi_w) = (33f64.to_radians(), 12f64.to_radians());
+        let f = ForceFactor::new(phi, phi_w);
+        for beta_deg in [5.0, 20.0, 35.0, 44.0] {
+            let beta = f64::to_radians(beta_deg);
+            let tan_form = (beta + phi).tan() / (phi_w.cos() - phi_w.sin() * (beta + phi).tan());
+            let sin_form = (beta + phi).sin() / (beta + phi + phi_w).cos();
+            let ours = f.at(beta.tan()).unwrap();
+            assert!((ours - tan_form).abs() < 1e-12 * tan_form);
+            assert!((ours - sin_form).abs() < 1e-12 * sin_form);
+        }
+    }
+
+    #[test]
+    fn inadmissible_beyond_ninety_degrees() {
+        let f = ForceFactor::new(30f64.to_radians(), 10f64.to_radians());
+        assert!(f.at(49.9f64.to_radians().tan()).is_some());
+        assert!(f.at(50.1f64.to_radians().tan()).is_none());
+        assert!(f.at(0.0).is_none());
+        assert!(f.at(-0.1).is_none());
+    }
+}

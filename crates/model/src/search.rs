@@ -1,0 +1,128 @@
+//! The principle of minimum effort: the grid search over candidate emergence
+//! nodes for the admissible mechanism of least force (paper, "Numerical
+//! formulation"; MODEL.md section 2).
+//!
+//! Candidate j is the straight line from the blade tip A = (x_b, −d) to
+//! surface node j. With r_j = (y_j + d) / (j − b) (rise per node, so that
+//! tan β_j = r_j / Δx):
+//!
+//! * the line stays inside the soil iff no node between lies below it, i.e.
+//!   r_j ≤ min over b < i < j of r_i (a running minimum);
+//! * the block weight by the trapezoid rule is
+//!   W_j = Δx [ ½ γ_b (y_b + d) + Σ_{b<i<j} γ_i (y_i + d) − r_j Σ_{b<i<j} γ_i (i − b) ],
+//!   two running sums, so each candidate costs O(1);
+//! * P_j = W_j · (P/W)(β_j, φ_j) by Eq. (1).
+//!
+//! Stopping rule (why the domain may be finite): along admissible candidates
+//! the lines only get lower, so W_j never decreases, and P/W ≥ f_min =
+//! sin φ_min / cos(φ_min + φw) for every admissible β. Once W_j f_min exceeds
+//! the best force found, no later candidate can win. The scan stops there and
+//! grows the domain only if it reaches the end first: growing never changes
+//! the result.
+//!
+//! Ties: candidates whose force is within `TIE_TOLERANCE` (relative) of the
+//! minimum count as equal, and the one nearest the blade wins, so round-off
+//! cannot flip the choice between near-equal mechanisms.
+
+use crate::mechanism::ForceFactor;
+use crate::surface::Surface;
+
+/// Relative force difference below which two candidates are equal.
+pub const TIE_TOLERANCE: f64 = 1e-10;
+
+/// Nodes appended at a time when the scan reaches the end of the domain.
+const GROW_NODES_MIN: usize = 256;
+
+/// The chosen mechanism of one increment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Choice {
+    /// Emergence node j.
+    pub node: usize,
+    /// tan β*.
+    pub tan_beta: f64,
+    /// P*: force per unit width.
+    pub force: f64,
+    /// W: weight of the block.
+    pub weight: f64,
+}
+
+/// Reusable search state (no allocation per step once warmed up).
+#[derive(Debug, Default)]
+pub struct Search {
+    /// Admissible candidates of the current step, kept for the tie-break.
+    admissible: Vec<Choice>,
+    /// Candidate evaluations since creation (for benchmarks).
+    pub evaluations: u64,
+}
+
+/// What the search needs to know about the soil besides the surface.
+pub struct SearchInput<'a, F: Fn(&Surface, usize, f64) -> ForceFactor> {
+    pub blade: usize,
+    pub depth: f64,
+    /// Lower bound of P/W over every candidate (see the stopping rule).
+    pub min_factor: f64,
+    /// Eq. (1) for candidate j at tan β.
+    pub factor: &'a F,
+    /// Nodes appended when the scan needs more domain.
+    pub grow_nodes: usize,
+}
+
+impl Search {
+    /// The minimum-effort mechanism, or `None` if no admissible candidate
+    /// exists within a domain of `max_nodes` nodes.
+    pub fn run<F>(
+        &mut self,
+        surface: &mut Surface,
+        input: &SearchInput<F>,
+        max_nodes: usize,
+    ) -> Option<Choice>
+    where
+        F: Fn(&Surface, usize, f64) -> ForceFactor,
+    {
+        self.admissible.clear();
+        let (b, d, dx) = (input.blade, input.depth, surface.spacing);
+        let base = 0.5 * surface.unit_weight[b] * (surface.height[b] + d);
+        let (mut sum_gh, mut sum_gk) = (0.0, 0.0);
+        let mut r_min = f64::INFINITY;
+        let mut best = f64::INFINITY;
+        let mut j = b + 1;
+        loop {
+            if j >= surface.len() {
+                if surface.len() >= max_nodes {
+                    break;
+                }
+                surface.grow(input.grow_nodes.max(GROW_NODES_MIN));
+            }
+            let k = (j - b) as f64;
+            let r = (surface.height[j] + d) / k;
+            if r <= r_min {
+                r_min = r;
+                let weight = dx * (base + sum_gh - r * sum_gk);
+                let tan_beta = r / dx;
+                self.evaluations += 1;
+                if let Some(f) = (input.factor)(surface, j, tan_beta).at(tan_beta) {
+                    let force = weight * f;
+                    best = best.min(force);
+                    self.admissible.push(Choice {
+                        node: j,
+                        tan_beta,
+                        force,
+                        weight,
+                    });
+                }
+                if weight * input.min_factor > best * (1.0 + TIE_TOLERANCE) {
+                    break;
+                }
+            }
+            let g = surface.unit_weight[j];
+            sum_gh += g * (surface.height[j] + d);
+            sum_gk += g * k;
+            j += 1;
+        }
+        let threshold = best * (1.0 + TIE_TOLERANCE);
+        self.admissible
+            .iter()
+            .find(|c| c.force <= threshold)
+            .copied()
+    }
+}

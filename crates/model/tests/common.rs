@@ -1,0 +1,43 @@
+//! Shared case builders for the model's integration tests.
+#![allow(dead_code)]
+
+use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil};
+
+/// The paper's original-model case (MODEL.md section 6), shortened to
+/// `travel_depths` depths at increment d / `per_depth`.
+pub fn original(travel_depths: f64, per_depth: f64) -> Case {
+    let d = 20.0;
+    Case {
+        name: "original".into(),
+        title: "Original model".into(),
+        model: Model::Original,
+        blade: Blade {
+            depth: d,
+            wall_friction: 10.0,
+        },
+        soil: Soil {
+            unit_weight: 1.0,
+            friction: AngleLaw {
+                initial: 35.0,
+                peak: 35.0,
+                residual: 30.0,
+            },
+            dilation: AngleLaw::constant(0.0),
+            peak_shear: 0.0,
+            residual_shear: 4.0,
+            repose: 30.0,
+            band_width: 0.0,
+        },
+        run: Run {
+            travel: travel_depths * d,
+            increment: d / per_depth,
+        },
+    }
+}
+
+/// Coulomb's passive coefficient with wall friction (angles in degrees).
+pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
+    let (p, w) = (phi.to_radians(), phi_w.to_radians());
+    let root = ((p + w).sin() * p.sin() / w.cos()).sqrt();
+    p.cos().powi(2) / (w.cos() * (1.0 - root).powi(2))
+}

@@ -1,0 +1,44 @@
+//! The first increment on flat ground is Coulomb's passive wedge:
+//! P / (γ0 d²) = ½ Kp, Kp = cos²φ / (cos φw [1 − √(sin(φ+φw) sin φ / cos φw)]²).
+//!
+//! The grid limits β to the angles of the nodes (x_j = j v0); the error in P
+//! is second order in the angle step, so d / v0 = 2000 nodes per depth puts
+//! it below 1e-6.
+
+mod common;
+
+use soilcut_model::Simulation;
+
+fn first_force_norm(phi: f64, phi_w: f64, per_depth: f64) -> f64 {
+    let mut case = common::original(1.0, per_depth);
+    case.soil.friction.initial = phi;
+    case.soil.friction.peak = phi;
+    case.soil.friction.residual = phi;
+    case.blade.wall_friction = phi_w;
+    Simulation::new(&case).unwrap().step().unwrap().force_norm
+}
+
+#[test]
+fn matches_coulomb_passive_wedge() {
+    for (phi, phi_w) in [(20.0, 10.0), (30.0, 0.0), (35.0, 10.0), (40.0, 20.0), (25.0, 5.0)] {
+        let expected = 0.5 * common::coulomb_kp(phi, phi_w);
+        let got = first_force_norm(phi, phi_w, 2000.0);
+        let rel = (got - expected).abs() / expected;
+        assert!(rel < 1e-6, "φ={phi} φw={phi_w}: {got} vs {expected} (rel {rel:e})");
+        assert!(got >= expected * (1.0 - 1e-12), "grid search cannot beat the exact minimum");
+    }
+}
+
+#[test]
+fn paper_reference_values() {
+    assert!((0.5 * common::coulomb_kp(20.0, 10.0) - 1.318).abs() < 5e-4);
+    assert!((0.5 * common::coulomb_kp(30.0, 0.0) - 1.5).abs() < 1e-12);
+}
+
+#[test]
+fn error_shrinks_with_refinement() {
+    let expected = 0.5 * common::coulomb_kp(20.0, 10.0);
+    let coarse = first_force_norm(20.0, 10.0, 50.0) - expected;
+    let fine = first_force_norm(20.0, 10.0, 400.0) - expected;
+    assert!(coarse > 0.0 && fine >= 0.0 && fine < coarse / 10.0, "{coarse} {fine}");
+}
