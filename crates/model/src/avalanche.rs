@@ -46,21 +46,36 @@ pub struct Avalanche {
 
 impl Avalanche {
     /// Relaxes every slope steeper than `tan_repose` among the nodes from
-    /// `first` (the face) to the end of the domain.
-    pub fn relax(&mut self, surface: &mut Surface, first: usize, tan_repose: f64) {
+    /// `first` (the face) to the end of the domain; returns the range of
+    /// nodes whose soil moved (empty if none).
+    pub fn relax(
+        &mut self,
+        surface: &mut Surface,
+        first: usize,
+        tan_repose: f64,
+    ) -> std::ops::Range<usize> {
         let s = surface.spacing * tan_repose;
+        let mut touched = first..first;
         for _ in 0..MAX_PASSES {
-            let down = self.pass(surface, first, s, 1.0);
-            let up = self.pass(surface, first, s, -1.0);
+            let down = self.pass(surface, first, s, 1.0, &mut touched);
+            let up = self.pass(surface, first, s, -1.0, &mut touched);
             if !down && !up {
                 break;
             }
         }
+        touched
     }
 
     /// One pool-adjacent-violators pass on g_i = σ y_i + s (i − first);
     /// returns whether anything moved.
-    fn pass(&mut self, surface: &mut Surface, first: usize, s: f64, sign: f64) -> bool {
+    fn pass(
+        &mut self,
+        surface: &mut Surface,
+        first: usize,
+        s: f64,
+        sign: f64,
+        touched: &mut std::ops::Range<usize>,
+    ) -> bool {
         self.pools.clear();
         let tolerance = SLOPE_TOLERANCE * s;
         for i in first..surface.len() {
@@ -90,6 +105,12 @@ impl Avalanche {
             let pool = self.pools[k];
             if pool.len > 1 {
                 moved = true;
+                let end = pool.start + pool.len;
+                *touched = if touched.is_empty() {
+                    pool.start..end
+                } else {
+                    touched.start.min(pool.start)..touched.end.max(end)
+                };
                 self.level(surface, first, pool, s, sign);
             }
         }
@@ -100,7 +121,8 @@ impl Avalanche {
     fn level(&mut self, surface: &mut Surface, first: usize, pool: Pool, s: f64, sign: f64) {
         let range = pool.start..pool.start + pool.len;
         self.old_height.clear();
-        self.old_height.extend_from_slice(&surface.height[range.clone()]);
+        self.old_height
+            .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
             let new = sign * (pool.mean() - s * (i - first) as f64);

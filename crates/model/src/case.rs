@@ -132,7 +132,10 @@ fn finite(key: &str, value: f64) -> Result<f64, CaseError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(CaseError::new(key, format!("must be a finite number (got {value})")))
+        Err(CaseError::new(
+            key,
+            format!("must be a finite number (got {value})"),
+        ))
     }
 }
 
@@ -219,13 +222,19 @@ impl Case {
         if f.residual > f.peak {
             return Err(CaseError::new(
                 "soil.friction.residual",
-                format!("must be <= soil.friction.peak ({}°) (got {}°)", f.peak, f.residual),
+                format!(
+                    "must be <= soil.friction.peak ({}°) (got {}°)",
+                    f.peak, f.residual
+                ),
             ));
         }
         if f.initial > f.peak {
             return Err(CaseError::new(
                 "soil.friction.initial",
-                format!("must be <= soil.friction.peak ({}°) (got {}°)", f.peak, f.initial),
+                format!(
+                    "must be <= soil.friction.peak ({}°) (got {}°)",
+                    f.peak, f.initial
+                ),
             ));
         }
         let d = &s.dilation;

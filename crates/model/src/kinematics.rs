@@ -1,23 +1,158 @@
 //! The update of the free surface after an increment (MODEL.md section 3).
 //!
-//! Original model (incompressible, Fig. 1b): the block above the slip line
-//! A→j translates by v0 (1, tan β*). On the grid Δx = v0 that is an exact
-//! shift of nodes b..j−1 to b+1..j with a rise of v0 tan β*; nodes beyond j
-//! are unchanged. Nodes of the block carry their state with them; node j,
-//! where the slip line emerges, keeps the state of the slip surface and
-//! accumulates Δut = v0 / cos β*.
+//! **Slip line** (original model, Fig. 1b; and any band narrower than a
+//! node): the block above the slip line A→j translates by v0 (1, tan β*).
+//! On the grid Δx = v0 that is an exact shift of nodes b..j−1 to b+1..j with
+//! a rise of v0 tan β*; nodes beyond j are unchanged. Block nodes carry their
+//! state; node j, where the slip line emerges, keeps the state of the slip
+//! surface and accumulates Δut = v0 / cos β*. The face sweeps the triangle
+//! (x_b, −d), (x_b + v0, −d), (x_b + v0, −d + v0 tan β*) of area ½ v0² tan β*:
+//! that soil is pushed up the face rather than dropped, by raising the new
+//! face node a further v0 tan β* (half trapezoid weight: exactly that area).
 //!
-//! The face sweeps the triangle (x_b, −d), (x_b + v0, −d), (x_b + v0, −d +
-//! v0 tan β*) below the slip line, of area ½ v0² tan β*. That soil is pushed
-//! up the face with the block rather than dropped: the new face node rises by
-//! a further v0 tan β*, which (half trapezoid weight) adds exactly that area,
-//! so the area of soil is conserved to round-off.
+//! **Shear band** (refined model, Fig. 3b-c): soil above the band moves by
+//! v0 (1, tan(β* + ψ)); inside the band the displacement falls linearly to 0
+//! at the lower boundary. This map is piecewise affine, so the image of the
+//! old surface polyline is the polyline through the images of its nodes and
+//! of the points where it crosses the upper boundary. Its area exceeds the
+//! old one by the band's dilation, A0 Δuv / dB (Jacobian 1 + Δuv / dB on the
+//! band, Δuv = Δut tan ψ, Δut = v0 cos ψ / cos(β* + ψ)). The image is
+//! resampled on the grid; the face sweeps the band soil that moved less than
+//! v0 and the soil below the band, ½ v0 e + ½ v0² tan(β* + ψ) in all (e =
+//! dB / cos β*), which is pushed up the face as above; the small resampling
+//! error is spread evenly over the band's nodes so that the area is exactly
+//! the old area plus the dilation. Block nodes carry their state, band nodes
+//! keep theirs (the band is part of the ground) and all accumulate Δut.
+//!
+//! **Mass** (both): the band's nodes, from the first one the band reaches to
+//! the emergence node, take one uniform unit weight chosen so that the weight
+//! of the soil in front of the blade is unchanged (paper: γ = Wb / Anew for
+//! the band as a whole).
 
+use crate::band::Band;
 use crate::search::Choice;
 use crate::surface::Surface;
 
-/// Applies the original model's update; returns Δut of the slip line.
-pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice) -> f64 {
+/// What an update did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Update {
+    /// Δut of the band (or slip line).
+    pub slip: f64,
+    /// Area added by the band's dilation (negative for compaction).
+    pub dilation_area: f64,
+    /// First node of the band after the update (the emergence node for a
+    /// slip line).
+    pub first_band_node: usize,
+}
+
+/// Reusable scratch for the band update.
+#[derive(Debug, Default)]
+pub struct Kinematics {
+    /// Image points (x, y) of the old surface from the face to j.
+    image: Vec<(f64, f64)>,
+}
+
+impl Kinematics {
+    /// Moves the soil for the chosen mechanism and keeps mass exact.
+    pub fn apply(&mut self, surface: &mut Surface, band: &Band, choice: &Choice) -> Update {
+        let mass_before = region_mass(surface, band.blade, band.emergence);
+        let update = match self.shear_band(surface, band, choice.dilation) {
+            Some(update) => update,
+            None => slide_block(surface, band.blade, choice),
+        };
+        conserve_mass(surface, band, update.first_band_node, mass_before);
+        update
+    }
+
+    /// The shear band update; `None` (nothing changed) where the band is too
+    /// thin for the grid to resolve it, which is then a slip line.
+    fn shear_band(&mut self, surface: &mut Surface, band: &Band, psi: f64) -> Option<Update> {
+        let (b, j, dx, t) = (band.blade, band.emergence, surface.spacing, band.tan_beta);
+        let e = band.thickness;
+        let rho = (t + psi.tan()) / (1.0 - t * psi.tan());
+        let rise = dx * rho;
+        if e == 0.0 || e + dx * (rho - t) < 0.0 || 1.0 - t * psi.tan() <= 0.0 {
+            return None;
+        }
+        let last_block_x = self.trace_image(surface, band, rise)?;
+        let first_band_node = (b + 2..j).find(|&i| surface.x(i) > last_block_x)?;
+        let area_before = region_area(surface, b, j);
+        let slip = dx * psi.cos() * (1.0 + rho * rho).sqrt();
+        let band_width = e / (1.0 + t * t).sqrt();
+        let dilation_area = band.area_below(&surface.height) * slip * psi.tan() / band_width;
+        self.resample(surface, b, j);
+        // Swept area ½ Δx (e + rise) on a half-weight node: a rise of e + rise.
+        surface.height[b + 1] += e + rise;
+        let residual = area_before + dilation_area - region_area(surface, b + 1, j);
+        let correction = residual / ((j - first_band_node) as f64 * dx);
+        for y in &mut surface.height[first_band_node..j] {
+            *y += correction;
+        }
+        shift_block_state(surface, b, first_band_node);
+        for ut in &mut surface.accumulated_shear[first_band_node..=j] {
+            *ut += slip;
+        }
+        Some(Update {
+            slip,
+            dilation_area,
+            first_band_node,
+        })
+    }
+
+    /// Images of the surface nodes b..=j and of upper-boundary crossings;
+    /// returns the x of the last image still in the rigid block, or `None` if
+    /// the images fold over (band narrower than the grid resolves).
+    fn trace_image(&mut self, surface: &Surface, band: &Band, rise: f64) -> Option<f64> {
+        let (b, j, dx) = (band.blade, band.emergence, surface.spacing);
+        let h = &surface.height;
+        self.image.clear();
+        let mut g_prev = band.position(h[b], b);
+        if g_prev < 1.0 {
+            return None;
+        }
+        let mut last_block_x = surface.x(b) + dx;
+        self.image.push((last_block_x, h[b] + rise));
+        for i in b + 1..=j {
+            let g = band.position(h[i], i);
+            if (g_prev - 1.0) * (g - 1.0) < 0.0 {
+                let lambda = (g_prev - 1.0) / (g_prev - g);
+                let x = surface.x(i - 1) + lambda * dx;
+                let y = h[i - 1] + lambda * (h[i] - h[i - 1]);
+                self.image.push((x + dx, y + rise));
+                if g < 1.0 {
+                    last_block_x = x + dx;
+                }
+            }
+            let f = g.clamp(0.0, 1.0);
+            let point = (surface.x(i) + f * dx, h[i] + f * rise);
+            if point.0 <= self.image.last().expect("face image").0 {
+                return None;
+            }
+            if f == 1.0 {
+                last_block_x = point.0;
+            }
+            self.image.push(point);
+            g_prev = g;
+        }
+        Some(last_block_x)
+    }
+
+    /// Heights of nodes b+1..j from the image polyline (linear interpolation).
+    fn resample(&self, surface: &mut Surface, b: usize, j: usize) {
+        let mut k = 0;
+        for i in b + 1..j {
+            let x = surface.x(i);
+            while self.image[k + 1].0 < x {
+                k += 1;
+            }
+            let ((x0, y0), (x1, y1)) = (self.image[k], self.image[k + 1]);
+            surface.height[i] = y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+        }
+    }
+}
+
+/// The slip-line update (see the module doc).
+pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice) -> Update {
     let (j, dx) = (choice.node, surface.spacing);
     let rise = dx * choice.tan_beta;
     let h = &mut surface.height;
@@ -26,11 +161,52 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice) -> f64 
         *y += rise;
     }
     h[blade + 1] += rise;
-    surface
-        .accumulated_shear
-        .copy_within(blade..j - 1, blade + 1);
-    surface.unit_weight.copy_within(blade..j - 1, blade + 1);
+    shift_block_state(surface, blade, j);
     let slip = dx * (1.0 + choice.tan_beta * choice.tan_beta).sqrt();
     surface.accumulated_shear[j] += slip;
-    slip
+    Update {
+        slip,
+        dilation_area: 0.0,
+        first_band_node: j,
+    }
+}
+
+/// Block nodes b..end−1 carry their state to b+1..end.
+fn shift_block_state(surface: &mut Surface, blade: usize, end: usize) {
+    let range = blade..end - 1;
+    surface
+        .accumulated_shear
+        .copy_within(range.clone(), blade + 1);
+    surface.unit_weight.copy_within(range.clone(), blade + 1);
+    surface.friction.copy_within(range.clone(), blade + 1);
+    surface.dilation.copy_within(range, blade + 1);
+}
+
+/// Trapezoid area between the floor and the surface over nodes a..=z.
+fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
+    let (h, floor) = (&surface.height, surface.floor);
+    let inner: f64 = h[a + 1..z].iter().map(|y| y - floor).sum();
+    surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
+}
+
+/// Weight of the columns of nodes b..=j as counted by `Surface::mass` with
+/// the face at b (j is an interior node).
+fn region_mass(surface: &Surface, b: usize, j: usize) -> f64 {
+    (b..=j)
+        .map(|i| surface.unit_weight[i] * surface.column_area(i, b))
+        .sum()
+}
+
+/// Gives the band's nodes (first..=j) the one unit weight that makes the
+/// weight of nodes b+1..=j (face now at b+1) equal `mass_before`.
+fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
+    let (b, j) = (band.blade + 1, band.emergence);
+    let outside: f64 = (b..first)
+        .map(|i| surface.unit_weight[i] * surface.column_area(i, b))
+        .sum();
+    let band_area: f64 = (first..=j).map(|i| surface.column_area(i, b)).sum();
+    let gamma = (mass_before - outside) / band_area;
+    for g in &mut surface.unit_weight[first..=j] {
+        *g = gamma;
+    }
 }

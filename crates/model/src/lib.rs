@@ -6,6 +6,7 @@
 //! [`Simulation::step`] (or [`Simulation::run_to_end`]).
 
 pub mod avalanche;
+pub mod band;
 pub mod case;
 pub mod kinematics;
 pub mod material;

@@ -104,7 +104,10 @@ mod tests {
         let peaks = find_peaks(&v, 0.1);
         assert_eq!(peaks.len(), 2, "{peaks:?}");
         assert!((95..=105).contains(&peaks[0]) && (295..=305).contains(&peaks[1]));
-        assert!(find_peaks(&v, 0.001).len() > 10, "noise has many small peaks");
+        assert!(
+            find_peaks(&v, 0.001).len() > 10,
+            "noise has many small peaks"
+        );
     }
 
     #[test]

@@ -11,7 +11,10 @@
 //! * the block weight by the trapezoid rule is
 //!   W_j = Δx [ ½ γ_b (y_b + d) + Σ_{b<i<j} γ_i (y_i + d) − r_j Σ_{b<i<j} γ_i (i − b) ],
 //!   two running sums, so each candidate costs O(1);
-//! * P_j = W_j · (P/W)(β_j, φ_j) by Eq. (1).
+//! * P_j = W_j · (P/W)(β_j, φ_j) by Eq. (1), with φ_j and ψ_j the mean of
+//!   the node angles over the band's footprint at the surface (the nodes the
+//!   band touches, `Band::footprint`; the emergence node alone for a slip
+//!   line), from running prefix sums.
 //!
 //! Stopping rule (why the domain may be finite): along admissible candidates
 //! the lines only get lower, so W_j never decreases, and P/W ≥ f_min =
@@ -24,6 +27,7 @@
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
 
+use crate::band::Band;
 use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
 
@@ -44,6 +48,18 @@ pub struct Choice {
     pub force: f64,
     /// W: weight of the block.
     pub weight: f64,
+    /// The band's friction and dilation angles (radians).
+    pub friction: f64,
+    pub dilation: f64,
+}
+
+/// The band angles a candidate takes: means over its footprint (radians).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BandAngles {
+    pub friction: f64,
+    pub dilation: f64,
+    /// Every node of the footprint is unsheared (ut = 0).
+    pub fresh: bool,
 }
 
 /// Reusable search state (no allocation per step once warmed up).
@@ -51,17 +67,21 @@ pub struct Choice {
 pub struct Search {
     /// Admissible candidates of the current step, kept for the tie-break.
     admissible: Vec<Choice>,
+    /// Prefix sums from the blade node of φ, ψ and ut.
+    prefix: Vec<[f64; 3]>,
     /// Candidate evaluations since creation (for benchmarks).
     pub evaluations: u64,
 }
 
 /// What the search needs to know about the soil besides the surface.
-pub struct SearchInput<'a, F: Fn(&Surface, usize, f64) -> ForceFactor> {
+pub struct SearchInput<'a, F: Fn(BandAngles, f64) -> ForceFactor> {
     pub blade: usize,
     pub depth: f64,
+    /// dB (0 for the original model's slip line).
+    pub band_width: f64,
     /// Lower bound of P/W over every candidate (see the stopping rule).
     pub min_factor: f64,
-    /// Eq. (1) for candidate j at tan β.
+    /// Eq. (1) for a candidate's band angles at tan β.
     pub factor: &'a F,
     /// Nodes appended when the scan needs more domain.
     pub grow_nodes: usize,
@@ -77,9 +97,11 @@ impl Search {
         max_nodes: usize,
     ) -> Option<Choice>
     where
-        F: Fn(&Surface, usize, f64) -> ForceFactor,
+        F: Fn(BandAngles, f64) -> ForceFactor,
     {
         self.admissible.clear();
+        self.prefix.clear();
+        self.prefix.push([0.0; 3]);
         let (b, d, dx) = (input.blade, input.depth, surface.spacing);
         let base = 0.5 * surface.unit_weight[b] * (surface.height[b] + d);
         let (mut sum_gh, mut sum_gk) = (0.0, 0.0);
@@ -87,12 +109,14 @@ impl Search {
         let mut best = f64::INFINITY;
         let mut j = b + 1;
         loop {
-            if j >= surface.len() {
+            // The emergence node always has a neighbour ahead of it.
+            if j + 1 >= surface.len() {
                 if surface.len() >= max_nodes {
                     break;
                 }
                 surface.grow(input.grow_nodes.max(GROW_NODES_MIN));
             }
+            self.push_prefix(surface, j - 1);
             let k = (j - b) as f64;
             let r = (surface.height[j] + d) / k;
             if r <= r_min {
@@ -100,7 +124,9 @@ impl Search {
                 let weight = dx * (base + sum_gh - r * sum_gk);
                 let tan_beta = r / dx;
                 self.evaluations += 1;
-                if let Some(f) = (input.factor)(surface, j, tan_beta).at(tan_beta) {
+                let band = Band::new(b, j, tan_beta, input.band_width, d, dx);
+                let angles = self.band_angles(surface, &band);
+                if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
                     let force = weight * f;
                     best = best.min(force);
                     self.admissible.push(Choice {
@@ -108,6 +134,8 @@ impl Search {
                         tan_beta,
                         force,
                         weight,
+                        friction: angles.friction,
+                        dilation: angles.dilation,
                     });
                 }
                 if weight * input.min_factor > best * (1.0 + TIE_TOLERANCE) {
@@ -124,5 +152,36 @@ impl Search {
             .iter()
             .find(|c| c.force <= threshold)
             .copied()
+    }
+
+    fn push_prefix(&mut self, surface: &Surface, i: usize) {
+        let last = *self.prefix.last().expect("prefix starts with zero");
+        self.prefix.push([
+            last[0] + surface.friction[i],
+            last[1] + surface.dilation[i],
+            last[2] + surface.accumulated_shear[i],
+        ]);
+    }
+
+    /// Mean angles over the band's footprint, nodes j − m ..= j.
+    fn band_angles(&mut self, surface: &Surface, band: &Band) -> BandAngles {
+        let (b, j) = (band.blade, band.emergence);
+        let m = band.footprint(&surface.height);
+        if m == 0 {
+            return BandAngles {
+                friction: surface.friction[j],
+                dilation: surface.dilation[j],
+                fresh: surface.accumulated_shear[j] == 0.0,
+            };
+        }
+        self.push_prefix(surface, j);
+        let hi = self.prefix.pop().expect("just pushed");
+        let lo = self.prefix[j - m - b];
+        let n = (m + 1) as f64;
+        BandAngles {
+            friction: (hi[0] - lo[0]) / n,
+            dilation: (hi[1] - lo[1]) / n,
+            fresh: hi[2] - lo[2] == 0.0,
+        }
     }
 }

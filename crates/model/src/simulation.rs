@@ -6,11 +6,12 @@
 //! inside a robot simulator or a notebook; `run_to_end` is the whole case.
 
 use crate::avalanche::Avalanche;
-use crate::case::{Case, CaseError, Model};
-use crate::kinematics::slide_block;
+use crate::band::Band;
+use crate::case::{Case, CaseError};
+use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::mechanism::ForceFactor;
-use crate::search::{Choice, Search, SearchInput};
+use crate::search::{BandAngles, Choice, Search, SearchInput};
 use crate::surface::Surface;
 use std::fmt;
 
@@ -44,8 +45,12 @@ pub struct StepRecord {
     /// Emergence point of the slip line (lower band boundary).
     pub x_emergence: f64,
     pub y_emergence: f64,
-    /// Δut of the slip line in this increment.
+    /// Band dilation angle ψ of the chosen mechanism, degrees.
+    pub dilation_deg: f64,
+    /// Δut of the band (slip line) in this increment.
     pub slip: f64,
+    /// Area added by the band's dilation in this increment (Δuv A0 / dB).
+    pub dilation_area: f64,
     /// Weight of soil after the increment (ground that existed at the start).
     pub mass: f64,
 }
@@ -79,14 +84,14 @@ pub struct ProfilePoint {
     pub unit_weight: f64,
 }
 
-/// The material law with Eq. (1) coefficients cached for the common states.
+/// The material law with Eq. (1) coefficients cached for fresh soil.
 #[derive(Debug)]
 struct Laws {
     material: Material,
     wall_friction: f64,
-    residual_shear: f64,
-    fresh_factor: ForceFactor,
-    residual_factor: ForceFactor,
+    /// Fresh soil with the block rising along the face (+φw) and not (−φw).
+    fresh_rising: ForceFactor,
+    fresh_sinking: ForceFactor,
     /// Lower bound of P/W over every admissible mechanism.
     min_factor: f64,
 }
@@ -95,27 +100,42 @@ impl Laws {
     fn new(case: &Case) -> Self {
         let material = Material::new(&case.soil);
         let wall_friction = case.blade.wall_friction.to_radians();
-        let factor = |phi: f64| ForceFactor::new(phi, wall_friction);
+        let phi0 = material.friction.at(0.0);
+        // Friction on the face opposes the block's motion relative to it:
+        // where the block does not rise (β + ψ ≤ 0, compaction) it acts
+        // upward on the block, the least-force choice at β + ψ = 0.
+        let can_sink = case.soil.dilation.min() < 0.0;
+        let lowest_wall = if can_sink {
+            -wall_friction
+        } else {
+            wall_friction
+        };
         Laws {
-            fresh_factor: factor(material.friction.at(0.0)),
-            residual_factor: factor(case.soil.friction.residual.to_radians()),
-            min_factor: factor(material.friction.min()).at_zero_angle(),
-            residual_shear: case.soil.residual_shear,
+            fresh_rising: ForceFactor::new(phi0, wall_friction),
+            fresh_sinking: ForceFactor::new(phi0, -wall_friction),
+            min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
             material,
             wall_friction,
         }
     }
 
-    /// Eq. (1) coefficients at node j (the original model's slip line takes
-    /// the friction angle of its emergence node).
-    fn node_factor(&self, surface: &Surface, j: usize) -> ForceFactor {
-        let ut = surface.accumulated_shear[j];
-        if ut == 0.0 {
-            self.fresh_factor
-        } else if ut >= self.residual_shear {
-            self.residual_factor
-        } else {
-            ForceFactor::new(self.material.friction.at(ut), self.wall_friction)
+    /// Eq. (1) coefficients for a candidate band at tan β.
+    fn factor(&self, angles: BandAngles, tan_beta: f64) -> ForceFactor {
+        let rising = tan_beta + angles.dilation.tan() > 0.0;
+        match (angles.fresh, rising) {
+            (true, true) => self.fresh_rising,
+            (true, false) => self.fresh_sinking,
+            (false, true) => ForceFactor::new(angles.friction, self.wall_friction),
+            (false, false) => ForceFactor::new(angles.friction, -self.wall_friction),
+        }
+    }
+
+    /// Recomputes φ(ut) and ψ(ut) of the nodes in `range`.
+    fn refresh_angles(&self, surface: &mut Surface, range: std::ops::Range<usize>) {
+        for i in range {
+            let ut = surface.accumulated_shear[i];
+            surface.friction[i] = self.material.friction.at(ut);
+            surface.dilation[i] = self.material.dilation.at(ut);
         }
     }
 }
@@ -128,6 +148,7 @@ pub struct Simulation {
     tan_repose: f64,
     surface: Surface,
     search: Search,
+    kinematics: Kinematics,
     avalanche: Avalanche,
     /// Increments done; the blade is at node `done`.
     done: usize,
@@ -141,13 +162,19 @@ impl Simulation {
         let (d, dx) = (case.blade.depth, case.run.increment);
         let reach = case.run.travel + INITIAL_REACH_DEPTHS * d;
         let nodes = (reach / dx).ceil() as usize + 2;
-        let surface = Surface::flat(dx, d, case.soil.unit_weight, nodes);
+        let laws = Laws::new(case);
+        let fresh = (
+            laws.material.friction.at(0.0),
+            laws.material.dilation.at(0.0),
+        );
+        let surface = Surface::flat(dx, d, case.soil.unit_weight, fresh, nodes);
         let initial_mass = surface.mass(0);
         Ok(Simulation {
-            laws: Laws::new(case),
+            laws,
             tan_repose: case.soil.repose.to_radians().tan(),
             surface,
             search: Search::default(),
+            kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
             done: 0,
             initial_mass,
@@ -209,10 +236,11 @@ impl Simulation {
         let d = self.case.blade.depth;
         let dx = self.surface.spacing;
         let laws = &self.laws;
-        let factor = |s: &Surface, j: usize, _t: f64| laws.node_factor(s, j);
+        let factor = |angles: BandAngles, t: f64| laws.factor(angles, t);
         let input = SearchInput {
             blade: self.done,
             depth: d,
+            band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
             factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
@@ -228,33 +256,41 @@ impl Simulation {
         let choice = self
             .find_mechanism()
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
-        let j = choice.node;
-        let friction_deg = self
-            .laws
-            .material
-            .friction
-            .at(self.surface.accumulated_shear[j])
-            .to_degrees();
+        let (b, j) = (self.done, choice.node);
         let (x_emergence, y_emergence) = (self.surface.x(j), self.surface.height[j]);
-        let slip = match self.case.model {
-            Model::Original | Model::Refined => slide_block(&mut self.surface, self.done, &choice),
-        };
-        self.done += 1;
-        self.avalanche
-            .relax(&mut self.surface, self.done, self.tan_repose);
         let c = &self.case;
+        let band = Band::new(
+            b,
+            j,
+            choice.tan_beta,
+            c.soil.band_width,
+            c.blade.depth,
+            self.surface.spacing,
+        );
+        let update = self.kinematics.apply(&mut self.surface, &band, &choice);
+        self.laws
+            .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
+        self.done += 1;
+        let moved = self
+            .avalanche
+            .relax(&mut self.surface, self.done, self.tan_repose);
+        self.laws.refresh_angles(&mut self.surface, moved);
+        let c = &self.case;
+        let (cos_w, sin_w) = (self.laws.wall_friction.cos(), self.laws.wall_friction.sin());
         Ok(StepRecord {
             step,
             u,
             force: choice.force,
             force_norm: choice.force / (c.soil.unit_weight * c.blade.depth * c.blade.depth),
-            force_h: choice.force * self.laws.wall_friction.cos(),
-            force_v: choice.force * self.laws.wall_friction.sin(),
+            force_h: choice.force * cos_w,
+            force_v: choice.force * sin_w,
             beta_deg: choice.tan_beta.atan().to_degrees(),
-            friction_deg,
+            friction_deg: choice.friction.to_degrees(),
+            dilation_deg: choice.dilation.to_degrees(),
             x_emergence,
             y_emergence,
-            slip,
+            slip: update.slip,
+            dilation_area: update.dilation_area,
             mass: self.mass(),
         })
     }

@@ -34,11 +34,18 @@ impl Summary {
     pub fn new(case: &Case, history: &[StepRecord], initial_mass: f64) -> Self {
         let d = case.blade.depth;
         let forces: Vec<f64> = history.iter().map(|r| r.force_norm).collect();
-        let (max_index, max_force_norm) = forces
-            .iter()
-            .copied()
-            .enumerate()
-            .fold((0, f64::NEG_INFINITY), |best, (i, f)| if f > best.1 { (i, f) } else { best });
+        let (max_index, max_force_norm) =
+            forces
+                .iter()
+                .copied()
+                .enumerate()
+                .fold((0, f64::NEG_INFINITY), |best, (i, f)| {
+                    if f > best.1 {
+                        (i, f)
+                    } else {
+                        best
+                    }
+                });
         let peaks = find_peaks(&forces, PEAK_PROMINENCE * max_force_norm)
             .into_iter()
             .map(|i| Peak {

@@ -1,6 +1,7 @@
 //! The free surface: nodes on a fixed grid x_i = i Δx, each carrying the
 //! height of the surface, the accumulated shearing displacement ut of the
-//! soil there and the unit weight γ of its column.
+//! soil there (with the friction and dilation angles it implies) and the unit
+//! weight γ of its column.
 //!
 //! The grid spacing equals the blade increment v0, so the blade sits on node
 //! `blade` = (steps done) and a block translating by v0 moves exactly one node.
@@ -24,14 +25,27 @@ pub struct Surface {
     pub accumulated_shear: Vec<f64>,
     /// γ_i: unit weight of the column at node i.
     pub unit_weight: Vec<f64>,
+    /// φ(ut_i), radians: kept in step with `accumulated_shear` by the caller.
+    pub friction: Vec<f64>,
+    /// ψ(ut_i), radians: kept in step with `accumulated_shear` by the caller.
+    pub dilation: Vec<f64>,
+    /// φ and ψ of fresh soil (ut = 0), for appended ground.
+    fresh_angles: (f64, f64),
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
     appended_mass: f64,
 }
 
 impl Surface {
-    /// Flat ground y = 0 of `nodes` nodes from x = 0.
-    pub fn flat(spacing: f64, depth: f64, unit_weight: f64, nodes: usize) -> Self {
+    /// Flat ground y = 0 of `nodes` nodes from x = 0, of fresh soil with
+    /// friction and dilation angles `fresh_angles` (radians).
+    pub fn flat(
+        spacing: f64,
+        depth: f64,
+        unit_weight: f64,
+        fresh_angles: (f64, f64),
+        nodes: usize,
+    ) -> Self {
         Surface {
             spacing,
             floor: -depth,
@@ -39,6 +53,9 @@ impl Surface {
             height: vec![0.0; nodes],
             accumulated_shear: vec![0.0; nodes],
             unit_weight: vec![unit_weight; nodes],
+            friction: vec![fresh_angles.0; nodes],
+            dilation: vec![fresh_angles.1; nodes],
+            fresh_angles,
             appended_mass: 0.0,
         }
     }
@@ -63,6 +80,8 @@ impl Surface {
         self.height.resize(n, 0.0);
         self.accumulated_shear.resize(n, 0.0);
         self.unit_weight.resize(n, self.ground_unit_weight);
+        self.friction.resize(n, self.fresh_angles.0);
+        self.dilation.resize(n, self.fresh_angles.1);
         self.appended_mass +=
             self.ground_unit_weight * (0.0 - self.floor) * self.spacing * nodes as f64;
     }
@@ -119,7 +138,7 @@ mod tests {
 
     #[test]
     fn growing_flat_ground_keeps_mass() {
-        let mut s = Surface::flat(0.1, 2.0, 1.5, 101);
+        let mut s = Surface::flat(0.1, 2.0, 1.5, (0.5, 0.0), 101);
         let m0 = s.mass(0);
         assert!((m0 - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         s.grow(37);

@@ -20,12 +20,24 @@ fn first_force_norm(phi: f64, phi_w: f64, per_depth: f64) -> f64 {
 
 #[test]
 fn matches_coulomb_passive_wedge() {
-    for (phi, phi_w) in [(20.0, 10.0), (30.0, 0.0), (35.0, 10.0), (40.0, 20.0), (25.0, 5.0)] {
+    for (phi, phi_w) in [
+        (20.0, 10.0),
+        (30.0, 0.0),
+        (35.0, 10.0),
+        (40.0, 20.0),
+        (25.0, 5.0),
+    ] {
         let expected = 0.5 * common::coulomb_kp(phi, phi_w);
         let got = first_force_norm(phi, phi_w, 2000.0);
         let rel = (got - expected).abs() / expected;
-        assert!(rel < 1e-6, "φ={phi} φw={phi_w}: {got} vs {expected} (rel {rel:e})");
-        assert!(got >= expected * (1.0 - 1e-12), "grid search cannot beat the exact minimum");
+        assert!(
+            rel < 1e-6,
+            "φ={phi} φw={phi_w}: {got} vs {expected} (rel {rel:e})"
+        );
+        assert!(
+            got >= expected * (1.0 - 1e-12),
+            "grid search cannot beat the exact minimum"
+        );
     }
 }
 
@@ -40,5 +52,8 @@ fn error_shrinks_with_refinement() {
     let expected = 0.5 * common::coulomb_kp(20.0, 10.0);
     let coarse = first_force_norm(20.0, 10.0, 50.0) - expected;
     let fine = first_force_norm(20.0, 10.0, 400.0) - expected;
-    assert!(coarse > 0.0 && fine >= 0.0 && fine < coarse / 10.0, "{coarse} {fine}");
+    assert!(
+        coarse > 0.0 && fine >= 0.0 && fine < coarse / 10.0,
+        "{coarse} {fine}"
+    );
 }

@@ -1,0 +1,152 @@
+//! Geometry of the shear band of the refined model (paper Fig. 3a;
+//! MODEL.md section 3).
+//!
+//! The band's lower boundary is the line A→j from the blade tip to the
+//! emergence node; its upper boundary is parallel, dB above it (normal
+//! distance), i.e. e = dB / cos β above it vertically. A point whose height
+//! above the lower boundary is z lies at relative position g = z / e in the
+//! band: g ≥ 1 is the rigid block, 0 < g < 1 the band, g = 0 the lower
+//! boundary. The original model is the limit dB = 0 (a slip line).
+
+/// The band of one candidate or chosen mechanism.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Band {
+    /// First node (the blade face).
+    pub blade: usize,
+    /// Emergence node j of the lower boundary.
+    pub emergence: usize,
+    /// tan β.
+    pub tan_beta: f64,
+    /// e = dB / cos β: vertical thickness of the band.
+    pub thickness: f64,
+    /// Blade tip depth d.
+    pub depth: f64,
+    /// Node spacing Δx.
+    pub spacing: f64,
+}
+
+impl Band {
+    pub fn new(
+        blade: usize,
+        emergence: usize,
+        tan_beta: f64,
+        band_width: f64,
+        depth: f64,
+        spacing: f64,
+    ) -> Self {
+        Band {
+            blade,
+            emergence,
+            tan_beta,
+            thickness: band_width * (1.0 + tan_beta * tan_beta).sqrt(),
+            depth,
+            spacing,
+        }
+    }
+
+    /// Height of the lower boundary at node i.
+    pub fn lower(&self, i: usize) -> f64 {
+        -self.depth + (i - self.blade) as f64 * self.spacing * self.tan_beta
+    }
+
+    /// Relative position g_i of surface node i above the lower boundary
+    /// (in band thicknesses; ∞ for a slip line above it).
+    pub fn position(&self, height: f64, i: usize) -> f64 {
+        let z = height - self.lower(i);
+        if self.thickness > 0.0 {
+            z / self.thickness
+        } else if z > 0.0 {
+            f64::INFINITY
+        } else {
+            0.0
+        }
+    }
+
+    /// Area of the band below the free surface between the face and the
+    /// emergence node: ∫ clip(y − lower, 0, e) dx over the piecewise linear
+    /// surface, integrated exactly (split where the surface crosses the
+    /// upper boundary).
+    pub fn area_below(&self, height: &[f64]) -> f64 {
+        if self.thickness == 0.0 {
+            return 0.0;
+        }
+        let (dx, e) = (self.spacing, self.thickness);
+        let mut area = 0.0;
+        let mut g0 = self.position(height[self.blade], self.blade);
+        let nodes = height.iter().enumerate();
+        for (i, &y) in nodes.take(self.emergence + 1).skip(self.blade + 1) {
+            let g1 = self.position(y, i);
+            area += e * dx * clipped_mean(g0, g1);
+            g0 = g1;
+        }
+        area
+    }
+
+    /// Number of nodes m behind the emergence node whose soil the band
+    /// touches at the surface, estimated in O(1): the upper boundary meets a
+    /// surface of slope s at a distance e / (tan β − s) behind j; s is the
+    /// secant slope over the flat-ground footprint e / tan β. Exact where the
+    /// surface is straight over the footprint.
+    pub fn footprint(&self, height: &[f64]) -> usize {
+        let (j, b) = (self.emergence, self.blade);
+        if self.thickness == 0.0 {
+            return 0;
+        }
+        let reach = j - b;
+        let flat = ((self.thickness / self.tan_beta) / self.spacing).round() as usize;
+        let m0 = flat.clamp(1, reach);
+        let slope = (height[j] - height[j - m0]) / (m0 as f64 * self.spacing);
+        let opening = self.tan_beta - slope;
+        if opening <= 0.0 {
+            return reach;
+        }
+        (((self.thickness / opening) / self.spacing) as usize).min(reach)
+    }
+}
+
+/// Mean of min(g, 1) over a segment on which g is linear from g0 to g1 ≥ 0.
+fn clipped_mean(g0: f64, g1: f64) -> f64 {
+    let (lo, hi) = if g0 <= g1 { (g0, g1) } else { (g1, g0) };
+    if hi <= 1.0 {
+        0.5 * (lo + hi)
+    } else if lo >= 1.0 {
+        1.0
+    } else {
+        // Fraction λ of the segment below the upper boundary.
+        let lambda = (1.0 - lo) / (hi - lo);
+        lambda * 0.5 * (lo + 1.0) + (1.0 - lambda)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn band_area_on_flat_ground_is_a_parallelogram_less_its_corner() {
+        // Flat ground y = 0, d = 1, β = 45°: lower boundary reaches y = 0 at
+        // x = 1; band of vertical thickness e cut by the surface.
+        let n = 1001;
+        let dx = 1.0 / (n - 1) as f64;
+        let height = vec![0.0; n + 5];
+        let dband = 0.1;
+        let band = Band::new(0, n - 1, 1.0, dband, 1.0, dx);
+        let e = band.thickness;
+        // Strip between y = x − 1 and y = x − 1 + e, below y = 0, x ∈ [0, 1]:
+        // e·1 minus the triangle above y = 0 (legs e, e).
+        let expected = e * 1.0 - 0.5 * e * e;
+        assert!((band.area_below(&height) - expected).abs() < 1e-12);
+        let m = band.footprint(&height);
+        assert!((m as f64 * dx - e).abs() <= dx, "footprint {m}");
+    }
+
+    #[test]
+    fn slip_line_has_no_area_and_no_footprint() {
+        let height = vec![0.0; 50];
+        let band = Band::new(0, 40, 0.5, 0.0, 1.0, 0.05);
+        assert_eq!(band.area_below(&height), 0.0);
+        assert_eq!(band.footprint(&height), 0);
+        assert_eq!(band.position(0.0, 40), 0.0);
+        assert_eq!(band.position(0.3, 20), f64::INFINITY);
+    }
+}
