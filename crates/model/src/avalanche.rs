@@ -106,7 +106,7 @@ impl Avalanche {
             if pool.len > 1 {
                 moved = true;
                 let end = pool.start + pool.len;
-                *touched = if touched.is_empty() {
+                *touched = if touched.start >= touched.end {
                     pool.start..end
                 } else {
                     touched.start.min(pool.start)..touched.end.max(end)
