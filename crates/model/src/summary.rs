@@ -2,11 +2,23 @@
 
 use crate::case::Case;
 use crate::peaks::find_peaks;
-use crate::simulation::StepRecord;
+use crate::simulation::{ProfilePoint, StepRecord};
 
 /// Minimum prominence of a reported force peak, as a fraction of the largest
 /// normalised force of the run (see `peaks`).
 pub const PEAK_PROMINENCE: f64 = 0.05;
+
+/// A band jump is a move of the emergence point, relative to the ground,
+/// longer than this many blade depths from one increment to the next.
+pub const JUMP_DEPTHS: f64 = 0.25;
+
+/// Accumulated shear above this fraction of `soil.residual_shear` counts a
+/// surface node as sheared (`sheared_fraction`).
+pub const SHEARED_THRESHOLD: f64 = 0.05;
+
+/// Length ahead of the blade's final position, in blade depths, over which
+/// `sheared_fraction` is measured.
+pub const SHEARED_REACH_DEPTHS: f64 = 5.0;
 
 /// A distinct peak of the force history.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,6 +40,10 @@ pub struct Summary {
     /// (mass after the last increment − initial mass) / initial mass.
     pub mass_drift_rel: f64,
     pub steps: usize,
+    /// Indices into the history of the band jumps (see `JUMP_DEPTHS`).
+    pub band_jumps: Vec<usize>,
+    /// Total area added by band dilation (negative: compaction).
+    pub dilation_area: f64,
 }
 
 impl Summary {
@@ -63,6 +79,34 @@ impl Summary {
             peaks,
             mass_drift_rel: (final_mass - initial_mass) / initial_mass,
             steps: history.len(),
+            band_jumps: band_jumps(history, JUMP_DEPTHS * d),
+            dilation_area: history.iter().map(|r| r.dilation_area).sum(),
         }
     }
+}
+
+/// Increments whose emergence point lies more than `length` away from the
+/// previous one.
+pub fn band_jumps(history: &[StepRecord], length: f64) -> Vec<usize> {
+    (1..history.len())
+        .filter(|&i| (history[i].x_emergence - history[i - 1].x_emergence).abs() > length)
+        .collect()
+}
+
+/// Fraction of the surface nodes within `SHEARED_REACH_DEPTHS` depths ahead
+/// of the blade whose accumulated shear exceeds `SHEARED_THRESHOLD` ur:
+/// high where successive bands gave the appearance of continuous shearing,
+/// low where bands stayed at distinct locations.
+pub fn sheared_fraction(case: &Case, profile: &[ProfilePoint]) -> f64 {
+    let Some(face) = profile.first() else {
+        return f64::NAN;
+    };
+    let reach = face.x + SHEARED_REACH_DEPTHS * case.blade.depth;
+    let threshold = SHEARED_THRESHOLD * case.soil.residual_shear;
+    let ahead: Vec<&ProfilePoint> = profile.iter().filter(|p| p.x <= reach).collect();
+    let sheared = ahead
+        .iter()
+        .filter(|p| p.accumulated_shear > threshold)
+        .count();
+    sheared as f64 / ahead.len() as f64
 }

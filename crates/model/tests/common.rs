@@ -41,3 +41,34 @@ pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
     let root = ((p + w).sin() * p.sin() / w.cos()).sqrt();
     p.cos().powi(2) / (w.cos() * (1.0 - root).powi(2))
 }
+
+/// The paper's refined cases (MODEL.md section 6): "fig5", "table1-hs",
+/// "table1-s", shortened to `travel_depths` at increment d / `per_depth`.
+pub fn refined(which: &str, travel_depths: f64, per_depth: f64) -> Case {
+    let law = |initial, peak, residual| AngleLaw {
+        initial,
+        peak,
+        residual,
+    };
+    let mut case = original(travel_depths, per_depth);
+    case.model = Model::Refined;
+    let (friction, dilation, up, n) = match which {
+        "fig5" => (law(20.0, 40.0, 30.0), law(-5.0, 10.0, 0.0), 2.0, 15.0),
+        "table1-hs" => (law(20.0, 35.0, 30.0), law(-5.0, 5.0, 0.0), 2.0, 7.0),
+        "table1-s" => (law(35.0, 35.0, 30.0), law(0.0, 5.0, 0.0), 0.0, 7.0),
+        other => panic!("no case {other}"),
+    };
+    case.name = which.into();
+    case.soil.friction = friction;
+    case.soil.dilation = dilation;
+    case.soil.peak_shear = up;
+    case.soil.band_width = n * 0.6;
+    case
+}
+
+/// Runs a case to the end.
+pub fn run(case: &Case) -> (Vec<soilcut_model::StepRecord>, soilcut_model::Simulation) {
+    let mut sim = soilcut_model::Simulation::new(case).expect("valid case");
+    let history = sim.run_to_end(|_| {}).expect("admissible mechanism");
+    (history, sim)
+}

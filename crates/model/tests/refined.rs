@@ -1,0 +1,101 @@
+//! The refined model against closed forms, conservation and its reduction
+//! to the original model.
+
+mod common;
+
+use soilcut_model::{AngleLaw, Summary};
+
+#[test]
+fn first_increment_is_coulomb_with_initial_friction() {
+    for (which, phi_c) in [("fig5", 20.0), ("table1-hs", 20.0), ("table1-s", 35.0)] {
+        let case = common::refined(which, 0.01, 1000.0);
+        let (history, _) = common::run(&case);
+        let expected = 0.5 * common::coulomb_kp(phi_c, 10.0);
+        let rel = (history[0].force_norm - expected).abs() / expected;
+        assert!(
+            rel < 1e-4,
+            "{which}: {} vs {expected}",
+            history[0].force_norm
+        );
+    }
+}
+
+#[test]
+fn mass_is_conserved_and_area_grows_by_the_band_dilation() {
+    for which in ["fig5", "table1-hs", "table1-s"] {
+        let case = common::refined(which, 1.5, 100.0);
+        let (history, sim) = common::run(&case);
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-9, "{which}: mass drift {drift:e}");
+        let d = case.blade.depth;
+        let initial_area = sim.initial_mass() / case.soil.unit_weight;
+        let area = sim.surface().area(sim.steps_done());
+        let dilation: f64 = history.iter().map(|r| r.dilation_area).sum();
+        assert!(
+            dilation.abs() > 1e-3 * d * d,
+            "{which}: the band must change volume"
+        );
+        let mismatch = (area - initial_area - dilation).abs() / initial_area;
+        assert!(
+            mismatch < 1e-9,
+            "{which}: area gain ≠ dilation ({mismatch:e})"
+        );
+    }
+}
+
+#[test]
+fn without_dilation_area_is_conserved() {
+    let mut case = common::refined("fig5", 1.5, 100.0);
+    case.soil.dilation = AngleLaw::constant(0.0);
+    let (history, sim) = common::run(&case);
+    let initial_area = sim.initial_mass() / case.soil.unit_weight;
+    let drift = (sim.surface().area(sim.steps_done()) - initial_area) / initial_area;
+    assert!(drift.abs() < 1e-12, "area drift {drift:e}");
+    assert!(history.iter().all(|r| r.dilation_area == 0.0));
+}
+
+#[test]
+fn a_band_narrower_than_a_node_is_the_original_slip_line() {
+    let original = common::original(1.5, 100.0);
+    let mut refined = original.clone();
+    refined.model = soilcut_model::Model::Refined;
+    refined.soil.band_width = 1e-6 * original.run.increment;
+    let (a, _) = common::run(&original);
+    let (b, _) = common::run(&refined);
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x.x_emergence, y.x_emergence, "step {}", x.step);
+        assert!(
+            (x.force - y.force).abs() <= 1e-9 * x.force,
+            "step {}",
+            x.step
+        );
+    }
+}
+
+#[test]
+fn softening_only_gives_two_peaks_at_band_jumps() {
+    let case = common::refined("table1-s", 5.0, 250.0);
+    let (history, sim) = common::run(&case);
+    let summary = Summary::new(&case, &history, sim.initial_mass());
+    assert_eq!(summary.peaks.len(), 2, "{:?}", summary.peaks);
+    for peak in &summary.peaks {
+        let near_jump = summary
+            .band_jumps
+            .iter()
+            .any(|&k| k.abs_diff(peak.index) <= 2);
+        assert!(
+            near_jump,
+            "peak at u/d = {} is not at a band jump",
+            peak.u_over_d
+        );
+    }
+}
+
+#[test]
+fn the_same_case_twice_is_bit_identical() {
+    let case = common::refined("table1-hs", 0.5, 100.0);
+    let (a, _) = common::run(&case);
+    let (b, _) = common::run(&case);
+    assert_eq!(a, b);
+}
