@@ -1,0 +1,485 @@
+//! The `soilcut` binary end to end: bad inputs, outputs, the output folder.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use tempfile::TempDir;
+
+/// Short cases (100 increments) shared with soilcut-io's unit tests.
+const BASE: &str = include_str!("../../io/testdata/original.toml");
+const REFINED: &str = include_str!("../../io/testdata/refined.toml");
+
+const SHORT: [&str; 4] = ["--set", "run.travel=20", "--set", "run.increment=0.2"];
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn paper_case() -> PathBuf {
+    workspace().join("cases/paper/original.toml")
+}
+
+/// A temporary working folder holding `case.toml`.
+struct Sandbox {
+    dir: TempDir,
+}
+
+impl Sandbox {
+    fn new(case: &str) -> Self {
+        let dir = tempfile::tempdir().unwrap();
+        fs::write(dir.path().join("case.toml"), case).unwrap();
+        Sandbox { dir }
+    }
+
+    fn path(&self, rel: &str) -> PathBuf {
+        self.dir.path().join(rel)
+    }
+
+    fn soilcut(&self, args: &[&str]) -> Output {
+        Command::new(env!("CARGO_BIN_EXE_soilcut"))
+            .args(args)
+            .current_dir(self.dir.path())
+            .output()
+            .unwrap()
+    }
+
+    fn entries(&self) -> Vec<String> {
+        let mut names: Vec<String> = fs::read_dir(self.dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn assert_ok(o: &Output) {
+    assert!(o.status.success(), "{:?}: {}", o.status, stderr(o));
+}
+
+/// `soilcut run` and `soilcut check` of `case` with `set` must both fail
+/// with exit code 2 and exactly one stderr line starting with `prefix`
+/// (after `error: case.toml: `), and `run` must create no output folder.
+fn assert_bad_input(case: &str, set: &[&str], prefix: &str) -> String {
+    let sandbox = Sandbox::new(case);
+    let mut sets = Vec::new();
+    for s in set {
+        sets.extend(["--set", s]);
+    }
+    let mut line = String::new();
+    for command in ["run", "check"] {
+        let mut args = vec![command, "case.toml"];
+        args.extend(&sets);
+        let o = sandbox.soilcut(&args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{command}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+        assert_eq!(err.lines().count(), 1, "one line: {err}");
+        let expected = format!("error: case.toml: {prefix}");
+        assert!(
+            err.starts_with(&expected),
+            "expected {expected:?}, got {err:?}"
+        );
+        assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+        line = err;
+    }
+    assert_eq!(sandbox.entries(), ["case.toml"], "no output folder");
+    line
+}
+
+#[test]
+fn malformed_toml() {
+    let case = BASE.replace("depth = 20.0", "depth = = 20.0");
+    assert_bad_input(&case, &[], "line 5: ");
+    assert_bad_input("name = \"unterminated", &[], "line 1: ");
+}
+
+#[test]
+fn missing_key() {
+    let case = BASE.replace("depth = 20.0\n", "");
+    assert_bad_input(&case, &[], "blade.depth: ");
+    assert_bad_input(&BASE.replace("name = \"base\"\n", ""), &[], "name: ");
+}
+
+#[test]
+fn unknown_key_in_file() {
+    let case = BASE.replace("[blade]", "[blade]\nheight = 100.0");
+    let line = assert_bad_input(&case, &[], "blade.height: unknown key");
+    assert!(
+        line.contains("wall_friction"),
+        "lists the valid keys: {line}"
+    );
+}
+
+#[test]
+fn unknown_key_via_set() {
+    assert_bad_input(BASE, &["soil.frction.peak=36"], "soil.frction: unknown key");
+    assert_bad_input(BASE, &["speed=3"], "speed: unknown key");
+}
+
+#[test]
+fn malformed_set() {
+    assert_bad_input(BASE, &["run.increment"], "--set run.increment: ");
+    assert_bad_input(BASE, &["run.increment.x=1"], "run.increment.x: ");
+}
+
+#[test]
+fn depth_not_positive() {
+    assert_bad_input(BASE, &["blade.depth=0"], "blade.depth: ");
+    assert_bad_input(BASE, &["blade.depth=-20"], "blade.depth: ");
+}
+
+#[test]
+fn increment_not_positive() {
+    assert_bad_input(BASE, &["run.increment=0"], "run.increment: ");
+    assert_bad_input(BASE, &["run.increment=-0.2"], "run.increment: ");
+}
+
+#[test]
+fn increment_not_below_depth() {
+    assert_bad_input(BASE, &["run.increment=20"], "run.increment: ");
+    assert_bad_input(BASE, &["run.increment=25"], "run.increment: ");
+}
+
+#[test]
+fn travel_not_positive() {
+    assert_bad_input(BASE, &["run.travel=0"], "run.travel: ");
+    assert_bad_input(BASE, &["run.travel=-1"], "run.travel: ");
+}
+
+#[test]
+fn friction_outside_open_range() {
+    assert_bad_input(BASE, &["soil.friction.peak=90"], "soil.friction.peak: ");
+    assert_bad_input(
+        BASE,
+        &["soil.friction.residual=0"],
+        "soil.friction.residual: ",
+    );
+    assert_bad_input(
+        REFINED,
+        &["soil.friction.initial=-1"],
+        "soil.friction.initial: ",
+    );
+}
+
+#[test]
+fn wall_friction_outside_range() {
+    assert_bad_input(BASE, &["blade.wall_friction=-1"], "blade.wall_friction: ");
+    // Must be below every friction angle: the residual is 30°.
+    assert_bad_input(BASE, &["blade.wall_friction=30"], "blade.wall_friction: ");
+    assert_bad_input(BASE, &["blade.wall_friction=40"], "blade.wall_friction: ");
+}
+
+#[test]
+fn residual_above_peak() {
+    assert_bad_input(
+        BASE,
+        &["soil.friction.residual=36"],
+        "soil.friction.residual: ",
+    );
+}
+
+#[test]
+fn nan_is_refused() {
+    let case = BASE.replace("depth = 20.0", "depth = nan");
+    let line = assert_bad_input(&case, &[], "blade.depth: ");
+    assert!(line.contains("finite"), "{line}");
+    assert_bad_input(BASE, &["soil.unit_weight=nan"], "soil.unit_weight: ");
+}
+
+#[test]
+fn infinity_is_refused() {
+    let case = BASE.replace("travel = 20.0", "travel = inf");
+    let line = assert_bad_input(&case, &[], "run.travel: ");
+    assert!(line.contains("finite"), "{line}");
+    assert_bad_input(BASE, &["blade.wall_friction=-inf"], "blade.wall_friction: ");
+}
+
+#[test]
+fn no_admissible_mechanism() {
+    // φ + φw ≥ 90°: no β > 0 with β + φ + φw < 90°.
+    let set = [
+        "soil.friction.peak=80",
+        "soil.friction.residual=80",
+        "blade.wall_friction=10",
+    ];
+    let line = assert_bad_input(BASE, &set, "soil.friction.peak: ");
+    assert!(line.contains("90°"), "{line}");
+}
+
+#[test]
+fn refined_only_key_in_original_case() {
+    let case = BASE.replace("residual_shear = 4.0", "residual_shear = 4.0\nd50 = 0.6");
+    let line = assert_bad_input(&case, &[], "soil.d50: ");
+    assert!(line.contains("model = \"refined\" only"), "{line}");
+    let line = assert_bad_input(
+        BASE,
+        &["soil.friction.initial=20"],
+        "soil.friction.initial: ",
+    );
+    assert!(line.contains("refined"), "{line}");
+}
+
+#[test]
+fn both_band_width_keys() {
+    let case = REFINED.replace("d50 = 0.6", "d50 = 0.6\nband_width = 4.2");
+    let line = assert_bad_input(&case, &[], "soil.band_width: ");
+    assert!(
+        line.contains("soil.band_width_d50"),
+        "names both keys: {line}"
+    );
+}
+
+#[test]
+fn bad_name() {
+    assert_bad_input(BASE, &["name=\"../escape\""], "name: ");
+}
+
+#[test]
+fn missing_case_file() {
+    let sandbox = Sandbox::new(BASE);
+    let o = sandbox.soilcut(&["run", "nowhere.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(stderr(&o).lines().count(), 1, "{}", stderr(&o));
+    assert!(stderr(&o).starts_with("error: nowhere.toml: "));
+    assert_eq!(sandbox.entries(), ["case.toml"]);
+}
+
+#[test]
+fn refined_case_checks() {
+    let sandbox = Sandbox::new(REFINED);
+    let o = sandbox.soilcut(&["check", "case.toml"]);
+    assert_ok(&o);
+    assert_eq!(
+        stdout(&o).trim(),
+        "ok: case.toml: name refined, model refined, 100 steps"
+    );
+}
+
+fn run_base(sandbox: &Sandbox, out: &str, extra: &[&str]) -> Output {
+    let mut args = vec!["run", "case.toml", "--out", out];
+    args.extend(extra);
+    sandbox.soilcut(&args)
+}
+
+#[test]
+fn default_output_folder_and_result_line() {
+    let sandbox = Sandbox::new(BASE);
+    let o = sandbox.soilcut(&["run", "case.toml"]);
+    assert_ok(&o);
+    let out = stdout(&o);
+    assert_eq!(out.lines().count(), 1, "{out}");
+    assert!(
+        out.contains("100 steps") && out.contains("max force_norm"),
+        "{out}"
+    );
+    assert!(
+        out.contains(&format!("out{}base", std::path::MAIN_SEPARATOR)),
+        "{out}"
+    );
+    let mut files: Vec<String> = fs::read_dir(sandbox.path("out/base"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    assert_eq!(
+        files,
+        [
+            "case.resolved.toml",
+            "history.csv",
+            "profile.csv",
+            "summary.json"
+        ]
+    );
+    assert_eq!(sandbox.entries(), ["case.toml", "out"], "no staging left");
+}
+
+#[test]
+fn same_case_gives_identical_history() {
+    let sandbox = Sandbox::new(BASE);
+    assert_ok(&run_base(&sandbox, "a", &[]));
+    assert_ok(&run_base(&sandbox, "b", &[]));
+    let a = fs::read(sandbox.path("a/history.csv")).unwrap();
+    let b = fs::read(sandbox.path("b/history.csv")).unwrap();
+    assert!(a.len() > 1000);
+    assert!(a == b, "history.csv differs between two runs");
+    let a = fs::read(sandbox.path("a/profile.csv")).unwrap();
+    assert!(a == fs::read(sandbox.path("b/profile.csv")).unwrap());
+}
+
+#[test]
+fn history_csv_layout() {
+    let sandbox = Sandbox::new(BASE);
+    assert_ok(&run_base(&sandbox, "o", &[]));
+    let text = fs::read_to_string(sandbox.path("o/history.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 100, "one row per increment");
+    assert!(rows.iter().all(|r| r.len() == 13));
+    assert_eq!(rows[0][0], 1.0);
+    assert_eq!(rows[1][1], 0.2, "u of step 2");
+    assert_eq!(rows[1][2], 0.2 / 20.0, "u_over_d");
+    let profile = fs::read_to_string(sandbox.path("o/profile.csv")).unwrap();
+    assert!(profile.starts_with("x,y,accumulated_shear,unit_weight\n"));
+    assert!(profile.lines().count() > 100);
+}
+
+#[test]
+fn summary_json_fields_and_mass_conservation() {
+    let sandbox = Sandbox::new(BASE);
+    assert_ok(&run_base(&sandbox, "o", &[]));
+    let text = fs::read_to_string(sandbox.path("o/summary.json")).unwrap();
+    let s: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for key in [
+        "name",
+        "title",
+        "model",
+        "initial_force_norm",
+        "max_force_norm",
+        "u_over_d_at_max",
+        "final_force_norm",
+        "peaks",
+        "peak_prominence_rule",
+        "mass_drift_rel",
+        "steps",
+        "candidate_evaluations",
+        "wall_time_s",
+    ] {
+        assert!(s.get(key).is_some(), "summary.json lacks {key}: {text}");
+    }
+    assert_eq!(s["name"], "base");
+    assert_eq!(s["title"], "base", "title defaults to the name");
+    assert_eq!(s["model"], "original");
+    assert_eq!(s["steps"], 100);
+    assert!(s["peak_prominence_rule"].as_str().unwrap().contains("0.05"));
+    let drift = s["mass_drift_rel"].as_f64().unwrap();
+    assert!(drift.abs() < 1e-12, "mass drift {drift}");
+    // Coulomb's passive wedge, φ = 35°, φw = 10°: ½ Kp ≈ 2.654.
+    let first = s["initial_force_norm"].as_f64().unwrap();
+    assert!((first - 2.654).abs() < 0.01, "{first}");
+    assert!(s["max_force_norm"].as_f64().unwrap() >= first);
+}
+
+#[test]
+fn existing_folder_refused_then_replaced_with_force() {
+    let sandbox = Sandbox::new(BASE);
+    fs::create_dir(sandbox.path("o")).unwrap();
+    fs::write(sandbox.path("o/stale.txt"), "old").unwrap();
+    let o = run_base(&sandbox, "o", &[]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: o: ") && err.contains("--force"),
+        "{err}"
+    );
+    assert_eq!(
+        fs::read_to_string(sandbox.path("o/stale.txt")).unwrap(),
+        "old"
+    );
+
+    assert_ok(&run_base(&sandbox, "o", &["--force"]));
+    assert!(
+        !sandbox.path("o/stale.txt").exists(),
+        "--force replaces the folder"
+    );
+    assert!(sandbox.path("o/history.csv").exists());
+    assert_eq!(sandbox.entries(), ["case.toml", "o"], "nothing left aside");
+}
+
+#[test]
+fn set_changes_the_resolved_case() {
+    let sandbox = Sandbox::new(BASE);
+    let set = [
+        "--set",
+        "soil.friction.peak=36",
+        "--set",
+        "soil.repose=33.5",
+    ];
+    assert_ok(&run_base(&sandbox, "o", &set));
+    let text = fs::read_to_string(sandbox.path("o/case.resolved.toml")).unwrap();
+    let case = soilcut_io::parse_case(&text, &[]).unwrap().case;
+    assert_eq!(case.soil.friction.peak, 36.0);
+    assert_eq!(case.soil.friction.initial, 36.0);
+    assert_eq!(case.soil.repose, 33.5);
+    assert_eq!(case.run.increment, 0.2);
+}
+
+#[test]
+fn resolved_case_round_trip() {
+    let sandbox = Sandbox::new(BASE);
+    let paper = paper_case();
+    let mut args = vec!["run", paper.to_str().unwrap(), "--out", "a"];
+    args.extend(SHORT);
+    assert_ok(&sandbox.soilcut(&args));
+    let resolved = fs::read_to_string(sandbox.path("a/case.resolved.toml")).unwrap();
+
+    let overrides: Vec<soilcut_io::Override> = ["run.travel=20", "run.increment=0.2"]
+        .iter()
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let original = soilcut_io::read_case(&paper, &overrides).unwrap();
+    let again = soilcut_io::parse_case(&resolved, &[]).unwrap();
+    assert_eq!(again.case, original.case);
+    assert_eq!(again.resolved_toml(), resolved);
+
+    // Running the resolved file reproduces the run bit for bit.
+    assert_ok(&sandbox.soilcut(&["run", "a/case.resolved.toml", "--out", "b"]));
+    let a = fs::read(sandbox.path("a/history.csv")).unwrap();
+    assert!(a == fs::read(sandbox.path("b/history.csv")).unwrap());
+}
+
+fn case_files(dir: &Path, found: &mut Vec<PathBuf>) {
+    for entry in fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            case_files(&path, found);
+        } else if path.extension().is_some_and(|e| e == "toml") {
+            found.push(path);
+        }
+    }
+}
+
+#[test]
+fn check_accepts_every_case_file() {
+    let mut found = Vec::new();
+    case_files(&workspace().join("cases"), &mut found);
+    assert!(found.iter().any(|p| p.ends_with("paper/original.toml")));
+    for path in found {
+        let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+            .arg("check")
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert_ok(&o);
+        assert!(stdout(&o).starts_with("ok: "), "{}", stdout(&o));
+    }
+}
+
+#[test]
+fn help_shows_examples() {
+    let sandbox = Sandbox::new(BASE);
+    for args in [&["--help"][..], &["run", "--help"], &["check", "--help"]] {
+        let o = sandbox.soilcut(args);
+        assert_ok(&o);
+        let text = stdout(&o);
+        assert!(text.contains("Examples:"), "{args:?}: {text}");
+        assert!(text.contains("soilcut "), "{args:?}: {text}");
+    }
+    let text = stdout(&sandbox.soilcut(&["run", "--help"]));
+    assert!(text.contains("soilcut run cases/paper/original.toml --set run.increment=0.02"));
+}

@@ -1,0 +1,450 @@
+//! Case files: TOML in, a resolved and validated [`Case`] out.
+//!
+//! The key names are the public interface (see README.md). Unknown keys are
+//! an error; keys of the refined model are an error in an original case.
+//! Range checks are [`Case::validate`]'s; this module only checks what the
+//! model never sees (the case name, `soil.d50`, `soil.band_width_d50`).
+
+use crate::error::InputError;
+use crate::overrides::Override;
+use serde::{Deserialize, Serialize};
+use soilcut_model::{AngleLaw, Blade, Case, CaseError, Model, Run, Soil};
+use std::path::Path;
+
+const REFINED_ONLY: &str = "applies to model = \"refined\" only";
+const REFINED_REQUIRED: &str = "required for model = \"refined\"";
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"original\" or \"refined\"")]
+enum ModelName {
+    Original,
+    Refined,
+}
+
+/// The case file as written; also the form of `case.resolved.toml`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a case table")]
+struct CaseFile {
+    name: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    title: Option<String>,
+    model: ModelName,
+    blade: BladeFile,
+    soil: SoilFile,
+    run: RunFile,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table { depth, wall_friction }")]
+struct BladeFile {
+    depth: f64,
+    wall_friction: f64,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table of soil properties")]
+struct SoilFile {
+    unit_weight: f64,
+    friction: FrictionFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    dilation: Option<AngleFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    peak_shear: Option<f64>,
+    residual_shear: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    repose: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    d50: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    band_width: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    band_width_d50: Option<f64>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table { initial, peak, residual }")]
+struct FrictionFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    initial: Option<f64>,
+    peak: f64,
+    residual: f64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table { initial, peak, residual }")]
+struct AngleFile {
+    initial: f64,
+    peak: f64,
+    residual: f64,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table { travel, increment }")]
+struct RunFile {
+    travel: f64,
+    increment: f64,
+}
+
+/// A case read from a file: the model's [`Case`] and its resolved file form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LoadedCase {
+    pub case: Case,
+    resolved: CaseFile,
+}
+
+impl LoadedCase {
+    /// `case.resolved.toml`: every default filled in, only the keys valid
+    /// for the case's model. Reading it back gives the same [`Case`].
+    pub fn resolved_toml(&self) -> String {
+        let body = toml::to_string(&self.resolved).expect("a case serialises to TOML");
+        format!(
+            "# soilcut {} case, resolved: every default filled in.\n{body}",
+            env!("CARGO_PKG_VERSION")
+        )
+    }
+}
+
+/// Reads, overrides, resolves and validates a case file.
+pub fn read_case(path: &Path, overrides: &[Override]) -> Result<LoadedCase, InputError> {
+    let text = std::fs::read_to_string(path).map_err(InputError::Read)?;
+    parse_case(&text, overrides)
+}
+
+/// [`read_case`] on the text of a case file.
+pub fn parse_case(text: &str, overrides: &[Override]) -> Result<LoadedCase, InputError> {
+    let mut table: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| syntax(text, &e))?;
+    for o in overrides {
+        o.apply(&mut table)?;
+    }
+    let file: CaseFile = serde_path_to_error::deserialize(table).map_err(|e| schema_error(&e))?;
+    resolve(file)
+}
+
+fn syntax(text: &str, e: &toml::de::Error) -> InputError {
+    let line = e.span().map_or(1, |s| {
+        text[..s.start.min(text.len())].matches('\n').count() + 1
+    });
+    InputError::Syntax {
+        line,
+        message: crate::error::one_line(e.message()),
+    }
+}
+
+/// Names the dotted key of a schema error, including the missing or unknown
+/// key itself (serde reports those at the enclosing table).
+fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
+    let path = e.path().to_string();
+    let message = e.inner().message();
+    let child = |field: &str| {
+        if path == "." {
+            field.to_string()
+        } else if path.ends_with(&format!(".{field}")) || path == field {
+            path.clone()
+        } else {
+            format!("{path}.{field}")
+        }
+    };
+    if let Some(field) = quoted_after(message, "missing field `") {
+        return InputError::key(&child(field), "required key is missing");
+    }
+    if let Some(field) = quoted_after(message, "unknown field `") {
+        let expected = message.split_once(", expected ").map_or("", |(_, e)| e);
+        let hint = match expected {
+            "" => String::new(),
+            e => format!(" (expected {})", e.replace("one of ", "one of: ")),
+        };
+        return InputError::key(&child(field), format!("unknown key{hint}"));
+    }
+    let key = if path == "." { "case" } else { &path };
+    InputError::key(key, message)
+}
+
+fn quoted_after<'a>(message: &'a str, prefix: &str) -> Option<&'a str> {
+    let rest = message.strip_prefix(prefix)?;
+    rest.split_once('`').map(|(field, _)| field)
+}
+
+fn refined_only(present: bool, key: &str) -> Result<(), InputError> {
+    if present {
+        Err(InputError::key(key, REFINED_ONLY))
+    } else {
+        Ok(())
+    }
+}
+
+fn required<T>(value: Option<T>, key: &str) -> Result<T, InputError> {
+    value.ok_or_else(|| InputError::key(key, REFINED_REQUIRED))
+}
+
+fn check_name(name: &str) -> Result<(), InputError> {
+    let allowed = |c: char| c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-');
+    if name.is_empty() || !name.chars().all(allowed) || name.chars().all(|c| c == '.') {
+        return Err(InputError::key(
+            "name",
+            format!("must be non-empty, of the characters A-Z a-z 0-9 . _ - only, and not only dots (got {name:?}); it names the output folder"),
+        ));
+    }
+    Ok(())
+}
+
+/// A positive, finite number the model never sees (so it cannot check it).
+fn positive(value: f64, key: &str) -> Result<(), InputError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(InputError::key(
+            key,
+            format!("must be a finite number > 0 (got {value})"),
+        ))
+    }
+}
+
+/// The refined model's own keys: (friction.initial, dilation, peak_shear,
+/// band width). Fills in the resolved file in place.
+fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), InputError> {
+    let initial = required(soil.friction.initial, "soil.friction.initial")?;
+    let dilation = required(soil.dilation, "soil.dilation")?;
+    let peak_shear = required(soil.peak_shear, "soil.peak_shear")?;
+    let d50 = required(soil.d50, "soil.d50")?;
+    positive(d50, "soil.d50")?;
+    let band_width = match (soil.band_width, soil.band_width_d50) {
+        (Some(width), None) => width,
+        (None, Some(n)) => {
+            positive(n, "soil.band_width_d50")?;
+            n * d50
+        }
+        (Some(_), Some(_)) => {
+            return Err(InputError::key(
+                "soil.band_width",
+                "give exactly one of soil.band_width (a length) and soil.band_width_d50 (N, dB = N·d50), not both",
+            ))
+        }
+        (None, None) => {
+            return Err(InputError::key(
+                "soil.band_width",
+                format!("{REFINED_REQUIRED}: give soil.band_width (a length) or soil.band_width_d50 (N, dB = N·d50)"),
+            ))
+        }
+    };
+    let dilation = AngleLaw {
+        initial: dilation.initial,
+        peak: dilation.peak,
+        residual: dilation.residual,
+    };
+    Ok((initial, dilation, peak_shear, band_width))
+}
+
+fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
+    check_name(&file.name)?;
+    let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
+    let soil = &mut file.soil;
+    let repose = *soil.repose.get_or_insert(soil.friction.residual);
+    let model = match file.model {
+        ModelName::Original => Model::Original,
+        ModelName::Refined => Model::Refined,
+    };
+    let (initial, dilation, peak_shear, band_width) = match model {
+        Model::Original => {
+            refined_only(soil.friction.initial.is_some(), "soil.friction.initial")?;
+            refined_only(soil.dilation.is_some(), "soil.dilation")?;
+            refined_only(soil.peak_shear.is_some(), "soil.peak_shear")?;
+            refined_only(soil.d50.is_some(), "soil.d50")?;
+            refined_only(soil.band_width.is_some(), "soil.band_width")?;
+            refined_only(soil.band_width_d50.is_some(), "soil.band_width_d50")?;
+            (soil.friction.peak, AngleLaw::constant(0.0), 0.0, 0.0)
+        }
+        Model::Refined => resolve_refined(soil)?,
+    };
+    let case = Case {
+        name: file.name.clone(),
+        title,
+        model,
+        blade: Blade {
+            depth: file.blade.depth,
+            wall_friction: file.blade.wall_friction,
+        },
+        soil: Soil {
+            unit_weight: soil.unit_weight,
+            friction: AngleLaw {
+                initial,
+                peak: soil.friction.peak,
+                residual: soil.friction.residual,
+            },
+            dilation,
+            peak_shear,
+            residual_shear: soil.residual_shear,
+            repose,
+            band_width,
+        },
+        run: Run {
+            travel: file.run.travel,
+            increment: file.run.increment,
+        },
+    };
+    case.validate().map_err(|e| key_as_written(e, &file))?;
+    Ok(LoadedCase {
+        case,
+        resolved: file,
+    })
+}
+
+/// Names a validation error by the key the user wrote: the original model's
+/// initial friction is its peak, and a band width may be given as N·d50.
+fn key_as_written(e: CaseError, file: &CaseFile) -> InputError {
+    match (e.key.as_str(), file.model) {
+        ("soil.friction.initial", ModelName::Original) => {
+            InputError::key("soil.friction.peak", e.message)
+        }
+        ("soil.band_width", _) if file.soil.band_width_d50.is_some() => InputError::key(
+            "soil.band_width_d50",
+            format!("band width dB = N·d50: {}", e.message),
+        ),
+        _ => e.into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ORIGINAL: &str = include_str!("../testdata/original.toml");
+    const REFINED: &str = include_str!("../testdata/refined.toml");
+
+    fn key_error(text: &str, overrides: &[&str]) -> CaseError {
+        let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
+        match parse_case(text, &overrides) {
+            Err(InputError::Key(e)) => e,
+            other => panic!("expected a key error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn original_resolves_defaults() {
+        let c = parse_case(ORIGINAL, &[]).unwrap().case;
+        assert_eq!(c.title, "base");
+        assert_eq!(c.soil.repose, 30.0);
+        assert_eq!(c.soil.friction.initial, 35.0);
+        assert_eq!(c.soil.dilation, AngleLaw::constant(0.0));
+        assert_eq!((c.soil.peak_shear, c.soil.band_width), (0.0, 0.0));
+    }
+
+    #[test]
+    fn refined_band_width_from_d50() {
+        let c = parse_case(REFINED, &[]).unwrap().case;
+        assert_eq!(c.model, Model::Refined);
+        assert_eq!(c.soil.band_width, 7.0 * 0.6);
+        assert_eq!(c.soil.friction.initial, 20.0);
+        assert_eq!(c.soil.dilation.initial, -5.0);
+    }
+
+    #[test]
+    fn resolved_round_trip_is_identical() {
+        for text in [ORIGINAL, REFINED] {
+            let loaded = parse_case(text, &[]).unwrap();
+            let again = parse_case(&loaded.resolved_toml(), &[]).unwrap();
+            assert_eq!(again.case, loaded.case);
+            assert_eq!(again.resolved_toml(), loaded.resolved_toml());
+        }
+    }
+
+    #[test]
+    fn resolved_original_has_no_refined_keys() {
+        let text = parse_case(ORIGINAL, &[]).unwrap().resolved_toml();
+        for key in ["initial", "dilation", "peak_shear", "d50", "band_width"] {
+            assert!(!text.contains(key), "{key} in\n{text}");
+        }
+        assert!(
+            text.contains("repose = 30.0") && text.contains("title = \"base\""),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn missing_and_unknown_keys_are_named() {
+        let e = key_error(&ORIGINAL.replace("depth = 20.0\n", ""), &[]);
+        assert_eq!(e.key, "blade.depth");
+        let e = key_error(&ORIGINAL.replace("[run]", "[run]\nspeed = 1"), &[]);
+        assert_eq!(e.key, "run.speed");
+        assert!(e.message.starts_with("unknown key"), "{e}");
+        let e = key_error(ORIGINAL, &["soil.friction.pk=3"]);
+        assert_eq!(e.key, "soil.friction.pk");
+        let e = key_error(ORIGINAL, &["colour=1"]);
+        assert_eq!(e.key, "colour");
+        let e = key_error(&ORIGINAL.replace("name = \"base\"\n", ""), &[]);
+        assert_eq!(e.key, "name");
+    }
+
+    #[test]
+    fn wrong_types_are_named() {
+        let e = key_error(ORIGINAL, &["blade.depth=\"deep\""]);
+        assert_eq!(e.key, "blade.depth");
+        let e = key_error(ORIGINAL, &["model=fancy"]);
+        assert_eq!(e.key, "model");
+    }
+
+    #[test]
+    fn refined_keys_in_original_case() {
+        for (set, key) in [
+            ("soil.friction.initial=30", "soil.friction.initial"),
+            ("soil.peak_shear=1", "soil.peak_shear"),
+            ("soil.d50=0.6", "soil.d50"),
+            ("soil.band_width=9", "soil.band_width"),
+            ("soil.band_width_d50=9", "soil.band_width_d50"),
+            (
+                "soil.dilation={initial=0,peak=0,residual=0}",
+                "soil.dilation",
+            ),
+        ] {
+            let e = key_error(ORIGINAL, &[set]);
+            assert_eq!(e.key, key);
+            assert!(e.message.contains("refined"), "{e}");
+        }
+    }
+
+    #[test]
+    fn refined_requirements() {
+        let e = key_error(REFINED, &["soil.band_width=9"]);
+        assert!(e.to_string().contains("soil.band_width_d50"), "{e}");
+        let e = key_error(&REFINED.replace("band_width_d50 = 7\n", ""), &[]);
+        assert_eq!(e.key, "soil.band_width");
+        let e = key_error(&REFINED.replace("d50 = 0.6\n", ""), &[]);
+        assert_eq!(e.key, "soil.d50");
+        let e = key_error(&REFINED.replace("peak_shear = 2\n", ""), &[]);
+        assert_eq!(e.key, "soil.peak_shear");
+        let e = key_error(REFINED, &["soil.friction={peak=40,residual=30}"]);
+        assert_eq!(e.key, "soil.friction.initial");
+        let e = key_error(REFINED, &["soil.d50=-0.6", "soil.band_width_d50=-15"]);
+        assert_eq!(e.key, "soil.d50");
+        let e = key_error(REFINED, &["soil.band_width_d50=40"]);
+        assert_eq!(
+            e.key, "soil.band_width_d50",
+            "dB = 24 > d is named as written"
+        );
+    }
+
+    #[test]
+    fn original_friction_errors_name_the_peak() {
+        let e = key_error(ORIGINAL, &["soil.friction.peak=95"]);
+        assert_eq!(e.key, "soil.friction.peak");
+    }
+
+    #[test]
+    fn names_are_restricted() {
+        for bad in ["", "..", "a/b", "a b", "ü"] {
+            let e = key_error(ORIGINAL, &[&format!("name={bad:?}")]);
+            assert_eq!(e.key, "name", "{bad:?}");
+        }
+        assert!(parse_case(ORIGINAL, &["name=\"a-1_b.c\"".parse().unwrap()]).is_ok());
+    }
+
+    #[test]
+    fn syntax_errors_give_the_line() {
+        let text = ORIGINAL.replace("travel = 20.0", "travel = = 20.0");
+        match parse_case(&text, &[]) {
+            Err(InputError::Syntax { line, .. }) => assert_eq!(line, 14),
+            other => panic!("{other:?}"),
+        }
+    }
+}

@@ -1,0 +1,90 @@
+//! Errors of reading a case and of writing outputs. Every message is one line.
+
+use soilcut_model::CaseError;
+use std::fmt;
+use std::path::PathBuf;
+
+/// Why a case could not be read: always the user's input, never a bug.
+#[derive(Debug)]
+pub enum InputError {
+    /// The case file could not be read at all.
+    Read(std::io::Error),
+    /// The file is not valid TOML.
+    Syntax { line: usize, message: String },
+    /// A key is missing, unknown, of the wrong type or out of range.
+    Key(CaseError),
+    /// A `--set` argument is not `key.path=value`.
+    Override { text: String, message: String },
+}
+
+impl InputError {
+    pub(crate) fn key(key: &str, message: impl Into<String>) -> Self {
+        InputError::Key(CaseError::new(key, one_line(&message.into())))
+    }
+}
+
+impl From<CaseError> for InputError {
+    fn from(e: CaseError) -> Self {
+        InputError::key(&e.key, e.message)
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            InputError::Read(e) => {
+                write!(f, "cannot read the case file: {}", one_line(&e.to_string()))
+            }
+            InputError::Syntax { line, message } => write!(f, "line {line}: {message}"),
+            InputError::Key(e) => write!(f, "{e}"),
+            InputError::Override { text, message } => write!(f, "--set {text}: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// Why the outputs could not be written.
+#[derive(Debug)]
+pub enum OutputError {
+    /// The output folder exists, is not empty, and `force` was not given.
+    Exists(PathBuf),
+    /// A file system operation failed.
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+impl OutputError {
+    pub(crate) fn io(path: impl Into<PathBuf>) -> impl FnOnce(std::io::Error) -> Self {
+        let path = path.into();
+        move |source| OutputError::Io { path, source }
+    }
+
+    /// The path the error is about.
+    pub fn path(&self) -> &std::path::Path {
+        match self {
+            OutputError::Exists(path) | OutputError::Io { path, .. } => path,
+        }
+    }
+}
+
+impl fmt::Display for OutputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OutputError::Exists(_) => write!(
+                f,
+                "output folder exists and is not empty; use --force to replace it or choose another --out"
+            ),
+            OutputError::Io { source, .. } => write!(f, "{}", one_line(&source.to_string())),
+        }
+    }
+}
+
+impl std::error::Error for OutputError {}
+
+/// Collapses line breaks, so that every error prints as one line.
+pub(crate) fn one_line(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}

@@ -1,0 +1,20 @@
+//! soilcut-io: case files in, output files out. No terminal code: the
+//! command line (`soilcut`) formats the errors of this crate.
+//!
+//! * [`read_case`]: a TOML case file plus `--set` [`Override`]s → a resolved,
+//!   validated [`LoadedCase`] (and its `case.resolved.toml`).
+//! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
+//!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
+
+mod case_file;
+mod error;
+mod output;
+mod overrides;
+
+pub use case_file::{parse_case, read_case, LoadedCase};
+pub use error::{InputError, OutputError};
+pub use output::{
+    check_output_dir, peak_prominence_rule, write_output_dir, RunOutput, HISTORY_HEADER,
+    PROFILE_HEADER,
+};
+pub use overrides::Override;

@@ -1,0 +1,300 @@
+//! Output files of a run and their atomic placement.
+//!
+//! Floats are written with Rust's `{}` (shortest round-trip), so the same
+//! case gives bit-identical `history.csv` and `profile.csv`.
+
+use crate::case_file::LoadedCase;
+use crate::error::OutputError;
+use serde::Serialize;
+use soilcut_model::summary::PEAK_PROMINENCE;
+use soilcut_model::{ProfilePoint, StepRecord, Summary};
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// Columns of `history.csv`, in order.
+pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip";
+
+/// Columns of `profile.csv`, in order.
+pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight";
+
+/// Everything a finished run writes.
+pub struct RunOutput<'a> {
+    pub loaded: &'a LoadedCase,
+    pub history: &'a [StepRecord],
+    pub profile: &'a [ProfilePoint],
+    pub summary: &'a Summary,
+    pub candidate_evaluations: u64,
+    pub wall_time_s: f64,
+}
+
+impl RunOutput<'_> {
+    /// (file name, contents) of every output file.
+    pub fn files(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("history.csv", self.history_csv()),
+            ("profile.csv", self.profile_csv()),
+            ("summary.json", self.summary_json()),
+            ("case.resolved.toml", self.loaded.resolved_toml()),
+        ]
+    }
+
+    pub fn history_csv(&self) -> String {
+        let d = self.loaded.case.blade.depth;
+        let mut out = String::with_capacity(200 * (self.history.len() + 1));
+        out.push_str(HISTORY_HEADER);
+        out.push('\n');
+        for r in self.history {
+            let u_over_d = r.u / d;
+            writeln!(
+                out,
+                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{}",
+                r.step,
+                r.u,
+                r.force,
+                r.force_norm,
+                r.force_h,
+                r.force_v,
+                r.beta_deg,
+                r.x_emergence,
+                r.mass,
+                r.y_emergence,
+                r.friction_deg,
+                r.slip
+            )
+            .expect("writing to a String");
+        }
+        out
+    }
+
+    pub fn profile_csv(&self) -> String {
+        let mut out = String::with_capacity(80 * (self.profile.len() + 1));
+        out.push_str(PROFILE_HEADER);
+        out.push('\n');
+        for p in self.profile {
+            writeln!(
+                out,
+                "{},{},{},{}",
+                p.x, p.y, p.accumulated_shear, p.unit_weight
+            )
+            .expect("writing to a String");
+        }
+        out
+    }
+
+    pub fn summary_json(&self) -> String {
+        let case = &self.loaded.case;
+        let s = self.summary;
+        let json = SummaryJson {
+            name: &case.name,
+            title: &case.title,
+            model: case.model.name(),
+            initial_force_norm: s.initial_force_norm,
+            max_force_norm: s.max_force_norm,
+            u_over_d_at_max: s.u_over_d_at_max,
+            final_force_norm: s.final_force_norm,
+            peaks: s
+                .peaks
+                .iter()
+                .map(|p| PeakJson {
+                    u_over_d: p.u_over_d,
+                    force_norm: p.force_norm,
+                })
+                .collect(),
+            peak_prominence_rule: peak_prominence_rule(),
+            mass_drift_rel: s.mass_drift_rel,
+            steps: s.steps,
+            candidate_evaluations: self.candidate_evaluations,
+            wall_time_s: self.wall_time_s,
+        };
+        let mut text = serde_json::to_string_pretty(&json).expect("a summary serialises");
+        text.push('\n');
+        text
+    }
+}
+
+/// The rule by which `summary.json` lists peaks, in words.
+pub fn peak_prominence_rule() -> String {
+    format!(
+        "a peak is an interior local maximum of force_norm whose topographic prominence is at least {PEAK_PROMINENCE} (fraction) of max_force_norm ({}% of the largest force)",
+        PEAK_PROMINENCE * 100.0
+    )
+}
+
+#[derive(Serialize)]
+struct SummaryJson<'a> {
+    name: &'a str,
+    title: &'a str,
+    model: &'a str,
+    initial_force_norm: f64,
+    max_force_norm: f64,
+    u_over_d_at_max: f64,
+    final_force_norm: f64,
+    peaks: Vec<PeakJson>,
+    peak_prominence_rule: String,
+    mass_drift_rel: f64,
+    steps: usize,
+    candidate_evaluations: u64,
+    wall_time_s: f64,
+}
+
+#[derive(Serialize)]
+struct PeakJson {
+    u_over_d: f64,
+    force_norm: f64,
+}
+
+/// Whether `dir` is free for outputs: absent or an empty folder, or
+/// anything at all with `force`. Reads only.
+pub fn check_output_dir(dir: &Path, force: bool) -> Result<(), OutputError> {
+    if force || !occupied(dir)? {
+        Ok(())
+    } else {
+        Err(OutputError::Exists(dir.to_path_buf()))
+    }
+}
+
+fn occupied(dir: &Path) -> Result<bool, OutputError> {
+    match fs::read_dir(dir) {
+        Ok(mut entries) => Ok(entries.next().is_some()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(false),
+        Err(_) => Ok(dir.symlink_metadata().is_ok()),
+    }
+}
+
+/// Writes `files` into `dir` atomically: into a temporary sibling folder
+/// that is renamed into place once complete and removed on any failure.
+/// An occupied `dir` is refused unless `force`, which replaces it.
+pub fn write_output_dir(
+    dir: &Path,
+    files: &[(&str, String)],
+    force: bool,
+) -> Result<(), OutputError> {
+    check_output_dir(dir, force)?;
+    let parent = match dir.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    fs::create_dir_all(&parent).map_err(OutputError::io(&parent))?;
+    let staging = Staging::create(&parent, dir, "tmp")?;
+    for (name, contents) in files {
+        let path = staging.path.join(name);
+        fs::write(&path, contents).map_err(OutputError::io(&path))?;
+    }
+    staging.commit(dir)
+}
+
+/// A hidden sibling folder that is removed on drop unless committed.
+struct Staging {
+    path: PathBuf,
+    committed: bool,
+}
+
+impl Staging {
+    fn create(parent: &Path, dir: &Path, tag: &str) -> Result<Self, OutputError> {
+        let base = dir
+            .file_name()
+            .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
+        let pid = std::process::id();
+        let mut attempt = 0u32;
+        loop {
+            let path = parent.join(format!(".{base}.{tag}-{pid}-{attempt}"));
+            match fs::create_dir(&path) {
+                Ok(()) => {
+                    return Ok(Staging {
+                        path,
+                        committed: false,
+                    })
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && attempt < 1000 => {
+                    attempt += 1;
+                }
+                Err(e) => return Err(OutputError::io(path)(e)),
+            }
+        }
+    }
+
+    /// Renames the staged folder to `dir`, moving an existing `dir` aside
+    /// first and deleting it only once the new one is in place.
+    fn commit(mut self, dir: &Path) -> Result<(), OutputError> {
+        let old = if dir.symlink_metadata().is_ok() {
+            let parent = self.path.parent().expect("staging has a parent");
+            let aside = Staging::create(parent, dir, "old")?;
+            fs::remove_dir(&aside.path).map_err(OutputError::io(&aside.path))?;
+            fs::rename(dir, &aside.path).map_err(OutputError::io(dir))?;
+            Some(aside)
+        } else {
+            None
+        };
+        if let Err(e) = fs::rename(&self.path, dir) {
+            if let Some(mut aside) = old {
+                // Put the previous outputs back (or keep them aside if that
+                // fails too); the new ones are dropped.
+                aside.committed = fs::rename(&aside.path, dir).is_err();
+            }
+            return Err(OutputError::io(dir)(e));
+        }
+        self.committed = true;
+        // `old` (the replaced outputs) is removed by its drop.
+        drop(old);
+        Ok(())
+    }
+}
+
+impl Drop for Staging {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = if self.path.is_dir() {
+                fs::remove_dir_all(&self.path)
+            } else {
+                fs::remove_file(&self.path)
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn files() -> Vec<(&'static str, String)> {
+        vec![("a.txt", "new".to_string())]
+    }
+
+    #[test]
+    fn writes_and_refuses_to_overwrite() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().join("nested/out");
+        write_output_dir(&dir, &files(), false).unwrap();
+        assert_eq!(fs::read_to_string(dir.join("a.txt")).unwrap(), "new");
+        let e = write_output_dir(&dir, &files(), false).unwrap_err();
+        assert!(matches!(e, OutputError::Exists(_)));
+        fs::write(dir.join("stale.txt"), "x").unwrap();
+        write_output_dir(&dir, &files(), true).unwrap();
+        assert!(!dir.join("stale.txt").exists(), "force replaces the folder");
+        let leftovers: Vec<_> = fs::read_dir(dir.parent().unwrap()).unwrap().collect();
+        assert_eq!(leftovers.len(), 1, "no staging folders left behind");
+    }
+
+    #[test]
+    fn empty_folder_is_used() {
+        let tmp = tempfile::tempdir().unwrap();
+        write_output_dir(tmp.path(), &files(), false).unwrap();
+        assert!(tmp.path().join("a.txt").exists());
+    }
+
+    #[test]
+    fn failure_leaves_nothing() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().join("out");
+        let bad = vec![
+            ("a.txt", "x".to_string()),
+            ("no/such/b.txt", "y".to_string()),
+        ];
+        assert!(matches!(
+            write_output_dir(&dir, &bad, false),
+            Err(OutputError::Io { .. })
+        ));
+        assert_eq!(fs::read_dir(tmp.path()).unwrap().count(), 0);
+    }
+}

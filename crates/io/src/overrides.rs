@@ -1,0 +1,121 @@
+//! `--set key.path=value`: changes to a case file's table before it is read.
+
+use crate::error::InputError;
+use std::str::FromStr;
+
+/// One `key.path=value` override. The value is read as a TOML value
+/// (`0.02`, `"refined"`, `{ peak = 36, residual = 30 }`), or else taken as
+/// a bare string (`refined`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Override {
+    text: String,
+    key: Vec<String>,
+    value: toml::Value,
+}
+
+impl FromStr for Override {
+    type Err = InputError;
+
+    fn from_str(text: &str) -> Result<Self, InputError> {
+        let bad = |message: &str| InputError::Override {
+            text: text.to_string(),
+            message: message.to_string(),
+        };
+        let (key, value) = text
+            .split_once('=')
+            .ok_or_else(|| bad("expected key.path=value"))?;
+        let key: Vec<String> = key.trim().split('.').map(str::to_string).collect();
+        if key.iter().any(|k| k.is_empty()) {
+            return Err(bad(
+                "expected key.path=value with a non-empty key at each level",
+            ));
+        }
+        Ok(Override {
+            text: text.to_string(),
+            key,
+            value: parse_value(value.trim()),
+        })
+    }
+}
+
+fn parse_value(text: &str) -> toml::Value {
+    format!("v = {text}")
+        .parse::<toml::Table>()
+        .ok()
+        .and_then(|mut t| t.remove("v"))
+        .unwrap_or_else(|| toml::Value::String(text.to_string()))
+}
+
+impl Override {
+    /// The dotted key.
+    pub fn key(&self) -> String {
+        self.key.join(".")
+    }
+
+    /// Sets the key in `table`, creating missing tables on the way. Whether
+    /// the key belongs to the schema is checked when the table is read.
+    pub fn apply(&self, table: &mut toml::Table) -> Result<(), InputError> {
+        let (last, parents) = self.key.split_last().expect("a key has one level at least");
+        let mut current = table;
+        for (depth, part) in parents.iter().enumerate() {
+            let entry = current
+                .entry(part.clone())
+                .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+            current = entry.as_table_mut().ok_or_else(|| {
+                InputError::key(
+                    &self.key(),
+                    format!(
+                        "cannot set: {} is not a table",
+                        self.key[..=depth].join(".")
+                    ),
+                )
+            })?;
+        }
+        current.insert(last.clone(), self.value.clone());
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(table: &str, o: &str) -> toml::Table {
+        let mut t: toml::Table = table.parse().unwrap();
+        o.parse::<Override>().unwrap().apply(&mut t).unwrap();
+        t
+    }
+
+    #[test]
+    fn values_are_toml_or_bare_strings() {
+        let t = set("[run]\nincrement = 0.04", "run.increment=0.02");
+        assert_eq!(t["run"]["increment"].as_float(), Some(0.02));
+        assert_eq!(set("", "model=refined")["model"].as_str(), Some("refined"));
+        assert_eq!(
+            set("", "model=\"refined\"")["model"].as_str(),
+            Some("refined")
+        );
+        assert_eq!(
+            set("", "soil.friction.peak=36")["soil"]["friction"]["peak"].as_integer(),
+            Some(36)
+        );
+        assert!(set("", "x = nan")["x"].as_float().unwrap().is_nan());
+    }
+
+    #[test]
+    fn malformed_overrides_are_refused() {
+        assert!("run.increment".parse::<Override>().is_err());
+        assert!("run..increment=1".parse::<Override>().is_err());
+        assert!("=1".parse::<Override>().is_err());
+        let mut t: toml::Table = "[run]\nincrement = 0.04".parse().unwrap();
+        let e = "run.increment.x=1"
+            .parse::<Override>()
+            .unwrap()
+            .apply(&mut t)
+            .unwrap_err();
+        assert!(
+            e.to_string().starts_with("run.increment.x: cannot set"),
+            "{e}"
+        );
+    }
+}
