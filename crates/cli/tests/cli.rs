@@ -402,6 +402,21 @@ fn existing_folder_refused_then_replaced_with_force() {
 }
 
 #[test]
+fn write_failure_is_exit_code_1_and_leaves_nothing() {
+    let sandbox = Sandbox::new(BASE);
+    // The parent of the output folder is a file: the run succeeds, writing fails.
+    let o = run_base(&sandbox, "case.toml/out", &[]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: case.toml") && !err.contains("panicked"),
+        "{err}"
+    );
+    assert_eq!(sandbox.entries(), ["case.toml"]);
+}
+
+#[test]
 fn set_changes_the_resolved_case() {
     let sandbox = Sandbox::new(BASE);
     let set = [
