@@ -28,7 +28,7 @@ Examples:
 const CHECK_EXAMPLES: &str = "\
 Examples:
   soilcut check cases/paper/original.toml
-  soilcut check cases/paper/original.toml --set model=refined";
+  soilcut check cases/paper/original.toml --set run.increment=0.02";
 
 /// Soil cutting by sequential limit analysis (Jin & Hambleton).
 #[derive(Parser)]
@@ -84,10 +84,11 @@ impl Failure {
 
     fn output(e: OutputError) -> Self {
         Failure {
-            code: if matches!(e, OutputError::Exists(_)) {
-                2
-            } else {
+            // An occupied or unnamed folder is the user's choice; I/O is not.
+            code: if matches!(e, OutputError::Io { .. }) {
                 1
+            } else {
+                2
             },
             path: e.path().to_path_buf(),
             message: e.to_string(),

@@ -498,3 +498,40 @@ fn help_shows_examples() {
     let text = stdout(&sandbox.soilcut(&["run", "--help"]));
     assert!(text.contains("soilcut run cases/paper/original.toml --set run.increment=0.02"));
 }
+
+/// Every example command in the help texts names a valid case and valid
+/// `--set`s (checked with `check`, from the workspace root).
+#[test]
+fn help_examples_are_valid() {
+    let mut examples = 0;
+    for args in [&["--help"][..], &["run", "--help"], &["check", "--help"]] {
+        let help = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+            .args(args)
+            .output()
+            .unwrap();
+        for line in stdout(&help).lines() {
+            let Some(example) = line.trim().strip_prefix("soilcut ") else {
+                continue;
+            };
+            let mut words = example.split_whitespace().skip(1);
+            let mut check = vec!["check".to_string()];
+            while let Some(word) = words.next() {
+                match word {
+                    "--out" => {
+                        words.next();
+                    }
+                    "--force" => {}
+                    w => check.push(w.to_string()),
+                }
+            }
+            let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+                .args(&check)
+                .current_dir(workspace())
+                .output()
+                .unwrap();
+            assert!(o.status.success(), "{line}: {}", stderr(&o));
+            examples += 1;
+        }
+    }
+    assert!(examples >= 6, "{examples} examples");
+}

@@ -49,6 +49,8 @@ impl std::error::Error for InputError {}
 pub enum OutputError {
     /// The output folder exists, is not empty, and `force` was not given.
     Exists(PathBuf),
+    /// `force` cannot replace a path without a folder name (`.`, `..`, `/`).
+    Unnamed(PathBuf),
     /// A file system operation failed.
     Io {
         path: PathBuf,
@@ -65,7 +67,9 @@ impl OutputError {
     /// The path the error is about.
     pub fn path(&self) -> &std::path::Path {
         match self {
-            OutputError::Exists(path) | OutputError::Io { path, .. } => path,
+            OutputError::Exists(path)
+            | OutputError::Unnamed(path)
+            | OutputError::Io { path, .. } => path,
         }
     }
 }
@@ -76,6 +80,10 @@ impl fmt::Display for OutputError {
             OutputError::Exists(_) => write!(
                 f,
                 "output folder exists and is not empty; use --force to replace it or choose another --out"
+            ),
+            OutputError::Unnamed(_) => write!(
+                f,
+                "cannot replace a folder given without a name (such as . or ..); choose another --out"
             ),
             OutputError::Io { source, .. } => write!(f, "{}", one_line(&source.to_string())),
         }

@@ -147,10 +147,14 @@ struct PeakJson {
 /// Whether `dir` is free for outputs: absent or an empty folder, or
 /// anything at all with `force`. Reads only.
 pub fn check_output_dir(dir: &Path, force: bool) -> Result<(), OutputError> {
-    if force || !occupied(dir)? {
+    if !occupied(dir)? {
         Ok(())
-    } else {
+    } else if !force {
         Err(OutputError::Exists(dir.to_path_buf()))
+    } else if dir.file_name().is_none() {
+        Err(OutputError::Unnamed(dir.to_path_buf()))
+    } else {
+        Ok(())
     }
 }
 
@@ -274,6 +278,18 @@ mod tests {
         assert!(!dir.join("stale.txt").exists(), "force replaces the folder");
         let leftovers: Vec<_> = fs::read_dir(dir.parent().unwrap()).unwrap().collect();
         assert_eq!(leftovers.len(), 1, "no staging folders left behind");
+    }
+
+    #[test]
+    fn force_refuses_unnamed_folders() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().join("a");
+        write_output_dir(&dir, &files(), false).unwrap();
+        for unnamed in [dir.join(".."), PathBuf::from("/")] {
+            let e = check_output_dir(&unnamed, true).unwrap_err();
+            assert!(matches!(e, OutputError::Unnamed(_)), "{unnamed:?}");
+        }
+        assert!(check_output_dir(&dir.join("."), true).is_ok(), "a/. is a");
     }
 
     #[test]
