@@ -6,14 +6,16 @@
 use crate::case_file::LoadedCase;
 use crate::error::OutputError;
 use serde::Serialize;
-use soilcut_model::summary::PEAK_PROMINENCE;
+use soilcut_model::summary::{
+    sheared_fraction, JUMP_DEPTHS, PEAK_PROMINENCE, SHEARED_REACH_DEPTHS, SHEARED_THRESHOLD,
+};
 use soilcut_model::{ProfilePoint, StepRecord, Summary};
 use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Columns of `history.csv`, in order.
-pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip";
+pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area";
 
 /// Columns of `profile.csv`, in order.
 pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight";
@@ -48,7 +50,7 @@ impl RunOutput<'_> {
             let u_over_d = r.u / d;
             writeln!(
                 out,
-                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.step,
                 r.u,
                 r.force,
@@ -60,7 +62,9 @@ impl RunOutput<'_> {
                 r.mass,
                 r.y_emergence,
                 r.friction_deg,
-                r.slip
+                r.slip,
+                r.dilation_deg,
+                r.dilation_area
             )
             .expect("writing to a String");
         }
@@ -103,6 +107,11 @@ impl RunOutput<'_> {
                 .collect(),
             peak_prominence_rule: peak_prominence_rule(),
             mass_drift_rel: s.mass_drift_rel,
+            band_jumps: s.band_jumps.len(),
+            band_jump_rule: band_jump_rule(),
+            sheared_fraction: sheared_fraction(case, self.profile),
+            sheared_fraction_rule: sheared_fraction_rule(),
+            dilation_area: s.dilation_area,
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
@@ -121,6 +130,20 @@ pub fn peak_prominence_rule() -> String {
     )
 }
 
+/// The rule by which `summary.json` counts band jumps, in words.
+pub fn band_jump_rule() -> String {
+    format!(
+        "an increment whose emergence point lies more than {JUMP_DEPTHS} d from the previous one"
+    )
+}
+
+/// The rule of `sheared_fraction`, in words.
+pub fn sheared_fraction_rule() -> String {
+    format!(
+        "fraction of surface nodes within {SHEARED_REACH_DEPTHS} d ahead of the blade's final position whose accumulated shear exceeds {SHEARED_THRESHOLD} ur"
+    )
+}
+
 #[derive(Serialize)]
 struct SummaryJson<'a> {
     name: &'a str,
@@ -133,6 +156,11 @@ struct SummaryJson<'a> {
     peaks: Vec<PeakJson>,
     peak_prominence_rule: String,
     mass_drift_rel: f64,
+    band_jumps: usize,
+    band_jump_rule: String,
+    sheared_fraction: f64,
+    sheared_fraction_rule: String,
+    dilation_area: f64,
     steps: usize,
     candidate_evaluations: u64,
     wall_time_s: f64,
