@@ -100,8 +100,13 @@ pub struct Case {
     pub run: Run,
 }
 
-/// Largest number of increments a case may ask for (memory and time guard).
-pub const MAX_STEPS: f64 = 2.0e7;
+/// Largest number of surface nodes a case may need at the start (memory
+/// guard: five f64 per node).
+pub const MAX_NODES: f64 = 5.0e7;
+
+/// Depths of flat ground ahead of the blade's final position at the start;
+/// the domain grows beyond that only when the search needs it.
+pub const INITIAL_REACH_DEPTHS: f64 = 8.0;
 
 /// Why a case cannot be run: the offending key (dotted path as in the case
 /// file) and what it must satisfy.
@@ -179,8 +184,9 @@ impl Case {
     /// Checks every value against its allowed range; the error names the key.
     pub fn validate(&self) -> Result<(), CaseError> {
         positive("blade.depth", self.blade.depth)?;
-        self.validate_soil()?;
+        self.validate_friction()?;
         self.validate_wall_friction()?;
+        self.validate_soil()?;
         self.validate_run()
     }
 
@@ -198,16 +204,27 @@ impl Case {
         Ok(())
     }
 
+    fn friction_keys(&self) -> [(&'static str, f64); 3] {
+        let f = &self.soil.friction;
+        [
+            ("soil.friction.initial", f.initial),
+            ("soil.friction.peak", f.peak),
+            ("soil.friction.residual", f.residual),
+        ]
+    }
+
+    fn validate_friction(&self) -> Result<(), CaseError> {
+        for (key, v) in self.friction_keys() {
+            open_range(key, v, 0.0, 90.0, "°")?;
+        }
+        Ok(())
+    }
+
     fn validate_soil(&self) -> Result<(), CaseError> {
         let s = &self.soil;
         positive("soil.unit_weight", s.unit_weight)?;
         let f = &s.friction;
-        for (key, v) in [
-            ("soil.friction.initial", f.initial),
-            ("soil.friction.peak", f.peak),
-            ("soil.friction.residual", f.residual),
-        ] {
-            open_range(key, v, 0.0, 90.0, "°")?;
+        for (key, v) in self.friction_keys() {
             // β > 0 and β + φ + φw < 90° must leave room for a mechanism.
             if v + self.blade.wall_friction >= 90.0 {
                 return Err(CaseError::new(
@@ -282,15 +299,21 @@ impl Case {
                 ),
             ));
         }
-        let steps = self.run.travel / self.run.increment;
-        if steps > MAX_STEPS {
+        let nodes = self.initial_nodes();
+        if nodes > MAX_NODES {
             return Err(CaseError::new(
                 "run.increment",
                 format!(
-                    "run.travel / run.increment must be <= {MAX_STEPS:e} increments (got {steps:.3e})"
+                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / run.increment must be <= {MAX_NODES:e} nodes (got {nodes:.3e})"
                 ),
             ));
         }
         Ok(())
+    }
+
+    /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
+    pub fn initial_nodes(&self) -> f64 {
+        let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.blade.depth;
+        (reach / self.run.increment).ceil() + 2.0
     }
 }

@@ -15,9 +15,6 @@ use crate::search::{BandAngles, Choice, Search, SearchInput};
 use crate::surface::Surface;
 use std::fmt;
 
-/// Depths of flat ground ahead of the blade's final position at the start;
-/// the domain grows beyond that only when the search needs it.
-const INITIAL_REACH_DEPTHS: f64 = 8.0;
 /// Depths the domain grows by when the search reaches its end.
 const GROW_DEPTHS: f64 = 4.0;
 /// No mechanism reaches further than this many depths ahead of the blade.
@@ -160,8 +157,7 @@ impl Simulation {
     pub fn new(case: &Case) -> Result<Self, CaseError> {
         case.validate()?;
         let (d, dx) = (case.blade.depth, case.run.increment);
-        let reach = case.run.travel + INITIAL_REACH_DEPTHS * d;
-        let nodes = (reach / dx).ceil() as usize + 2;
+        let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
         let fresh = (
             laws.material.friction.at(0.0),
@@ -276,7 +272,10 @@ impl Simulation {
             .relax(&mut self.surface, self.done, self.tan_repose);
         self.laws.refresh_angles(&mut self.surface, moved);
         let c = &self.case;
-        let (cos_w, sin_w) = (self.laws.wall_friction.cos(), self.laws.wall_friction.sin());
+        // Face friction opposes the block's motion along the face.
+        let rising = choice.tan_beta + choice.dilation.tan() > 0.0;
+        let wall = if rising { 1.0 } else { -1.0 } * self.laws.wall_friction;
+        let (cos_w, sin_w) = (wall.cos(), wall.sin());
         Ok(StepRecord {
             step,
             u,
