@@ -8,7 +8,10 @@
 use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
-use soilcut_model::{AngleLaw, Blade, Case, CaseError, Model, Run, Soil};
+use soilcut_model::{
+    AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
+    UnitWeightRule,
+};
 use std::path::Path;
 
 const REFINED_ONLY: &str = "applies to model = \"refined\" only";
@@ -32,6 +35,72 @@ struct CaseFile {
     blade: BladeFile,
     soil: SoilFile,
     run: RunFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    choices: Option<ChoicesFile>,
+}
+
+/// `[choices]`: variants of the refined model's open choices (MODEL.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table { band_angles, band_shear, unit_weight }"
+)]
+struct ChoicesFile {
+    #[serde(default)]
+    band_angles: BandAnglesName,
+    #[serde(default)]
+    band_shear: BandShearName,
+    #[serde(default)]
+    unit_weight: UnitWeightName,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(
+    rename_all = "kebab-case",
+    expecting = "\"mean-of-angles\" or \"angle-of-mean-shear\""
+)]
+enum BandAnglesName {
+    #[default]
+    MeanOfAngles,
+    AngleOfMeanShear,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", expecting = "\"full\" or \"by-position\"")]
+enum BandShearName {
+    #[default]
+    Full,
+    ByPosition,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(
+    rename_all = "kebab-case",
+    expecting = "\"band-uniform\" or \"per-node-formula\""
+)]
+enum UnitWeightName {
+    #[default]
+    BandUniform,
+    PerNodeFormula,
+}
+
+impl ChoicesFile {
+    fn choices(self) -> Choices {
+        Choices {
+            band_angles: match self.band_angles {
+                BandAnglesName::MeanOfAngles => BandAngleRule::MeanOfAngles,
+                BandAnglesName::AngleOfMeanShear => BandAngleRule::AngleOfMeanShear,
+            },
+            band_shear: match self.band_shear {
+                BandShearName::Full => BandShearRule::Full,
+                BandShearName::ByPosition => BandShearRule::ByPosition,
+            },
+            unit_weight: match self.unit_weight {
+                UnitWeightName::BandUniform => UnitWeightRule::BandUniform,
+                UnitWeightName::PerNodeFormula => UnitWeightRule::PerNodeFormula,
+            },
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -253,9 +322,17 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             refined_only(soil.d50.is_some(), "soil.d50")?;
             refined_only(soil.band_width.is_some(), "soil.band_width")?;
             refined_only(soil.band_width_d50.is_some(), "soil.band_width_d50")?;
+            refined_only(file.choices.is_some(), "choices")?;
             (soil.friction.peak, AngleLaw::constant(0.0), 0.0, 0.0)
         }
         Model::Refined => resolve_refined(soil)?,
+    };
+    let choices = match model {
+        Model::Original => Choices::default(),
+        Model::Refined => file
+            .choices
+            .get_or_insert_with(ChoicesFile::default)
+            .choices(),
     };
     let case = Case {
         name: file.name.clone(),
@@ -282,6 +359,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             travel: file.run.travel,
             increment: file.run.increment,
         },
+        choices,
     };
     case.validate().map_err(|e| key_as_written(e, &file))?;
     Ok(LoadedCase {
@@ -318,6 +396,30 @@ mod tests {
             Err(InputError::Key(e)) => e,
             other => panic!("expected a key error, got {other:?}"),
         }
+    }
+
+    #[test]
+    fn choices_default_to_model_md_and_can_be_varied() {
+        let loaded = parse_case(REFINED, &[]).unwrap();
+        assert_eq!(loaded.case.choices, Choices::default());
+        assert!(loaded.resolved_toml().contains("[choices]"));
+        let set: Vec<Override> = [
+            "choices.band_shear=by-position",
+            "choices.unit_weight=per-node-formula",
+        ]
+        .iter()
+        .map(|s| s.parse().unwrap())
+        .collect();
+        let varied = parse_case(REFINED, &set).unwrap().case.choices;
+        assert_eq!(varied.band_shear, BandShearRule::ByPosition);
+        assert_eq!(varied.unit_weight, UnitWeightRule::PerNodeFormula);
+        assert_eq!(varied.band_angles, BandAngleRule::MeanOfAngles);
+        let e = key_error(REFINED, &["choices.band_angles=median"]);
+        assert_eq!(e.key, "choices.band_angles");
+        assert_eq!(
+            key_error(ORIGINAL, &["choices.band_shear=full"]).key,
+            "choices"
+        );
     }
 
     #[test]

@@ -90,6 +90,48 @@ pub struct Run {
     pub increment: f64,
 }
 
+/// How a candidate band takes its angles from the nodes it touches.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BandAngleRule {
+    /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (MODEL.md default).
+    #[default]
+    MeanOfAngles,
+    /// φ and ψ of the mean ut over the band's nodes.
+    AngleOfMeanShear,
+}
+
+/// How much of Δut the band's nodes accumulate.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BandShearRule {
+    /// Every node in the band the full Δut (MODEL.md default).
+    #[default]
+    Full,
+    /// A node at relative position f in the band (0 at the lower boundary,
+    /// 1 at the upper) accumulates f Δut, its displacement relative to the
+    /// ground below the band.
+    ByPosition,
+}
+
+/// How the band's unit weight is updated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum UnitWeightRule {
+    /// One uniform γ over the band's nodes, chosen so that the weight of
+    /// soil is unchanged (MODEL.md section 4: the band as a whole).
+    #[default]
+    BandUniform,
+    /// The paper's A_new = A0 (1 + Δut tan ψ / dB) applied to each band
+    /// node's γ on its own: does not conserve mass (for comparison only).
+    PerNodeFormula,
+}
+
+/// The choices MODEL.md leaves open, for studying their effect.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Choices {
+    pub band_angles: BandAngleRule,
+    pub band_shear: BandShearRule,
+    pub unit_weight: UnitWeightRule,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
     pub name: String,
@@ -98,6 +140,8 @@ pub struct Case {
     pub blade: Blade,
     pub soil: Soil,
     pub run: Run,
+    /// Variants of the refined model's open choices (defaults: MODEL.md).
+    pub choices: Choices,
 }
 
 /// Largest number of surface nodes a case may need at the start (memory

@@ -30,6 +30,7 @@
 //! the band as a whole).
 
 use crate::band::Band;
+use crate::case::{BandShearRule, Choices, UnitWeightRule};
 use crate::search::Choice;
 use crate::surface::Surface;
 
@@ -50,23 +51,51 @@ pub struct Update {
 pub struct Kinematics {
     /// Image points (x, y) of the old surface from the face to j.
     image: Vec<(f64, f64)>,
+    /// Relative positions f_i = clamp(g_i, 0, 1) of nodes b..=j before the
+    /// update.
+    position: Vec<f64>,
 }
 
 impl Kinematics {
     /// Moves the soil for the chosen mechanism and keeps mass exact.
-    pub fn apply(&mut self, surface: &mut Surface, band: &Band, choice: &Choice) -> Update {
+    pub fn apply(
+        &mut self,
+        surface: &mut Surface,
+        band: &Band,
+        choice: &Choice,
+        choices: Choices,
+    ) -> Update {
         let mass_before = region_mass(surface, band.blade, band.emergence);
-        let update = match self.shear_band(surface, band, choice.dilation) {
+        let update = match self.shear_band(surface, band, choice.dilation, choices.band_shear) {
             Some(update) => update,
             None => slide_block(surface, band.blade, choice),
         };
-        conserve_mass(surface, band, update.first_band_node, mass_before);
+        match choices.unit_weight {
+            UnitWeightRule::BandUniform => {
+                conserve_mass(surface, band, update.first_band_node, mass_before)
+            }
+            UnitWeightRule::PerNodeFormula => {
+                let band_width = band.thickness / (1.0 + band.tan_beta.powi(2)).sqrt();
+                let strain = update.slip * choice.dilation.tan() / band_width;
+                if band_width > 0.0 && update.dilation_area != 0.0 {
+                    for g in &mut surface.unit_weight[update.first_band_node..=band.emergence] {
+                        *g /= 1.0 + strain;
+                    }
+                }
+            }
+        }
         update
     }
 
     /// The shear band update; `None` (nothing changed) where the band is too
     /// thin for the grid to resolve it, which is then a slip line.
-    fn shear_band(&mut self, surface: &mut Surface, band: &Band, psi: f64) -> Option<Update> {
+    fn shear_band(
+        &mut self,
+        surface: &mut Surface,
+        band: &Band,
+        psi: f64,
+        rule: BandShearRule,
+    ) -> Option<Update> {
         let (b, j, dx, t) = (band.blade, band.emergence, surface.spacing, band.tan_beta);
         let e = band.thickness;
         let rho = (t + psi.tan()) / (1.0 - t * psi.tan());
@@ -89,8 +118,12 @@ impl Kinematics {
             *y += correction;
         }
         shift_block_state(surface, b, first_band_node);
-        for ut in &mut surface.accumulated_shear[first_band_node..=j] {
-            *ut += slip;
+        for i in first_band_node..=j {
+            let share = match rule {
+                BandShearRule::Full => 1.0,
+                BandShearRule::ByPosition => self.position[i - b],
+            };
+            surface.accumulated_shear[i] += share * slip;
         }
         Some(Update {
             slip,
@@ -106,7 +139,9 @@ impl Kinematics {
         let (b, j, dx) = (band.blade, band.emergence, surface.spacing);
         let h = &surface.height;
         self.image.clear();
+        self.position.clear();
         let mut g_prev = band.position(h[b], b);
+        self.position.push(g_prev.clamp(0.0, 1.0));
         if g_prev < 1.0 {
             return None;
         }
@@ -124,6 +159,7 @@ impl Kinematics {
                 }
             }
             let f = g.clamp(0.0, 1.0);
+            self.position.push(f);
             let point = (surface.x(i) + f * dx, h[i] + f * rise);
             if point.0 <= self.image.last().expect("face image").0 {
                 return None;

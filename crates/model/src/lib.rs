@@ -17,6 +17,9 @@ pub mod simulation;
 pub mod summary;
 pub mod surface;
 
-pub use case::{AngleLaw, Blade, Case, CaseError, Model, Run, Soil};
+pub use case::{
+    AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
+    UnitWeightRule,
+};
 pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};
 pub use summary::{Peak, Summary};

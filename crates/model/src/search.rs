@@ -53,11 +53,15 @@ pub struct Choice {
     pub dilation: f64,
 }
 
-/// The band angles a candidate takes: means over its footprint (radians).
+/// The band angles a candidate takes from its footprint (radians).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BandAngles {
+    /// Mean of φ(ut_i) over the footprint.
     pub friction: f64,
+    /// Mean of ψ(ut_i) over the footprint.
     pub dilation: f64,
+    /// Mean of ut_i over the footprint.
+    pub shear: f64,
     /// Every node of the footprint is unsheared (ut = 0).
     pub fresh: bool,
 }
@@ -74,13 +78,19 @@ pub struct Search {
 }
 
 /// What the search needs to know about the soil besides the surface.
-pub struct SearchInput<'a, F: Fn(BandAngles, f64) -> ForceFactor> {
+pub struct SearchInput<'a, A, F>
+where
+    A: Fn(BandAngles) -> BandAngles,
+    F: Fn(BandAngles, f64) -> ForceFactor,
+{
     pub blade: usize,
     pub depth: f64,
     /// dB (0 for the original model's slip line).
     pub band_width: f64,
     /// Lower bound of P/W over every candidate (see the stopping rule).
     pub min_factor: f64,
+    /// The band's angles from the footprint means (the band-angle rule).
+    pub angles: &'a A,
     /// Eq. (1) for a candidate's band angles at tan β.
     pub factor: &'a F,
     /// Nodes appended when the scan needs more domain.
@@ -90,13 +100,14 @@ pub struct SearchInput<'a, F: Fn(BandAngles, f64) -> ForceFactor> {
 impl Search {
     /// The minimum-effort mechanism, or `None` if no admissible candidate
     /// exists within a domain of `max_nodes` nodes.
-    pub fn run<F>(
+    pub fn run<A, F>(
         &mut self,
         surface: &mut Surface,
-        input: &SearchInput<F>,
+        input: &SearchInput<A, F>,
         max_nodes: usize,
     ) -> Option<Choice>
     where
+        A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         self.admissible.clear();
@@ -125,7 +136,7 @@ impl Search {
                 let tan_beta = r / dx;
                 self.evaluations += 1;
                 let band = Band::new(b, j, tan_beta, input.band_width, d, dx);
-                let angles = self.band_angles(surface, &band);
+                let angles = (input.angles)(self.band_angles(surface, &band));
                 if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
                     let force = weight * f;
                     best = best.min(force);
@@ -171,6 +182,7 @@ impl Search {
             return BandAngles {
                 friction: surface.friction[j],
                 dilation: surface.dilation[j],
+                shear: surface.accumulated_shear[j],
                 fresh: surface.accumulated_shear[j] == 0.0,
             };
         }
@@ -181,6 +193,7 @@ impl Search {
         BandAngles {
             friction: (hi[0] - lo[0]) / n,
             dilation: (hi[1] - lo[1]) / n,
+            shear: (hi[2] - lo[2]) / n,
             fresh: hi[2] - lo[2] == 0.0,
         }
     }

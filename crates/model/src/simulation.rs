@@ -7,7 +7,7 @@
 
 use crate::avalanche::Avalanche;
 use crate::band::Band;
-use crate::case::{Case, CaseError};
+use crate::case::{BandAngleRule, Case, CaseError};
 use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::mechanism::ForceFactor;
@@ -127,6 +127,19 @@ impl Laws {
         }
     }
 
+    /// The band-angle rule: mean of the node angles, or angles of the mean
+    /// accumulated shear.
+    fn band_angles(&self, rule: BandAngleRule, means: BandAngles) -> BandAngles {
+        match rule {
+            BandAngleRule::MeanOfAngles => means,
+            BandAngleRule::AngleOfMeanShear => BandAngles {
+                friction: self.material.friction.at(means.shear),
+                dilation: self.material.dilation.at(means.shear),
+                ..means
+            },
+        }
+    }
+
     /// Recomputes φ(ut) and ψ(ut) of the nodes in `range`.
     fn refresh_angles(&self, surface: &mut Surface, range: std::ops::Range<usize>) {
         for i in range {
@@ -232,8 +245,11 @@ impl Simulation {
         let d = self.case.blade.depth;
         let dx = self.surface.spacing;
         let laws = &self.laws;
+        let rule = self.case.choices.band_angles;
+        let angles = |means: BandAngles| laws.band_angles(rule, means);
         let factor = |angles: BandAngles, t: f64| laws.factor(angles, t);
         let input = SearchInput {
+            angles: &angles,
             blade: self.done,
             depth: d,
             band_width: self.case.soil.band_width,
@@ -263,7 +279,9 @@ impl Simulation {
             c.blade.depth,
             self.surface.spacing,
         );
-        let update = self.kinematics.apply(&mut self.surface, &band, &choice);
+        let update = self
+            .kinematics
+            .apply(&mut self.surface, &band, &choice, c.choices);
         self.laws
             .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
         self.done += 1;
