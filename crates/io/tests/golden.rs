@@ -1,0 +1,74 @@
+//! Optimisation must not change results: the full `history.csv` of the
+//! shipped case `cases/paper/table1-hs.toml` (2 500 increments, bands
+//! wandering through compacting and dilating soil) is compared with the
+//! golden file `tests/golden/table1-hs.history.csv`: the same emergence node
+//! at every step and forces within 1e-9 relative.
+//!
+//! Regenerate the golden file only deliberately, after a change that is
+//! meant to change results, with
+//!
+//! ```sh
+//! SOILCUT_BLESS=1 cargo test -p soilcut-io --test golden
+//! ```
+
+use soilcut_io::{read_case, RunOutput};
+use soilcut_model::{Simulation, Summary};
+use std::path::Path;
+
+const GOLDEN: &str = "tests/golden/table1-hs.history.csv";
+
+fn history_csv() -> String {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let loaded = read_case(&root.join("../../cases/paper/table1-hs.toml"), &[]).unwrap();
+    let mut sim = Simulation::new(&loaded.case).unwrap();
+    let history = sim.run_to_end(|_| {}).unwrap();
+    let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
+    let profile = sim.profile();
+    RunOutput {
+        loaded: &loaded,
+        history: &history,
+        profile: &profile,
+        summary: &summary,
+        candidate_evaluations: 0,
+        wall_time_s: 0.0,
+    }
+    .history_csv()
+}
+
+fn rows(text: &str) -> Vec<Vec<f64>> {
+    text.lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect()
+}
+
+#[test]
+fn table1_hs_history_matches_the_golden_file() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(GOLDEN);
+    let now = history_csv();
+    if std::env::var_os("SOILCUT_BLESS").is_some() {
+        std::fs::write(&path, &now).unwrap();
+    }
+    let golden = std::fs::read_to_string(&path).expect("golden file");
+    assert_eq!(now.lines().next(), golden.lines().next(), "header");
+    let (now, golden) = (rows(&now), rows(&golden));
+    assert_eq!(now.len(), golden.len(), "increments");
+    // Columns: step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,...
+    for (a, b) in now.iter().zip(&golden) {
+        let step = a[0];
+        assert_eq!(
+            a[8], b[8],
+            "step {step}: emergence point x {} vs golden {}",
+            a[8], b[8]
+        );
+        for col in [3, 4, 5, 6] {
+            let rel = (a[col] - b[col]).abs() / b[col].abs().max(f64::MIN_POSITIVE);
+            assert!(
+                rel <= 1e-9,
+                "step {step}, column {col}: {} vs golden {}",
+                a[col],
+                b[col]
+            );
+        }
+    }
+}
