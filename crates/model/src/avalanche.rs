@@ -38,7 +38,7 @@ impl Pool {
 }
 
 /// Reusable scratch for avalanching (no allocation per step).
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Avalanche {
     pools: Vec<Pool>,
     old_height: Vec<f64>,

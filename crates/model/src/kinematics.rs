@@ -47,7 +47,7 @@ pub struct Update {
 }
 
 /// Reusable scratch for the band update.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Kinematics {
     /// Image points (x, y) of the old surface from the face to j.
     image: Vec<(f64, f64)>,

@@ -67,7 +67,7 @@ pub struct BandAngles {
 }
 
 /// Reusable search state (no allocation per step once warmed up).
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Search {
     /// Admissible candidates of the current step, kept for the tie-break.
     admissible: Vec<Choice>,

@@ -82,7 +82,7 @@ pub struct ProfilePoint {
 }
 
 /// The material law with Eq. (1) coefficients cached for fresh soil.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 struct Laws {
     material: Material,
     wall_friction: f64,
@@ -151,7 +151,7 @@ impl Laws {
 }
 
 /// A running simulation of one case.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct Simulation {
     case: Case,
     laws: Laws,

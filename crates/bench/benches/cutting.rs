@@ -1,0 +1,54 @@
+//! `cargo bench -p soilcut-bench`: whole runs of the shipped cases and one
+//! increment on a developed pile. Each reports time and, as the item
+//! counter, candidate evaluations (so divan prints evaluations per second).
+
+use divan::counter::ItemsCount;
+use divan::Bencher;
+use soilcut_bench::{run, shipped_case};
+use soilcut_model::Simulation;
+
+fn main() {
+    divan::main();
+}
+
+/// Whole run of `cases/paper/fig5.toml` at increments d/200 and d/1000.
+#[divan::bench(args = [200, 1000], sample_count = 5, sample_size = 1)]
+fn fig5_run(bencher: Bencher, per_depth: u32) {
+    let increment = format!("run.increment={}", 20.0 / per_depth as f64);
+    let case = shipped_case("paper/fig5.toml", &[&increment]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
+/// Whole run of the original model's case as shipped.
+#[divan::bench(sample_count = 5, sample_size = 1)]
+fn original_run(bencher: Bencher) {
+    let case = shipped_case("paper/original.toml", &[]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
+/// One `step()` of fig5 at d/1000 on the pile developed after 3 d of travel.
+#[divan::bench(sample_count = 20, sample_size = 20)]
+fn fig5_step_on_developed_pile(bencher: Bencher) {
+    let case = shipped_case("paper/fig5.toml", &["run.increment=0.02"]);
+    let mut developed = Simulation::new(&case).unwrap();
+    while developed.blade_position() < 3.0 * case.blade.depth {
+        developed.step().unwrap();
+    }
+    let mut probe = Simulation::clone(&developed);
+    let before = probe.evaluations();
+    probe.step().unwrap();
+    let evaluations = probe.evaluations() - before;
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .with_inputs(|| developed.clone())
+        .bench_local_values(|mut sim| {
+            sim.step().unwrap();
+            sim
+        });
+}
