@@ -5,16 +5,19 @@
 //!   validated [`LoadedCase`] (and its `case.resolved.toml`).
 //! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
 //!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
+//! * [`read_measured`]: a measured force-displacement curve (`u,force`).
 
 mod case_file;
 mod error;
+mod measured;
 mod output;
 mod overrides;
 
 pub use case_file::{parse_case, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
+pub use measured::{parse_measured, read_measured};
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, RunOutput, HISTORY_HEADER,
     PROFILE_HEADER,
 };
-pub use overrides::Override;
+pub use overrides::{parse_value, Override};

@@ -38,7 +38,9 @@ impl FromStr for Override {
     }
 }
 
-fn parse_value(text: &str) -> toml::Value {
+/// A `--set` value: TOML (`0.02`, `"x"`, `{ peak = 36 }`), or else the
+/// text as a bare string.
+pub fn parse_value(text: &str) -> toml::Value {
     format!("v = {text}")
         .parse::<toml::Table>()
         .ok()

@@ -1,0 +1,517 @@
+//! Convergence with the increment (MODEL.md section 7): one case run with
+//! the increment v0 (also the node spacing) halved level after level.
+//!
+//! Sequential limit analysis of frictional wedges can be chaotic: the
+//! sequence of individual bands need not converge, while averaged
+//! quantities may. Each level reports both kinds:
+//! * averaged: the mean force over each unit window of u/d and over the
+//!   whole run, the force envelope (largest force in each window, and their
+//!   mean), the band spacing (mean distance between successive band-jump
+//!   locations), the final pile (its height, and the RMS difference of its
+//!   surface from the finest level's on a common grid);
+//! * individual: the largest force, where it occurs, the number of peaks.
+//!
+//! A quantity is called converged when it changes by less than the
+//! tolerance (relative) between the two finest levels.
+
+use crate::csv;
+use crate::error::StudyError;
+use crate::figures::mean;
+use crate::fit::interpolate;
+use crate::run::{override_of, BaseCase, RunResult};
+use crate::Progress;
+use rayon::prelude::*;
+use soilcut_model::summary::{band_jumps, JUMP_DEPTHS};
+use std::fmt::Write as _;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Length ahead of the blade's final position, in depths, over which the
+/// final surfaces are compared.
+pub const PROFILE_REACH_DEPTHS: f64 = 5.0;
+/// Points of the common grid the surfaces are compared on.
+pub const PROFILE_POINTS: usize = 501;
+
+/// A convergence study to run.
+#[derive(Clone, Debug)]
+pub struct Converge {
+    pub base: BaseCase,
+    /// Number of levels; level k runs at v0 / 2^k.
+    pub levels: usize,
+    /// Relative change between the two finest levels below which a
+    /// quantity counts as converged.
+    pub tolerance: f64,
+    /// Worker threads (0: one per available core).
+    pub jobs: usize,
+}
+
+/// The figures of one level.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Level {
+    pub level: usize,
+    pub increment: f64,
+    pub steps: usize,
+    /// Mean P/(γ0 d²) over the whole run.
+    pub mean_force_norm: f64,
+    /// Mean P/(γ0 d²) over each window k ≤ u/d < k + 1.
+    pub window_mean: Vec<f64>,
+    /// Largest P/(γ0 d²) in each window (the force envelope).
+    pub window_max: Vec<f64>,
+    /// Mean of `window_max`.
+    pub envelope_mean: f64,
+    pub band_jumps: usize,
+    /// Mean distance between successive band-jump locations, / d (NaN
+    /// with fewer than two jumps).
+    pub band_spacing_d: f64,
+    /// Highest point of the final surface, / d.
+    pub pile_height_d: f64,
+    /// RMS difference of the final surface from the finest level's, / d.
+    pub profile_rms_d: f64,
+    pub max_force_norm: f64,
+    pub u_over_d_at_max: f64,
+    pub peaks: usize,
+    /// The final surface relative to the blade face, ((x − u)/d, y/d), on
+    /// the common grid.
+    pub profile: Vec<(f64, f64)>,
+    /// (u/d, P/(γ0 d²)) of every increment.
+    pub force: Vec<(f64, f64)>,
+    /// Wall time of the simulation, s (in `timing.csv` only).
+    pub wall_time_s: f64,
+}
+
+/// Averaged quantities (the first five) and individual ones, as
+/// (name, value of a level, description).
+type Quantity = (&'static str, fn(&Level) -> f64, &'static str);
+
+/// The scalar quantities of a level, in the order of the report.
+pub const QUANTITIES: [Quantity; 8] = [
+    (
+        "mean_force_norm",
+        |l| l.mean_force_norm,
+        "mean force over the run (averaged)",
+    ),
+    (
+        "envelope_mean",
+        |l| l.envelope_mean,
+        "force envelope: mean of the window maxima (averaged)",
+    ),
+    (
+        "band_spacing_d",
+        |l| l.band_spacing_d,
+        "band spacing / d (averaged)",
+    ),
+    (
+        "pile_height_d",
+        |l| l.pile_height_d,
+        "final pile height / d (averaged)",
+    ),
+    (
+        "profile_rms_d",
+        |l| l.profile_rms_d,
+        "RMS difference of the final surface from the finest level / d",
+    ),
+    (
+        "max_force_norm",
+        |l| l.max_force_norm,
+        "largest force (individual peak)",
+    ),
+    (
+        "u_over_d_at_max",
+        |l| l.u_over_d_at_max,
+        "u/d of the largest force (individual peak)",
+    ),
+    (
+        "peaks",
+        |l| l.peaks as f64,
+        "number of force peaks (individual)",
+    ),
+];
+
+/// One figure per window of a level.
+type PerWindow = fn(&Level) -> &Vec<f64>;
+
+/// A finished convergence study.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConvergeResult {
+    pub title: String,
+    pub depth: f64,
+    pub tolerance: f64,
+    /// Coarsest first.
+    pub levels: Vec<Level>,
+}
+
+fn level_of(level: usize, run: &RunResult, depth: f64, windows: usize) -> Level {
+    let h = &run.history;
+    let force: Vec<(f64, f64)> = h.iter().map(|r| (r.u / depth, r.force_norm)).collect();
+    let in_window = |k: usize| {
+        force
+            .iter()
+            .filter(move |p| p.0 >= k as f64 && p.0 < (k + 1) as f64)
+            .map(|p| p.1)
+            .collect::<Vec<f64>>()
+    };
+    let window_mean: Vec<f64> = (0..windows).map(|k| mean(&in_window(k))).collect();
+    let window_max: Vec<f64> = (0..windows)
+        .map(|k| in_window(k).into_iter().fold(f64::NAN, f64::max))
+        .collect();
+    let jumps = band_jumps(h, JUMP_DEPTHS * depth);
+    let spacings: Vec<f64> = jumps
+        .windows(2)
+        .map(|w| (h[w[1]].x_emergence - h[w[0]].x_emergence).abs() / depth)
+        .collect();
+    let face = run.profile.first().map_or(0.0, |p| p.x);
+    let surface: Vec<(f64, f64)> = run
+        .profile
+        .iter()
+        .map(|p| ((p.x - face) / depth, p.y / depth))
+        .collect();
+    let profile = (0..PROFILE_POINTS)
+        .map(|i| {
+            let x = PROFILE_REACH_DEPTHS * i as f64 / (PROFILE_POINTS - 1) as f64;
+            (x, interpolate(&surface, x))
+        })
+        .collect();
+    let s = &run.summary;
+    Level {
+        level,
+        increment: run.loaded.case.run.increment,
+        steps: s.steps,
+        mean_force_norm: mean(&force.iter().map(|p| p.1).collect::<Vec<_>>()),
+        envelope_mean: mean(&window_max),
+        window_mean,
+        window_max,
+        band_jumps: jumps.len(),
+        band_spacing_d: mean(&spacings),
+        pile_height_d: surface.iter().map(|p| p.1).fold(f64::NAN, f64::max),
+        profile_rms_d: f64::NAN,
+        max_force_norm: s.max_force_norm,
+        u_over_d_at_max: s.u_over_d_at_max,
+        peaks: s.peaks.len(),
+        profile,
+        force,
+        wall_time_s: run.wall_time_s,
+    }
+}
+
+/// Relative change from `a` to `b`: |b − a| / |b| (NaN if undefined).
+pub fn relative_change(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (b - a).abs() / b.abs()
+    }
+}
+
+impl Converge {
+    /// Runs every level in parallel.
+    pub fn run(&self, progress: Progress) -> Result<ConvergeResult, StudyError> {
+        if self.levels == 0 {
+            return Err(StudyError::Spec("--levels must be >= 1".to_string()));
+        }
+        let loaded = self.base.load(&[])?;
+        let case = &loaded.case;
+        let (depth, v0) = (case.blade.depth, case.run.increment);
+        let windows = ((case.run.travel / depth) * (1.0 + 1e-9)).floor().max(1.0) as usize;
+        let finished = AtomicUsize::new(0);
+        progress(0, self.levels);
+        let runs: Vec<Result<Level, StudyError>> = crate::pool(self.jobs)?.install(|| {
+            // Finest (slowest) first, so that it starts at once.
+            (0..self.levels)
+                .rev()
+                .collect::<Vec<_>>()
+                .into_par_iter()
+                .map(|level| {
+                    let increment = v0 / 2f64.powi(level as i32);
+                    let o = override_of("run.increment", &toml::Value::Float(increment))
+                        .map_err(StudyError::Spec)?;
+                    let run = self.base.run(&[o]).map_err(|e| {
+                        StudyError::Case(format!("level {level} (increment {increment}): {e}"))
+                    })?;
+                    let l = level_of(level, &run, depth, windows);
+                    progress(finished.fetch_add(1, Ordering::Relaxed) + 1, self.levels);
+                    Ok(l)
+                })
+                .collect()
+        });
+        let mut levels = runs.into_iter().collect::<Result<Vec<_>, _>>()?;
+        levels.reverse();
+        let finest = levels.last().expect("one level at least").profile.clone();
+        for l in &mut levels {
+            let sq: Vec<f64> = l
+                .profile
+                .iter()
+                .zip(&finest)
+                .map(|(a, b)| (a.1 - b.1).powi(2))
+                .collect();
+            l.profile_rms_d = mean(&sq).sqrt();
+        }
+        Ok(ConvergeResult {
+            title: case.title.clone(),
+            depth,
+            tolerance: self.tolerance,
+            levels,
+        })
+    }
+}
+
+impl ConvergeResult {
+    fn windows(&self) -> usize {
+        self.levels[0].window_mean.len()
+    }
+
+    /// `converge.csv`: one row per level, coarsest first.
+    pub fn csv(&self) -> String {
+        let mut header: Vec<String> = ["level", "increment", "steps", "band_jumps"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        header.extend(QUANTITIES.iter().map(|q| q.0.to_string()));
+        for k in 0..self.windows() {
+            header.push(format!("window_mean_{k}_{}", k + 1));
+        }
+        for k in 0..self.windows() {
+            header.push(format!("window_max_{k}_{}", k + 1));
+        }
+        let mut out = csv::line(&header);
+        for l in &self.levels {
+            let mut row = vec![
+                l.level.to_string(),
+                l.increment.to_string(),
+                l.steps.to_string(),
+                l.band_jumps.to_string(),
+            ];
+            row.extend(QUANTITIES.iter().map(|q| csv::number(q.1(l))));
+            row.extend(l.window_mean.iter().map(|&x| csv::number(x)));
+            row.extend(l.window_max.iter().map(|&x| csv::number(x)));
+            out.push_str(&csv::line(&row));
+        }
+        out
+    }
+
+    /// `timing.csv`: `level,increment,wall_time_s`.
+    pub fn timing_csv(&self) -> String {
+        let mut out = String::from("level,increment,wall_time_s\n");
+        for l in &self.levels {
+            out.push_str(&csv::line(&[
+                l.level.to_string(),
+                l.increment.to_string(),
+                l.wall_time_s.to_string(),
+            ]));
+        }
+        out
+    }
+
+    /// Relative change of every quantity from level k − 1 to level k
+    /// (k ≥ 1), in the order of [`QUANTITIES`], then the largest change of
+    /// the window means and of the window maxima. The profile is compared
+    /// as the RMS difference of the two surfaces relative to the pile
+    /// height.
+    pub fn changes(&self) -> Vec<Vec<f64>> {
+        self.levels
+            .windows(2)
+            .map(|pair| {
+                let (a, b) = (&pair[0], &pair[1]);
+                let mut row: Vec<f64> = QUANTITIES
+                    .iter()
+                    .map(|q| match q.0 {
+                        "profile_rms_d" => {
+                            let sq: Vec<f64> = a
+                                .profile
+                                .iter()
+                                .zip(&b.profile)
+                                .map(|(p, q)| (p.1 - q.1).powi(2))
+                                .collect();
+                            mean(&sq).sqrt() / b.pile_height_d
+                        }
+                        _ => relative_change(q.1(a), q.1(b)),
+                    })
+                    .collect();
+                let largest = |x: &[f64], y: &[f64]| {
+                    x.iter()
+                        .zip(y)
+                        .map(|(&p, &q)| relative_change(p, q))
+                        .fold(0.0, f64::max)
+                };
+                row.push(largest(&a.window_mean, &b.window_mean));
+                row.push(largest(&a.window_max, &b.window_max));
+                row
+            })
+            .collect()
+    }
+
+    /// Names of the columns of [`changes`](Self::changes).
+    pub fn change_names() -> Vec<&'static str> {
+        let mut names: Vec<&str> = QUANTITIES.iter().map(|q| q.0).collect();
+        names.extend(["window_mean (largest)", "window_max (largest)"]);
+        names
+    }
+
+    /// Whether each quantity changed by less than the tolerance between the
+    /// two finest levels (None with one level or an undefined change).
+    pub fn converged(&self) -> Vec<Option<bool>> {
+        match self.changes().last() {
+            None => vec![None; Self::change_names().len()],
+            Some(last) => last
+                .iter()
+                .map(|&c| (!c.is_nan()).then_some(c < self.tolerance))
+                .collect(),
+        }
+    }
+
+    /// `converge.md`: the tables and the verdicts, readable.
+    pub fn markdown(&self) -> String {
+        let mut s = String::new();
+        let w = &mut s;
+        let f = |x: f64| {
+            if x.is_nan() {
+                "–".to_string()
+            } else {
+                format!("{x:.4}")
+            }
+        };
+        let _ = writeln!(w, "# Convergence with the increment: {}\n", self.title);
+        let _ = writeln!(
+            w,
+            "Level k runs at increment v0/2^k (the increment is also the node spacing). Averaged quantities should converge; individual peaks need not (MODEL.md section 7). Converged: relative change < {} % between the two finest levels.\n",
+            self.tolerance * 100.0
+        );
+        let _ = writeln!(w, "## Per level\n");
+        let _ = writeln!(
+            w,
+            "| level | increment | steps | band jumps | {} |",
+            QUANTITIES.map(|q| q.0).join(" | ")
+        );
+        let _ = writeln!(w, "|{}", "---|".repeat(4 + QUANTITIES.len()));
+        for l in &self.levels {
+            let values: Vec<String> = QUANTITIES.iter().map(|q| f(q.1(l))).collect();
+            let _ = writeln!(
+                w,
+                "| {} | {} | {} | {} | {} |",
+                l.level,
+                l.increment,
+                l.steps,
+                l.band_jumps,
+                values.join(" | ")
+            );
+        }
+        let tables: [(&str, PerWindow); 2] = [
+            ("Mean force P/(γ0 d²)", |l| &l.window_mean),
+            ("Force envelope (largest P/(γ0 d²))", |l| &l.window_max),
+        ];
+        let windows = self.windows();
+        let heads: Vec<String> = (0..windows).map(|k| format!("{k}–{}", k + 1)).collect();
+        for (title, values) in tables {
+            let _ = writeln!(w, "\n{title} in each window of u/d:\n");
+            let _ = writeln!(
+                w,
+                "| level | {} |\n|{}",
+                heads.join(" | "),
+                "---|".repeat(windows + 1)
+            );
+            for l in &self.levels {
+                let v: Vec<String> = values(l).iter().map(|&x| f(x)).collect();
+                let _ = writeln!(w, "| {} | {} |", l.level, v.join(" | "));
+            }
+        }
+        let names = Self::change_names();
+        let _ = writeln!(w, "\n## Relative change from the previous level\n");
+        let _ = writeln!(
+            w,
+            "| quantity | {} |",
+            (1..self.levels.len())
+                .map(|k| format!("{} → {k}", k - 1))
+                .collect::<Vec<_>>()
+                .join(" | ")
+        );
+        let _ = writeln!(w, "|{}", "---|".repeat(self.levels.len()));
+        let changes = self.changes();
+        for (i, name) in names.iter().enumerate() {
+            let v: Vec<String> = changes.iter().map(|row| f(row[i])).collect();
+            let _ = writeln!(w, "| {name} | {} |", v.join(" | "));
+        }
+        let _ = writeln!(w, "\n## Verdict\n");
+        for (name, verdict) in names.iter().zip(self.converged()) {
+            let text = match verdict {
+                Some(true) => "converged",
+                Some(false) => "not converged",
+                None => "undetermined",
+            };
+            let _ = writeln!(w, "- {name}: {text}");
+        }
+        s
+    }
+
+    /// `converge.png`: window means and envelope against u/d, the final
+    /// surfaces, and the relative changes against the level.
+    pub fn draw(&self, path: &Path) -> Result<(), StudyError> {
+        use crate::plot::{draw_panels, Panel, Series};
+        let label = |l: &Level| format!("level {} (v0 = {})", l.level, l.increment);
+        let per_window = |values: PerWindow| {
+            self.levels
+                .iter()
+                .map(|l| {
+                    let points = values(l)
+                        .iter()
+                        .enumerate()
+                        .map(|(k, &v)| (k as f64 + 0.5, v))
+                        .collect();
+                    Series::line(&label(l), points)
+                })
+                .collect()
+        };
+        let names = Self::change_names();
+        let changes = self.changes();
+        let change_series = [0usize, 1, 2, 3, 5]
+            .iter()
+            .map(|&i| {
+                let points = changes
+                    .iter()
+                    .enumerate()
+                    .map(|(k, row)| ((k + 1) as f64, row[i]))
+                    .collect();
+                Series::line(names[i], points)
+            })
+            .collect();
+        let panels = vec![
+            Panel {
+                x_label: "u/d (window midpoint)".into(),
+                y_label: "window mean P/(γ0 d²)".into(),
+                series: per_window(|l| &l.window_mean),
+            },
+            Panel {
+                x_label: "u/d (window midpoint)".into(),
+                y_label: "window max P/(γ0 d²) (envelope)".into(),
+                series: per_window(|l| &l.window_max),
+            },
+            Panel {
+                x_label: "(x − u)/d ahead of the blade".into(),
+                y_label: "final surface y/d".into(),
+                series: self
+                    .levels
+                    .iter()
+                    .map(|l| Series::line(&label(l), l.profile.clone()))
+                    .collect(),
+            },
+            Panel {
+                x_label: "level k (change from level k − 1)".into(),
+                y_label: "relative change".into(),
+                series: change_series,
+            },
+            Panel {
+                x_label: "u/d".into(),
+                y_label: "P/(γ0 d²)".into(),
+                series: self
+                    .levels
+                    .iter()
+                    .map(|l| Series::line(&label(l), l.force.clone()))
+                    .collect(),
+            },
+        ];
+        draw_panels(
+            &format!("Convergence with the increment: {}", self.title),
+            &panels,
+            2,
+            path,
+        )
+    }
+}

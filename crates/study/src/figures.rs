@@ -1,0 +1,86 @@
+//! The summary figures of one run, as a sweep reports them.
+
+use crate::run::RunResult;
+
+/// Names of the figures, in the order of [`Figures::values`] (the columns
+/// of `sweep.csv` after the varied keys).
+pub const NAMES: [&str; 9] = [
+    "initial_force_norm",
+    "max_force_norm",
+    "u_over_d_at_max",
+    "final_force_norm",
+    "peaks",
+    "mean_force_norm_last_half",
+    "mass_drift_rel",
+    "band_jumps",
+    "steps",
+];
+
+/// What each figure means, for the documentation of `sweep.csv`.
+pub const MEANINGS: [&str; 9] = [
+    "P/(γ0 d²) of the first increment",
+    "largest P/(γ0 d²) of the run",
+    "u/d of the largest force",
+    "P/(γ0 d²) of the last increment",
+    "number of distinct force peaks (prominence ≥ 5 % of the largest force, as in summary.json)",
+    "mean P/(γ0 d²) over the last half of the increments (index ≥ steps/2)",
+    "(final − initial mass) / initial mass",
+    "increments whose emergence point moved more than d/4 (as in summary.json)",
+    "increments run",
+];
+
+/// Summary figures of a finished run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figures {
+    pub initial_force_norm: f64,
+    pub max_force_norm: f64,
+    pub u_over_d_at_max: f64,
+    pub final_force_norm: f64,
+    pub peaks: usize,
+    pub mean_force_norm_last_half: f64,
+    pub mass_drift_rel: f64,
+    pub band_jumps: usize,
+    pub steps: usize,
+}
+
+impl Figures {
+    pub fn of(run: &RunResult) -> Self {
+        let s = &run.summary;
+        let forces: Vec<f64> = run.history.iter().map(|r| r.force_norm).collect();
+        Figures {
+            initial_force_norm: s.initial_force_norm,
+            max_force_norm: s.max_force_norm,
+            u_over_d_at_max: s.u_over_d_at_max,
+            final_force_norm: s.final_force_norm,
+            peaks: s.peaks.len(),
+            mean_force_norm_last_half: mean(&forces[forces.len() / 2..]),
+            mass_drift_rel: s.mass_drift_rel,
+            band_jumps: s.band_jumps.len(),
+            steps: s.steps,
+        }
+    }
+
+    /// The figures in the order of [`NAMES`].
+    pub fn values(&self) -> [f64; 9] {
+        [
+            self.initial_force_norm,
+            self.max_force_norm,
+            self.u_over_d_at_max,
+            self.final_force_norm,
+            self.peaks as f64,
+            self.mean_force_norm_last_half,
+            self.mass_drift_rel,
+            self.band_jumps as f64,
+            self.steps as f64,
+        ]
+    }
+}
+
+/// Arithmetic mean; NaN for no values.
+pub fn mean(values: &[f64]) -> f64 {
+    if values.is_empty() {
+        f64::NAN
+    } else {
+        values.iter().sum::<f64>() / values.len() as f64
+    }
+}

@@ -1,0 +1,47 @@
+//! soilcut-study: studies made of many soilcut runs.
+//!
+//! * [`sweep`]: every combination (grid) or a seeded Latin-hypercube sample
+//!   of case keys, run in parallel, one row of summary figures per run.
+//! * [`fit`]: the free case keys that best match a measured
+//!   force-displacement curve (Nelder-Mead from several seeded starts).
+//! * [`converge`]: one case with the increment halved level after level,
+//!   and which averaged quantities converge (MODEL.md section 7).
+//!
+//! A library: no terminal output. Progress is reported through a
+//! [`Progress`] callback; results come back as data with methods that
+//! render their files. Every result is reproducible: the same inputs and
+//! seed give the same files, bit for bit, on any number of threads (wall
+//! times go to separate `timing.csv` files).
+//!
+//! Case keys are changed with the same [`soilcut_io::Override`] mechanism
+//! as `--set`, applied to the case file's table before it is resolved, so
+//! every key of a case file can be varied or fitted.
+
+pub mod converge;
+pub mod csv;
+mod error;
+pub mod figures;
+pub mod fit;
+pub mod plot;
+pub mod run;
+pub mod sample;
+pub mod sweep;
+
+pub use error::StudyError;
+pub use run::{BaseCase, RunResult};
+
+/// Progress of a study: called with (runs finished, runs in all), once
+/// with 0 before the first run and then after each run, from the worker
+/// threads.
+pub type Progress<'a> = &'a (dyn Fn(usize, usize) + Sync);
+
+/// A [`Progress`] that ignores everything.
+pub fn no_progress(_done: usize, _total: usize) {}
+
+/// A thread pool of `jobs` threads (0: one per available core).
+pub(crate) fn pool(jobs: usize) -> Result<rayon::ThreadPool, StudyError> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .map_err(|e| StudyError::Spec(format!("--jobs {jobs}: cannot start the threads: {e}")))
+}

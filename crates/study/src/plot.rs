@@ -1,0 +1,231 @@
+//! Small PNG charts of studies: panels of points and lines.
+//!
+//! Text uses a subset of DejaVu Sans compiled into the crate
+//! (`fonts/README.md`), registered with plotters' ab_glyph renderer under
+//! a family name of its own, never system fonts. The same data give
+//! byte-identical files.
+
+use crate::error::StudyError;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+/// The family name the bundled font is registered under (its own, so that
+/// it never replaces another crate's fonts in the same process).
+const FAMILY: &str = "soilcut-study-sans";
+
+static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans-subset.ttf");
+
+fn register_font() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        if plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).is_err() {
+            panic!("the bundled DejaVu Sans subset is a valid font");
+        }
+    });
+}
+
+/// Panel size in pixels.
+const PANEL: (u32, u32) = (600, 420);
+/// Height of the title band.
+const TITLE_HEIGHT: u32 = 50;
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mark {
+    Points,
+    Line,
+}
+
+/// One set of (x, y) points of a panel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// Legend entry (none if empty).
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    pub mark: Mark,
+}
+
+impl Series {
+    pub fn points(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            mark: Mark::Points,
+        }
+    }
+
+    pub fn line(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            mark: Mark::Line,
+        }
+    }
+}
+
+/// One chart of a picture.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Panel {
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+}
+
+/// Draws `panels`, `columns` to a row under `title`, into the PNG `path`.
+pub fn draw_panels(
+    title: &str,
+    panels: &[Panel],
+    columns: usize,
+    path: &Path,
+) -> Result<(), StudyError> {
+    register_font();
+    let columns = columns.clamp(1, panels.len().max(1));
+    let rows = panels.len().div_ceil(columns).max(1);
+    let size = (
+        PANEL.0 * columns as u32,
+        PANEL.1 * rows as u32 + TITLE_HEIGHT,
+    );
+    let fail = |e: String| StudyError::Plot(format!("{}: {e}", path.display()));
+    let mut buffer = vec![255u8; (size.0 * size.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, size).into_drawing_area();
+        let text = |e: &dyn std::fmt::Display| e.to_string();
+        root.fill(&WHITE).map_err(|e| fail(text(&e)))?;
+        let (top, body) = root.split_vertically(TITLE_HEIGHT);
+        top.titled(title, (FAMILY, 26))
+            .map_err(|e| fail(text(&e)))?;
+        let areas = body.split_evenly((rows, columns));
+        for (panel, area) in panels.iter().zip(&areas) {
+            draw_panel(panel, area).map_err(fail)?;
+        }
+        root.present().map_err(|e| fail(text(&e)))?;
+    }
+    let bytes = png_bytes(size, &buffer).map_err(fail)?;
+    std::fs::write(path, bytes).map_err(|e| fail(e.to_string()))
+}
+
+/// (lo, hi) of `values` with a 5 % margin; a single value gets ±1 (or ±5 %).
+fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    let span = hi - lo;
+    let pad = if span > 0.0 {
+        0.05 * span
+    } else if lo != 0.0 {
+        0.05 * lo.abs()
+    } else {
+        1.0
+    };
+    (lo - pad, hi + pad)
+}
+
+fn draw_panel<DB: DrawingBackend>(
+    panel: &Panel,
+    area: &DrawingArea<DB, Shift>,
+) -> Result<(), String> {
+    let text = |e: &dyn std::fmt::Display| e.to_string();
+    let all = || panel.series.iter().flat_map(|s| s.points.iter());
+    let (x0, x1) = range(all().map(|p| p.0));
+    let (y0, y1) = range(all().map(|p| p.1));
+    let mut chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(48)
+        .y_label_area_size(78)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(|e| text(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
+        .axis_desc_style((FAMILY, 18))
+        .label_style((FAMILY, 14))
+        .light_line_style(RGBColor(235, 235, 235))
+        .x_labels(6)
+        .y_labels(6)
+        .draw()
+        .map_err(|e| text(&e))?;
+    let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    for (i, s) in panel.series.iter().enumerate() {
+        let colour = Palette99::pick(i).to_rgba();
+        let points: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
+        let drawn = match s.mark {
+            Mark::Points => chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                .map_err(|e| text(&e))?,
+            Mark::Line => chart
+                .draw_series(LineSeries::new(points, colour.stroke_width(2)))
+                .map_err(|e| text(&e))?,
+        };
+        if !s.label.is_empty() {
+            drawn.label(s.label.as_str()).legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(3))
+            });
+        }
+    }
+    if panel.series.iter().any(|s| !s.label.is_empty()) {
+        chart
+            .configure_series_labels()
+            .label_font((FAMILY, 14))
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(180, 180, 180))
+            .position(SeriesLabelPosition::UpperLeft)
+            .draw()
+            .map_err(|e| text(&e))?;
+    }
+    Ok(())
+}
+
+/// Encodes RGB pixels as PNG.
+fn png_bytes((w, h): (u32, u32), rgb: &[u8]) -> Result<Vec<u8>, String> {
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, w, h);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
+    writer.write_image_data(rgb).map_err(|e| e.to_string())?;
+    writer.finish().map_err(|e| e.to_string())?;
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn draws_a_deterministic_png() {
+        let tmp = tempfile::tempdir().unwrap();
+        let panels = vec![
+            Panel {
+                x_label: "φp (°)".into(),
+                y_label: "P/(γ0 d²)".into(),
+                series: vec![Series::points(
+                    "",
+                    vec![(30.0, 1.0), (35.0, 2.0), (40.0, f64::NAN)],
+                )],
+            },
+            Panel {
+                x_label: "u/d".into(),
+                y_label: "force".into(),
+                series: vec![
+                    Series::line("a", vec![(0.0, 1.0), (1.0, 1.5)]),
+                    Series::line("b", vec![(0.0, 1.2)]),
+                ],
+            },
+        ];
+        let (a, b) = (tmp.path().join("a.png"), tmp.path().join("b.png"));
+        draw_panels("test", &panels, 2, &a).unwrap();
+        draw_panels("test", &panels, 2, &b).unwrap();
+        let bytes = std::fs::read(&a).unwrap();
+        assert_eq!(&bytes[1..4], b"PNG");
+        assert_eq!(bytes, std::fs::read(&b).unwrap());
+        assert!(draw_panels("x", &panels, 1, &tmp.path().join("no/such.png")).is_err());
+    }
+}

@@ -1,0 +1,184 @@
+//! One run of a case with overrides: the unit every study is made of.
+
+use soilcut_io::{parse_case, InputError, LoadedCase, Override};
+use soilcut_model::{ProfilePoint, Simulation, StepRecord, Summary};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
+use std::time::Instant;
+
+/// The case a study starts from: the text of its file and the `--set`
+/// overrides given for every run.
+#[derive(Clone, Debug)]
+pub struct BaseCase {
+    text: String,
+    overrides: Vec<Override>,
+}
+
+impl BaseCase {
+    /// The case file's text and the overrides of every run. Checks that
+    /// the case reads (its runs may still fail).
+    pub fn new(text: String, overrides: Vec<Override>) -> Result<Self, InputError> {
+        let base = BaseCase { text, overrides };
+        base.load(&[])?;
+        Ok(base)
+    }
+
+    /// Reads the case file at `path`.
+    pub fn read(path: &Path, overrides: Vec<Override>) -> Result<Self, InputError> {
+        let text = std::fs::read_to_string(path).map_err(InputError::Read)?;
+        BaseCase::new(text, overrides)
+    }
+
+    /// The case with `extra` overrides applied after the base ones.
+    pub fn load(&self, extra: &[Override]) -> Result<LoadedCase, InputError> {
+        let all: Vec<Override> = self.overrides.iter().chain(extra).cloned().collect();
+        parse_case(&self.text, &all)
+    }
+
+    /// Runs the case with `extra` overrides. Every failure (an invalid
+    /// combination of keys, no admissible mechanism, even a panic of the
+    /// model) is returned as its one-line message.
+    pub fn run(&self, extra: &[Override]) -> Result<RunResult, String> {
+        let loaded = self.load(extra).map_err(|e| e.to_string())?;
+        run_loaded(loaded)
+    }
+
+    /// The value of a numeric key of the resolved case (after the base
+    /// overrides), e.g. `soil.friction.peak`.
+    pub fn number(&self, key: &str) -> Result<f64, String> {
+        let loaded = self.load(&[]).map_err(|e| e.to_string())?;
+        let table: toml::Table = loaded
+            .resolved_toml()
+            .parse()
+            .map_err(|e: toml::de::Error| e.to_string())?;
+        let mut value = None;
+        let mut current = Some(&table);
+        for part in key.split('.') {
+            value = current.and_then(|t| t.get(part));
+            current = value.and_then(toml::Value::as_table);
+        }
+        match value {
+            Some(toml::Value::Float(x)) => Ok(*x),
+            Some(toml::Value::Integer(i)) => Ok(*i as f64),
+            Some(other) => Err(format!("{key}: not a number in the case (got {other})")),
+            None => Err(format!(
+                "{key}: the resolved case has no such key (give it in the case file or with --set)"
+            )),
+        }
+    }
+}
+
+/// Runs a loaded case to its end.
+pub fn run_loaded(loaded: LoadedCase) -> Result<RunResult, String> {
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        let mut sim = Simulation::new(&loaded.case).map_err(|e| e.to_string())?;
+        let start = Instant::now();
+        let history = sim.run_to_end(|_| {}).map_err(|e| e.to_string())?;
+        let wall_time_s = start.elapsed().as_secs_f64();
+        let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
+        Ok::<_, String>((
+            history,
+            sim.profile(),
+            summary,
+            sim.evaluations(),
+            wall_time_s,
+        ))
+    }));
+    let (history, profile, summary, evaluations, wall_time_s) = match outcome {
+        Ok(result) => result?,
+        Err(panic) => {
+            let text = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".to_string());
+            return Err(format!("the model panicked: {text}"));
+        }
+    };
+    Ok(RunResult {
+        loaded,
+        history,
+        profile,
+        summary,
+        evaluations,
+        wall_time_s,
+    })
+}
+
+/// An `Override` setting `key` to `value`, as `--set key=value` would.
+pub fn override_of(key: &str, value: &toml::Value) -> Result<Override, String> {
+    format!("{key}={value}")
+        .parse::<Override>()
+        .map_err(|e| e.to_string())
+}
+
+/// Everything a finished run produced.
+#[derive(Clone, Debug)]
+pub struct RunResult {
+    pub loaded: LoadedCase,
+    pub history: Vec<StepRecord>,
+    pub profile: Vec<ProfilePoint>,
+    pub summary: Summary,
+    pub evaluations: u64,
+    /// Time spent in the simulation (varies between runs).
+    pub wall_time_s: f64,
+}
+
+impl RunResult {
+    /// The usual output files of `soilcut run`.
+    pub fn files(&self) -> Vec<(&'static str, String)> {
+        soilcut_io::RunOutput {
+            loaded: &self.loaded,
+            history: &self.history,
+            profile: &self.profile,
+            summary: &self.summary,
+            candidate_evaluations: self.evaluations,
+            wall_time_s: self.wall_time_s,
+        }
+        .files()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const REFINED: &str = include_str!("../../io/testdata/refined.toml");
+
+    #[test]
+    fn overrides_carry_values_exactly() {
+        let base = BaseCase::new(REFINED.to_string(), vec![]).unwrap();
+        for x in [3.3123456789012345, 1e-7, 3.5, 0.1 + 0.2, 1e21] {
+            let o = override_of("soil.unit_weight", &toml::Value::Float(x)).unwrap();
+            assert_eq!(base.load(&[o]).unwrap().case.soil.unit_weight, x);
+        }
+        let o = override_of(
+            "choices.band_shear",
+            &toml::Value::String("by-position".into()),
+        )
+        .unwrap();
+        let c = base.load(&[o]).unwrap().case;
+        assert_eq!(
+            c.choices.band_shear,
+            soilcut_model::BandShearRule::ByPosition
+        );
+    }
+
+    #[test]
+    fn numbers_of_the_resolved_case() {
+        let set = vec!["soil.friction.peak=36".parse().unwrap()];
+        let base = BaseCase::new(REFINED.to_string(), set).unwrap();
+        assert_eq!(base.number("soil.friction.peak").unwrap(), 36.0);
+        assert_eq!(base.number("soil.repose").unwrap(), 30.0, "a default");
+        assert!(base.number("soil.band_width").is_err(), "given as N d50");
+        assert!(base.number("soil.friction").is_err(), "a table");
+    }
+
+    #[test]
+    fn failures_are_messages() {
+        let base = BaseCase::new(REFINED.to_string(), vec![]).unwrap();
+        let o = "soil.friction.initial=50".parse().unwrap();
+        let e = base.run(&[o]).unwrap_err();
+        assert!(e.starts_with("soil.friction.initial: "), "{e}");
+    }
+}

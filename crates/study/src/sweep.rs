@@ -1,0 +1,201 @@
+//! Parameter sweeps: many runs of one case with varied keys, in parallel.
+//!
+//! Output: `sweep.csv` (one row per run, in the order of the sample, the
+//! same on any number of threads), `timing.csv` (wall time per run: the
+//! only figure that changes between identical runs) and, on request, each
+//! run's usual output folder.
+
+use crate::csv;
+use crate::error::StudyError;
+use crate::figures::{Figures, NAMES};
+use crate::run::{override_of, BaseCase};
+use crate::sample::{points, Sample, Vary};
+use crate::Progress;
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A sweep to run.
+#[derive(Clone, Debug)]
+pub struct Sweep {
+    pub base: BaseCase,
+    pub varies: Vec<Vary>,
+    pub sample: Sample,
+    /// Worker threads (0: one per available core).
+    pub jobs: usize,
+    /// Write each finished run's output folder `run-NNNN` under this one.
+    pub keep_runs: Option<PathBuf>,
+}
+
+/// One run of a sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepRow {
+    /// Run number, from 1, in the order of the sample.
+    pub run: usize,
+    /// The varied keys' values, in the order of the `--vary` arguments.
+    pub values: Vec<toml::Value>,
+    /// The figures, or why the run failed (one line).
+    pub outcome: Result<Figures, String>,
+    /// Wall time of the simulation, s (0 for a run that failed to start).
+    pub wall_time_s: f64,
+}
+
+/// A finished sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepResult {
+    /// The varied keys.
+    pub keys: Vec<String>,
+    pub rows: Vec<SweepRow>,
+}
+
+/// The name of run `run`'s folder: `run-0001` (at least four digits).
+pub fn run_folder(run: usize, total: usize) -> String {
+    let width = total.to_string().len().max(4);
+    format!("run-{run:0width$}")
+}
+
+impl Sweep {
+    /// The runs this sweep will make (varied values per run).
+    pub fn points(&self) -> Result<Vec<Vec<toml::Value>>, StudyError> {
+        points(&self.varies, self.sample)
+    }
+
+    /// Runs every point on a pool of `jobs` threads. A run that fails is a
+    /// row with its error; only a kept run folder that cannot be written
+    /// fails the sweep (after every run has finished).
+    pub fn run(&self, progress: Progress) -> Result<SweepResult, StudyError> {
+        let points = self.points()?;
+        let keys: Vec<String> = self.varies.iter().map(|v| v.key.clone()).collect();
+        let total = points.len();
+        let finished = AtomicUsize::new(0);
+        progress(0, total);
+        let one = |(index, values): (usize, Vec<toml::Value>)| {
+            let row = self.run_one(&keys, index + 1, total, values);
+            progress(finished.fetch_add(1, Ordering::Relaxed) + 1, total);
+            row
+        };
+        let rows: Vec<Result<SweepRow, StudyError>> = crate::pool(self.jobs)?
+            .install(|| points.into_par_iter().enumerate().map(one).collect());
+        let rows = rows.into_iter().collect::<Result<Vec<_>, _>>()?;
+        Ok(SweepResult { keys, rows })
+    }
+
+    fn run_one(
+        &self,
+        keys: &[String],
+        run: usize,
+        total: usize,
+        values: Vec<toml::Value>,
+    ) -> Result<SweepRow, StudyError> {
+        let overrides: Result<Vec<_>, String> = keys
+            .iter()
+            .zip(&values)
+            .map(|(k, v)| override_of(k, v))
+            .collect();
+        let result = overrides.and_then(|o| self.base.run(&o));
+        let wall_time_s = result.as_ref().map_or(0.0, |r| r.wall_time_s);
+        if let (Some(dir), Ok(result)) = (&self.keep_runs, &result) {
+            let folder = dir.join(run_folder(run, total));
+            soilcut_io::write_output_dir(&folder, &result.files(), false)?;
+        }
+        Ok(SweepRow {
+            run,
+            values,
+            outcome: result.as_ref().map(Figures::of).map_err(Clone::clone),
+            wall_time_s,
+        })
+    }
+}
+
+impl SweepResult {
+    /// `sweep.csv`: `run`, the varied keys, `status` (`ok` or `failed`),
+    /// `error`, then the figures of [`NAMES`] (empty for a failed run).
+    pub fn csv(&self) -> String {
+        let mut header = vec!["run".to_string()];
+        header.extend(self.keys.iter().map(|k| csv::field(k)));
+        header.extend(["status".to_string(), "error".to_string()]);
+        header.extend(NAMES.iter().map(|n| n.to_string()));
+        let mut out = csv::line(&header);
+        for row in &self.rows {
+            let mut fields = vec![row.run.to_string()];
+            fields.extend(row.values.iter().map(csv::value));
+            match &row.outcome {
+                Ok(figures) => {
+                    fields.extend(["ok".to_string(), String::new()]);
+                    fields.extend(figures.values().iter().map(|&x| csv::number(x)));
+                }
+                Err(e) => {
+                    fields.extend(["failed".to_string(), csv::field(e)]);
+                    fields.extend(NAMES.iter().map(|_| String::new()));
+                }
+            }
+            out.push_str(&csv::line(&fields));
+        }
+        out
+    }
+
+    /// `timing.csv`: `run,wall_time_s`.
+    pub fn timing_csv(&self) -> String {
+        let mut out = String::from("run,wall_time_s\n");
+        for row in &self.rows {
+            out.push_str(&csv::line(&[
+                row.run.to_string(),
+                row.wall_time_s.to_string(),
+            ]));
+        }
+        out
+    }
+
+    /// Runs that failed.
+    pub fn failed(&self) -> usize {
+        self.rows.iter().filter(|r| r.outcome.is_err()).count()
+    }
+
+    /// Draws `sweep-<key>.png` into `dir` for every numeric varied key:
+    /// each figure against that key, one panel per figure. Returns the
+    /// files written.
+    pub fn draw(&self, dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
+        let mut written = Vec::new();
+        for (k, key) in self.keys.iter().enumerate() {
+            let xs: Vec<Option<f64>> = self.rows.iter().map(|r| number(&r.values[k])).collect();
+            if xs.iter().any(Option::is_none) {
+                continue;
+            }
+            let panels: Vec<crate::plot::Panel> = NAMES
+                .iter()
+                .enumerate()
+                .map(|(f, name)| crate::plot::Panel {
+                    x_label: key.clone(),
+                    y_label: name.to_string(),
+                    series: vec![crate::plot::Series::points(
+                        "",
+                        self.rows
+                            .iter()
+                            .zip(&xs)
+                            .filter_map(|(r, x)| {
+                                Some((x.unwrap(), r.outcome.as_ref().ok()?.values()[f]))
+                            })
+                            .collect(),
+                    )],
+                })
+                .collect();
+            let path = dir.join(format!("sweep-{key}.png"));
+            crate::plot::draw_panels(
+                &format!("Sweep: summary figures against {key}"),
+                &panels,
+                3,
+                &path,
+            )?;
+            written.push(path);
+        }
+        Ok(written)
+    }
+}
+
+fn number(v: &toml::Value) -> Option<f64> {
+    match v {
+        toml::Value::Float(x) => Some(*x),
+        toml::Value::Integer(i) => Some(*i as f64),
+        _ => None,
+    }
+}

@@ -1,0 +1,70 @@
+//! Convergence studies on a short, coarse case.
+
+use soilcut_study::converge::{Converge, QUANTITIES};
+use soilcut_study::{no_progress, BaseCase};
+
+const REFINED: &str = include_str!("../../io/testdata/refined.toml");
+
+fn converge(jobs: usize) -> Converge {
+    let set = ["run.travel=40", "run.increment=1"]
+        .iter()
+        .map(|s| s.parse().unwrap())
+        .collect();
+    Converge {
+        base: BaseCase::new(REFINED.to_string(), set).unwrap(),
+        levels: 3,
+        tolerance: 0.02,
+        jobs,
+    }
+}
+
+#[test]
+fn one_row_per_level_with_halved_increments() {
+    let result = converge(2).run(&no_progress).unwrap();
+    let csv = result.csv();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 1 + 3);
+    assert!(lines[0].starts_with("level,increment,steps,band_jumps,mean_force_norm,"));
+    assert!(
+        lines[0].ends_with(",window_max_0_1,window_max_1_2"),
+        "{}",
+        lines[0]
+    );
+    let increments: Vec<f64> = result.levels.iter().map(|l| l.increment).collect();
+    assert_eq!(increments, [1.0, 0.5, 0.25]);
+    let steps: Vec<usize> = result.levels.iter().map(|l| l.steps).collect();
+    assert_eq!(steps, [40, 80, 160]);
+    for l in &result.levels {
+        assert_eq!(l.window_mean.len(), 2, "travel 2 d: two windows");
+        for (mean, max) in l.window_mean.iter().zip(&l.window_max) {
+            assert!(mean <= max);
+        }
+        assert!(l.pile_height_d > 0.0);
+    }
+    assert_eq!(
+        result.levels[2].profile_rms_d, 0.0,
+        "the finest against itself"
+    );
+    assert!(result.levels[0].profile_rms_d > 0.0);
+    let changes = result.changes();
+    assert_eq!(changes.len(), 2);
+    assert_eq!(changes[0].len(), QUANTITIES.len() + 2);
+    let md = result.markdown();
+    assert!(md.contains("## Verdict"), "{md}");
+    assert_eq!(
+        md.matches(": converged").count()
+            + md.matches(": not converged").count()
+            + md.matches(": undetermined").count(),
+        QUANTITIES.len() + 2
+    );
+    let tmp = tempfile::tempdir().unwrap();
+    result.draw(&tmp.path().join("converge.png")).unwrap();
+}
+
+#[test]
+fn same_table_on_any_number_of_threads() {
+    let one = converge(1).run(&no_progress).unwrap();
+    let two = converge(2).run(&no_progress).unwrap();
+    assert_eq!(one.csv(), two.csv());
+    assert_eq!(one.markdown(), two.markdown());
+}
