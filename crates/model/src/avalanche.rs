@@ -16,6 +16,7 @@
 //! column and the deposit. Mass is therefore conserved exactly as well.
 
 use crate::surface::Surface;
+use std::ops::Range;
 
 /// Violations smaller than this fraction of s are round-off, not slopes.
 const SLOPE_TOLERANCE: f64 = 1e-9;
@@ -42,19 +43,25 @@ impl Pool {
 pub struct Avalanche {
     pools: Vec<Pool>,
     old_height: Vec<f64>,
+    windows: Vec<Range<usize>>,
 }
 
 impl Avalanche {
     /// Relaxes every slope steeper than `tan_repose` among the nodes from
-    /// `first` (the face) to the end of the domain; returns the range of
-    /// nodes whose soil moved (empty if none).
+    /// `first` (the face) to the end of the domain, where slopes elsewhere
+    /// are known to be at most the angle of repose: only the nodes in
+    /// `changed` (and as far as pooling spreads from them) are visited;
+    /// the result is that of passes over the whole domain. Returns the range
+    /// of nodes whose soil moved (empty if none).
     pub fn relax(
         &mut self,
         surface: &mut Surface,
         first: usize,
         tan_repose: f64,
-    ) -> std::ops::Range<usize> {
+        changed: &[Range<usize>],
+    ) -> Range<usize> {
         let s = surface.spacing * tan_repose;
+        self.set_windows(changed, first, surface.len());
         let mut touched = first..first;
         for _ in 0..MAX_PASSES {
             let down = self.pass(surface, first, s, 1.0, &mut touched);
@@ -66,19 +73,86 @@ impl Avalanche {
         touched
     }
 
-    /// One pool-adjacent-violators pass on g_i = σ y_i + s (i − first);
-    /// returns whether anything moved.
+    /// Sorted, disjoint windows of node pairs to examine, within the domain.
+    fn set_windows(&mut self, changed: &[Range<usize>], first: usize, len: usize) {
+        self.windows.clear();
+        for r in changed {
+            let (lo, hi) = (r.start.max(first), r.end.min(len));
+            if lo < hi {
+                self.windows.push(lo..hi);
+            }
+        }
+        self.windows.sort_by_key(|w| w.start);
+        self.merge_windows();
+    }
+
+    fn merge_windows(&mut self) {
+        let mut k = 0;
+        while k + 1 < self.windows.len() {
+            if self.windows[k].end >= self.windows[k + 1].start {
+                let next = self.windows.remove(k + 1);
+                self.windows[k].end = self.windows[k].end.max(next.end);
+            } else {
+                k += 1;
+            }
+        }
+    }
+
+    /// One pool-adjacent-violators pass on g_i = σ y_i + s (i − first) over
+    /// every window; returns whether anything moved.
     fn pass(
         &mut self,
         surface: &mut Surface,
         first: usize,
         s: f64,
         sign: f64,
-        touched: &mut std::ops::Range<usize>,
+        touched: &mut Range<usize>,
     ) -> bool {
+        while self.widen(surface, first, s, sign) {}
+        let mut moved = false;
+        for k in 0..self.windows.len() {
+            self.pool(surface, first, s, sign, self.windows[k].clone());
+            moved |= self.apply(surface, first, s, sign, touched);
+        }
+        moved
+    }
+
+    /// Widens the first window whose pooling runs into its edge (it may
+    /// continue beyond it) and returns true; false once none does. Nothing is
+    /// levelled before every window is settled, so the pools are those of a
+    /// pass over the whole domain.
+    fn widen(&mut self, surface: &Surface, first: usize, s: f64, sign: f64) -> bool {
+        for k in 0..self.windows.len() {
+            let window = self.windows[k].clone();
+            self.pool(surface, first, s, sign, window.clone());
+            let open_lo = window.start > first && self.pools[0].len > 1;
+            let open_hi =
+                window.end < surface.len() && self.pools.last().is_some_and(|p| p.len > 1);
+            if open_lo || open_hi {
+                let width = window.end - window.start;
+                let lo = if open_lo {
+                    window.start.saturating_sub(width).max(first)
+                } else {
+                    window.start
+                };
+                let hi = if open_hi {
+                    (window.end + width).min(surface.len())
+                } else {
+                    window.end
+                };
+                self.windows[k] = lo..hi;
+                self.merge_windows();
+                return true;
+            }
+        }
+        false
+    }
+
+    /// The pools of the nodes in `window` (PAVA with a stack).
+    fn pool(&mut self, surface: &Surface, first: usize, s: f64, sign: f64, window: Range<usize>) {
         self.pools.clear();
         let tolerance = SLOPE_TOLERANCE * s;
-        for i in first..surface.len() {
+        for i in window {
             let w = surface.node_weight(i, first);
             let g = sign * surface.height[i] + s * (i - first) as f64;
             self.pools.push(Pool {
@@ -100,6 +174,17 @@ impl Avalanche {
                 merged.weighted += top.weighted;
             }
         }
+    }
+
+    /// Levels every pooled run; returns whether anything moved.
+    fn apply(
+        &mut self,
+        surface: &mut Surface,
+        first: usize,
+        s: f64,
+        sign: f64,
+        touched: &mut Range<usize>,
+    ) -> bool {
         let mut moved = false;
         for k in 0..self.pools.len() {
             let pool = self.pools[k];

@@ -49,6 +49,14 @@ impl ForceFactor {
         }
     }
 
+    /// Whether W (P/W)(t) ≤ `bar` for an admissible t, division-free: false
+    /// also where the mechanism is not admissible.
+    #[inline]
+    pub fn can_beat(&self, weight: f64, t: f64, bar: f64) -> bool {
+        let denominator = self.cos_phi_w - t * self.sin_phi_w;
+        denominator > 0.0 && weight * (t * self.cos_phi + self.sin_phi) <= bar * denominator
+    }
+
     /// The infimum of P / W over admissible β (β → 0): sin φ / cos(φ + φw).
     /// P / W grows with β and with φ, so this bounds every candidate.
     pub fn at_zero_angle(&self) -> f64 {

@@ -23,6 +23,16 @@
 //! grows the domain only if it reaches the end first: growing never changes
 //! the result.
 //!
+//! Pruning (speed without changing the result): a candidate is evaluated in
+//! full (footprint, band angles, Eq. (1)) only if its lower bound
+//! W_j (P/W)(β_j, φ_lo) can beat the best force so far, φ_lo being the least
+//! friction angle of the nodes scanned so far (P/W grows with φ); the test is
+//! division-free. The best force starts from the previous increment's
+//! emergence node, evaluated first. Beyond the last disturbed node the ground
+//! is undisturbed and flat, so W_j has a closed form in n = j − b and every
+//! band there has the fresh soil's angles: those candidates are handled in
+//! blocks, each skipped whole when W(n₁) (P/W)(β(n₂)) cannot beat the best.
+//!
 //! Ties: candidates whose force is within `TIE_TOLERANCE` (relative) of the
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
@@ -73,7 +83,9 @@ pub struct Search {
     admissible: Vec<Choice>,
     /// Prefix sums from the blade node of φ, ψ and ut.
     prefix: Vec<[f64; 3]>,
-    /// Candidate evaluations since creation (for benchmarks).
+    /// Emergence node of the previous increment (seeds the best force).
+    previous: Option<usize>,
+    /// Candidates evaluated in full since creation (for benchmarks).
     pub evaluations: u64,
 }
 
@@ -89,12 +101,46 @@ where
     pub band_width: f64,
     /// Lower bound of P/W over every candidate (see the stopping rule).
     pub min_factor: f64,
+    /// Wall friction φw (radians) and the tan β below which a block may
+    /// sink (β + ψ ≤ 0 for some reachable ψ), where the least-force wall
+    /// friction is −φw: for the pruning bound.
+    pub wall_friction: f64,
+    pub sinking_below: f64,
+    /// Band angles of undisturbed ground.
+    pub fresh: BandAngles,
     /// The band's angles from the footprint means (the band-angle rule).
     pub angles: &'a A,
     /// Eq. (1) for a candidate's band angles at tan β.
     pub factor: &'a F,
     /// Nodes appended when the scan needs more domain.
     pub grow_nodes: usize,
+}
+
+/// The state of the outward scan over candidates.
+struct Scan {
+    b: usize,
+    d: f64,
+    dx: f64,
+    /// ½ γ_b (y_b + d): the face node's trapezoid share.
+    base: f64,
+    /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
+    sum_gh: f64,
+    sum_gk: f64,
+    /// Running minimum of r_i.
+    r_min: f64,
+    /// Best force so far, widened by the tie tolerance.
+    bar: f64,
+}
+
+impl Scan {
+    fn improve(&mut self, force: f64) {
+        self.bar = self.bar.min(force * (1.0 + TIE_TOLERANCE));
+    }
+
+    /// No candidate from weight W on can beat the best (stopping rule).
+    fn beyond_reach(&self, weight: f64, min_factor: f64) -> bool {
+        weight * min_factor > self.bar
+    }
 }
 
 impl Search {
@@ -114,12 +160,30 @@ impl Search {
         self.prefix.clear();
         self.prefix.push([0.0; 3]);
         let (b, d, dx) = (input.blade, input.depth, surface.spacing);
-        let base = 0.5 * surface.unit_weight[b] * (surface.height[b] + d);
-        let (mut sum_gh, mut sum_gk) = (0.0, 0.0);
-        let mut r_min = f64::INFINITY;
-        let mut best = f64::INFINITY;
+        let mut scan = Scan {
+            b,
+            d,
+            dx,
+            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d),
+            sum_gh: 0.0,
+            sum_gk: 0.0,
+            r_min: f64::INFINITY,
+            bar: f64::INFINITY,
+        };
+        if let Some(force) = self
+            .previous
+            .and_then(|j| self.seed(surface, input, &scan, j))
+        {
+            scan.improve(force);
+        }
+        let mut phi_lo = surface.friction[b];
+        let mut lower = Lower::new(phi_lo, input);
         let mut j = b + 1;
         loop {
+            if far_field_from(surface, input, j) {
+                self.far_field(surface.ground_unit_weight, input, &mut scan, j, max_nodes);
+                break;
+            }
             // The emergence node always has a neighbour ahead of it.
             if j + 1 >= surface.len() {
                 if surface.len() >= max_nodes {
@@ -128,41 +192,85 @@ impl Search {
                 surface.grow(input.grow_nodes.max(GROW_NODES_MIN));
             }
             self.push_prefix(surface, j - 1);
+            if surface.friction[j] < phi_lo || surface.friction[j - 1] < phi_lo {
+                phi_lo = phi_lo.min(surface.friction[j]).min(surface.friction[j - 1]);
+                lower = Lower::new(phi_lo, input);
+            }
             let k = (j - b) as f64;
-            let r = (surface.height[j] + d) / k;
-            if r <= r_min {
-                r_min = r;
-                let weight = dx * (base + sum_gh - r * sum_gk);
+            let rise = surface.height[j] + d;
+            if rise <= scan.r_min * k {
+                let r = rise / k;
+                scan.r_min = r;
+                let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
                 let tan_beta = r / dx;
-                self.evaluations += 1;
-                let band = Band::new(b, j, tan_beta, input.band_width, d, dx);
-                let angles = (input.angles)(self.band_angles(surface, &band));
-                if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
-                    let force = weight * f;
-                    best = best.min(force);
-                    self.admissible.push(Choice {
-                        node: j,
-                        tan_beta,
-                        force,
-                        weight,
-                        friction: angles.friction,
-                        dilation: angles.dilation,
-                    });
+                if lower
+                    .at(tan_beta, input)
+                    .can_beat(weight, tan_beta, scan.bar)
+                {
+                    self.evaluate(surface, input, &mut scan, j, tan_beta, weight);
                 }
-                if weight * input.min_factor > best * (1.0 + TIE_TOLERANCE) {
+                if scan.beyond_reach(weight, input.min_factor) {
                     break;
                 }
             }
             let g = surface.unit_weight[j];
-            sum_gh += g * (surface.height[j] + d);
-            sum_gk += g * k;
+            scan.sum_gh += g * rise;
+            scan.sum_gk += g * k;
             j += 1;
         }
-        let threshold = best * (1.0 + TIE_TOLERANCE);
-        self.admissible
-            .iter()
-            .find(|c| c.force <= threshold)
-            .copied()
+        let choice = self.select(scan.bar);
+        self.previous = choice.map(|c| c.node);
+        choice
+    }
+
+    /// The candidate of least force, nearest the blade among near-ties.
+    fn select(&self, bar: f64) -> Option<Choice> {
+        self.admissible.iter().find(|c| c.force <= bar).copied()
+    }
+
+    /// Full evaluation of candidate j: band angles and Eq. (1).
+    fn evaluate<A, F>(
+        &mut self,
+        surface: &Surface,
+        input: &SearchInput<A, F>,
+        scan: &mut Scan,
+        j: usize,
+        tan_beta: f64,
+        weight: f64,
+    ) where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        self.evaluations += 1;
+        let band = Band::new(scan.b, j, tan_beta, input.band_width, scan.d, scan.dx);
+        let angles = (input.angles)(self.band_angles(surface, &band));
+        self.consider(input, scan, j, tan_beta, weight, angles);
+    }
+
+    fn consider<A, F>(
+        &mut self,
+        input: &SearchInput<A, F>,
+        scan: &mut Scan,
+        j: usize,
+        tan_beta: f64,
+        weight: f64,
+        angles: BandAngles,
+    ) where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
+            let force = weight * f;
+            scan.improve(force);
+            self.admissible.push(Choice {
+                node: j,
+                tan_beta,
+                force,
+                weight,
+                friction: angles.friction,
+                dilation: angles.dilation,
+            });
+        }
     }
 
     fn push_prefix(&mut self, surface: &Surface, i: usize) {
@@ -174,27 +282,231 @@ impl Search {
         ]);
     }
 
-    /// Mean angles over the band's footprint, nodes j − m ..= j.
+    /// Mean angles over the band's footprint, nodes j − m ..= j (the prefix
+    /// sums must cover the nodes before j).
     fn band_angles(&mut self, surface: &Surface, band: &Band) -> BandAngles {
         let (b, j) = (band.blade, band.emergence);
         let m = band.footprint(&surface.height);
         if m == 0 {
-            return BandAngles {
-                friction: surface.friction[j],
-                dilation: surface.dilation[j],
-                shear: surface.accumulated_shear[j],
-                fresh: surface.accumulated_shear[j] == 0.0,
-            };
+            return node_angles(surface, j);
         }
         self.push_prefix(surface, j);
         let hi = self.prefix.pop().expect("just pushed");
         let lo = self.prefix[j - m - b];
-        let n = (m + 1) as f64;
-        BandAngles {
-            friction: (hi[0] - lo[0]) / n,
-            dilation: (hi[1] - lo[1]) / n,
-            shear: (hi[2] - lo[2]) / n,
-            fresh: hi[2] - lo[2] == 0.0,
+        window_angles(hi, lo, m)
+    }
+
+    /// Force of candidate j computed on its own (an upper bound for the
+    /// scan), if it is admissible.
+    fn seed<A, F>(
+        &self,
+        surface: &Surface,
+        input: &SearchInput<A, F>,
+        scan: &Scan,
+        j: usize,
+    ) -> Option<f64>
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        let (b, d) = (scan.b, scan.d);
+        if j <= b || j + 1 >= surface.len() {
+            return None;
         }
+        let r = (surface.height[j] + d) / (j - b) as f64;
+        let (mut sum_gh, mut sum_gk) = (0.0, 0.0);
+        for i in b + 1..j {
+            let k = (i - b) as f64;
+            let rise = surface.height[i] + d;
+            if rise < r * k {
+                return None;
+            }
+            let g = surface.unit_weight[i];
+            sum_gh += g * rise;
+            sum_gk += g * k;
+        }
+        let weight = scan.dx * (scan.base + sum_gh - r * sum_gk);
+        let tan_beta = r / scan.dx;
+        let band = Band::new(b, j, tan_beta, input.band_width, d, scan.dx);
+        let m = band.footprint(&surface.height);
+        let sum = |i: usize| {
+            [
+                surface.friction[i],
+                surface.dilation[i],
+                surface.accumulated_shear[i],
+            ]
+        };
+        let total = (j - m..=j)
+            .map(sum)
+            .fold([0.0; 3], |a, v| [a[0] + v[0], a[1] + v[1], a[2] + v[2]]);
+        let angles = (input.angles)(window_angles(total, [0.0; 3], m));
+        let force = weight * (input.factor)(angles, tan_beta).at(tan_beta)?;
+        Some(force)
+    }
+
+    /// Candidates on undisturbed flat ground from node j0 on, in blocks.
+    fn far_field<A, F>(
+        &mut self,
+        ground_unit_weight: f64,
+        input: &SearchInput<A, F>,
+        scan: &mut Scan,
+        j0: usize,
+        max_nodes: usize,
+    ) where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        let far = FarField::new(scan, ground_unit_weight, j0 - scan.b);
+        let fresh = (input.angles)(input.fresh);
+        let mut n1 = far.first_admissible(scan.r_min);
+        while scan.b + n1 < max_nodes {
+            if scan.beyond_reach(far.weight(n1), input.min_factor) {
+                return;
+            }
+            let n2 = n1 + (n1 / 16).max(64) - 1;
+            let t2 = far.tan_beta(n2);
+            let f2 = (input.factor)(fresh, t2).at(t2);
+            if f2.is_some_and(|f2| far.weight(n1) * f2 <= scan.bar) {
+                for n in n1..=n2 {
+                    let weight = far.weight(n);
+                    if scan.beyond_reach(weight, input.min_factor) {
+                        return;
+                    }
+                    self.evaluations += 1;
+                    self.consider(input, scan, scan.b + n, far.tan_beta(n), weight, fresh);
+                }
+            }
+            n1 = n2 + 1;
+        }
+    }
+}
+
+/// Eq. (1) at the least friction angle seen so far: a lower bound of P/W,
+/// with the face friction of a rising block above `sinking_below`.
+struct Lower {
+    rising: ForceFactor,
+    sinking: ForceFactor,
+}
+
+impl Lower {
+    fn new<A, F>(phi: f64, input: &SearchInput<A, F>) -> Self
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        Lower {
+            rising: ForceFactor::new(phi, input.wall_friction),
+            sinking: ForceFactor::new(phi, -input.wall_friction),
+        }
+    }
+
+    fn at<A, F>(&self, tan_beta: f64, input: &SearchInput<A, F>) -> &ForceFactor
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        if tan_beta > input.sinking_below {
+            &self.rising
+        } else {
+            &self.sinking
+        }
+    }
+}
+
+/// Candidates on undisturbed flat ground (y = 0, unit weight γ0) from
+/// n_s = j0 − b on: with the running sums S over the nodes before j0,
+/// W(n) = Δx [½ γ_b (y_b + d) + S_gh + γ0 d (n − n_s)
+///            − (d/n) (S_gk + γ0 Σ_{k=n_s}^{n−1} k)].
+struct FarField {
+    d: f64,
+    dx: f64,
+    base: f64,
+    sum_gh: f64,
+    sum_gk: f64,
+    gamma: f64,
+    start: usize,
+}
+
+impl FarField {
+    fn new(scan: &Scan, gamma: f64, start: usize) -> Self {
+        FarField {
+            d: scan.d,
+            dx: scan.dx,
+            base: scan.base,
+            sum_gh: scan.sum_gh,
+            sum_gk: scan.sum_gk,
+            gamma,
+            start,
+        }
+    }
+
+    fn weight(&self, n: usize) -> f64 {
+        let s = self.start;
+        let ahead = (n - s) as f64;
+        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64;
+        let r = self.d / n as f64;
+        self.dx
+            * (self.base + self.sum_gh + self.gamma * self.d * ahead
+                - r * (self.sum_gk + self.gamma * triangle))
+    }
+
+    fn tan_beta(&self, n: usize) -> f64 {
+        (self.d / n as f64) / self.dx
+    }
+
+    /// First n ≥ n_s whose line passes below every node before it.
+    fn first_admissible(&self, r_min: f64) -> usize {
+        let admissible = |n: usize| self.d <= r_min * n as f64;
+        let mut n = if r_min.is_finite() {
+            ((self.d / r_min).ceil() as usize).max(self.start)
+        } else {
+            self.start
+        };
+        while n > self.start && admissible(n - 1) {
+            n -= 1;
+        }
+        while !admissible(n) {
+            n += 1;
+        }
+        n
+    }
+}
+
+/// Whether candidate j and everything beyond lies on undisturbed flat ground
+/// with a footprint (and its secant window) that does not reach disturbed
+/// nodes.
+fn far_field_from<A, F>(surface: &Surface, input: &SearchInput<A, F>, j: usize) -> bool
+where
+    A: Fn(BandAngles) -> BandAngles,
+    F: Fn(BandAngles, f64) -> ForceFactor,
+{
+    let undisturbed = surface.pristine_from;
+    if j < undisturbed {
+        return false;
+    }
+    let dx = surface.spacing;
+    let tan_beta = (input.depth / (j - input.blade) as f64) / dx;
+    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt();
+    let footprint = thickness / tan_beta / dx + 2.0;
+    (j - undisturbed) as f64 > footprint
+}
+
+fn node_angles(surface: &Surface, j: usize) -> BandAngles {
+    BandAngles {
+        friction: surface.friction[j],
+        dilation: surface.dilation[j],
+        shear: surface.accumulated_shear[j],
+        fresh: surface.accumulated_shear[j] == 0.0,
+    }
+}
+
+/// Mean angles of the m + 1 nodes whose sums are `hi − lo`.
+fn window_angles(hi: [f64; 3], lo: [f64; 3], m: usize) -> BandAngles {
+    let n = (m + 1) as f64;
+    BandAngles {
+        friction: (hi[0] - lo[0]) / n,
+        dilation: (hi[1] - lo[1]) / n,
+        shear: (hi[2] - lo[2]) / n,
+        fresh: hi[2] - lo[2] == 0.0,
     }
 }

@@ -91,6 +91,10 @@ struct Laws {
     fresh_sinking: ForceFactor,
     /// Lower bound of P/W over every admissible mechanism.
     min_factor: f64,
+    /// tan β below which some band may sink (β + ψ ≤ 0).
+    sinking_below: f64,
+    /// Band angles of undisturbed soil.
+    fresh: BandAngles,
 }
 
 impl Laws {
@@ -111,6 +115,13 @@ impl Laws {
             fresh_rising: ForceFactor::new(phi0, wall_friction),
             fresh_sinking: ForceFactor::new(phi0, -wall_friction),
             min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
+            sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
+            fresh: BandAngles {
+                friction: phi0,
+                dilation: material.dilation.at(0.0),
+                shear: 0.0,
+                fresh: true,
+            },
             material,
             wall_friction,
         }
@@ -254,11 +265,20 @@ impl Simulation {
             depth: d,
             band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
+            wall_friction: laws.wall_friction,
+            sinking_below: laws.sinking_below,
+            fresh: laws.fresh,
             factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
         };
         let max_nodes = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
-        self.search.run(&mut self.surface, &input, max_nodes)
+        let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
+        // A band far out on undisturbed ground needs its nodes (and one more).
+        let missing = (choice.node + 2).saturating_sub(self.surface.len());
+        if missing > 0 {
+            self.surface.grow(missing.max(input.grow_nodes));
+        }
+        Some(choice)
     }
 
     /// Advances the blade by one increment.
@@ -284,10 +304,18 @@ impl Simulation {
             .apply(&mut self.surface, &band, &choice, c.choices);
         self.laws
             .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
+        self.surface.disturb(j + 1);
         self.done += 1;
-        let moved = self
-            .avalanche
-            .relax(&mut self.surface, self.done, self.tan_repose);
+        // Slopes changed only at the face and around the band.
+        let face = self.done..self.done + 3;
+        let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
+        let moved = self.avalanche.relax(
+            &mut self.surface,
+            self.done,
+            self.tan_repose,
+            &[face, band_nodes],
+        );
+        self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
         let c = &self.case;
         // Face friction opposes the block's motion along the face.

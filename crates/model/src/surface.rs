@@ -31,6 +31,8 @@ pub struct Surface {
     pub dilation: Vec<f64>,
     /// φ and ψ of fresh soil (ut = 0), for appended ground.
     fresh_angles: (f64, f64),
+    /// Nodes from here on are undisturbed flat ground (y = 0, ut = 0, γ0).
+    pub pristine_from: usize,
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
     appended_mass: f64,
@@ -56,6 +58,7 @@ impl Surface {
             friction: vec![fresh_angles.0; nodes],
             dilation: vec![fresh_angles.1; nodes],
             fresh_angles,
+            pristine_from: 0,
             appended_mass: 0.0,
         }
     }
@@ -84,6 +87,11 @@ impl Surface {
         self.dilation.resize(n, self.fresh_angles.1);
         self.appended_mass +=
             self.ground_unit_weight * (0.0 - self.floor) * self.spacing * nodes as f64;
+    }
+
+    /// Records that nodes before `end` may have changed.
+    pub fn disturb(&mut self, end: usize) {
+        self.pristine_from = self.pristine_from.max(end);
     }
 
     /// Trapezoid weight of node i among the nodes from `first` to the end.
