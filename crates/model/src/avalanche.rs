@@ -109,23 +109,20 @@ impl Avalanche {
         touched: &mut Range<usize>,
     ) -> bool {
         while self.widen(surface, first, s, sign) {}
-        let mut moved = false;
-        for k in 0..self.windows.len() {
-            self.pool(surface, first, s, sign, self.windows[k].clone());
-            moved |= self.apply(surface, first, s, sign, touched);
-        }
-        moved
+        self.apply(surface, first, s, sign, touched)
     }
 
-    /// Widens the first window whose pooling runs into its edge (it may
-    /// continue beyond it) and returns true; false once none does. Nothing is
-    /// levelled before every window is settled, so the pools are those of a
-    /// pass over the whole domain.
+    /// Pools every window; where pooling runs into a window's edge (it may
+    /// continue beyond it) widens that window and returns true; false once
+    /// no window does. Nothing is levelled before every window is settled,
+    /// so the pools are those of a pass over the whole domain.
     fn widen(&mut self, surface: &Surface, first: usize, s: f64, sign: f64) -> bool {
+        self.pools.clear();
         for k in 0..self.windows.len() {
             let window = self.windows[k].clone();
+            let start = self.pools.len();
             self.pool(surface, first, s, sign, window.clone());
-            let open_lo = window.start > first && self.pools[0].len > 1;
+            let open_lo = window.start > first && self.pools[start].len > 1;
             let open_hi =
                 window.end < surface.len() && self.pools.last().is_some_and(|p| p.len > 1);
             if open_lo || open_hi {
@@ -150,7 +147,7 @@ impl Avalanche {
 
     /// The pools of the nodes in `window` (PAVA with a stack).
     fn pool(&mut self, surface: &Surface, first: usize, s: f64, sign: f64, window: Range<usize>) {
-        self.pools.clear();
+        let bottom = self.pools.len();
         let tolerance = SLOPE_TOLERANCE * s;
         for i in window {
             let w = surface.node_weight(i, first);
@@ -161,7 +158,7 @@ impl Avalanche {
                 weight: w,
                 weighted: w * g,
             });
-            while self.pools.len() >= 2 {
+            while self.pools.len() >= bottom + 2 {
                 let top = self.pools[self.pools.len() - 1];
                 let below = self.pools[self.pools.len() - 2];
                 if below.mean() <= top.mean() + tolerance {

@@ -93,14 +93,32 @@ impl Band {
             return 0;
         }
         let reach = j - b;
-        let flat = ((self.thickness / self.tan_beta) / self.spacing).round() as usize;
+        // The rise of the lower boundary per node is r = Δx tan β.
+        let r = self.spacing * self.tan_beta;
+        let flat = round_to_nodes(self.thickness / r);
         let m0 = flat.clamp(1, reach);
-        let slope = (height[j] - height[j - m0]) / (m0 as f64 * self.spacing);
-        let opening = self.tan_beta - slope;
+        // e / ((tan β − s) Δx) with s = (y_j − y_{j−m0}) / (m0 Δx).
+        let opening = r * m0 as f64 - (height[j] - height[j - m0]);
         if opening <= 0.0 {
             return reach;
         }
-        (((self.thickness / opening) / self.spacing) as usize).min(reach)
+        let m = self.thickness * m0 as f64 / opening;
+        if m >= reach as f64 {
+            reach
+        } else {
+            m as usize
+        }
+    }
+}
+
+/// Nearest whole number of nodes (ties to even) for 0 ≤ x, without a libm
+/// call: adding and subtracting 1.5 · 2⁵² rounds.
+fn round_to_nodes(x: f64) -> usize {
+    const ROUNDING: f64 = 6_755_399_441_055_744.0;
+    if x >= 1e15 {
+        usize::MAX
+    } else {
+        ((x + ROUNDING) - ROUNDING) as usize
     }
 }
 

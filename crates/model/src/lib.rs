@@ -16,6 +16,7 @@ pub mod search;
 pub mod simulation;
 pub mod summary;
 pub mod surface;
+pub mod trig;
 
 pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,

@@ -38,6 +38,18 @@ impl ForceFactor {
         }
     }
 
+    /// The same from sin φ, cos φ and sin φw, cos φw: no trigonometry.
+    #[inline]
+    pub fn from_sin_cos(phi: (f64, f64), wall: (f64, f64)) -> Self {
+        let ((sin_phi, cos_phi), (sin_w, cos_w)) = (phi, wall);
+        ForceFactor {
+            cos_phi,
+            sin_phi,
+            cos_phi_w: cos_phi * cos_w - sin_phi * sin_w,
+            sin_phi_w: sin_phi * cos_w + cos_phi * sin_w,
+        }
+    }
+
     /// P / W at t = tan β, or `None` if the mechanism is not admissible.
     #[inline]
     pub fn at(&self, t: f64) -> Option<f64> {
@@ -79,6 +91,17 @@ mod tests {
             let ours = f.at(beta.tan()).unwrap();
             assert!((ours - tan_form).abs() < 1e-12 * tan_form);
             assert!((ours - sin_form).abs() < 1e-12 * sin_form);
+        }
+    }
+
+    #[test]
+    fn from_sin_cos_matches_new() {
+        let (phi, w) = (31f64.to_radians(), -7f64.to_radians());
+        let a = ForceFactor::new(phi, w);
+        let b = ForceFactor::from_sin_cos(phi.sin_cos(), w.sin_cos());
+        for t in [0.1, 0.5, 1.0] {
+            let (x, y) = (a.at(t).unwrap(), b.at(t).unwrap());
+            assert!((x - y).abs() < 1e-14 * x);
         }
     }
 

@@ -261,6 +261,9 @@ impl Search {
     {
         if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
             let force = weight * f;
+            if force > scan.bar {
+                return;
+            }
             scan.improve(force);
             self.admissible.push(Choice {
                 node: j,

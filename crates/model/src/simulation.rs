@@ -13,6 +13,7 @@ use crate::material::Material;
 use crate::mechanism::ForceFactor;
 use crate::search::{BandAngles, Choice, Search, SearchInput};
 use crate::surface::Surface;
+use crate::trig;
 use std::fmt;
 
 /// Depths the domain grows by when the search reaches its end.
@@ -93,6 +94,8 @@ struct Laws {
     min_factor: f64,
     /// tan β below which some band may sink (β + ψ ≤ 0).
     sinking_below: f64,
+    /// (sin φw, cos φw).
+    wall_sin_cos: (f64, f64),
     /// Band angles of undisturbed soil.
     fresh: BandAngles,
 }
@@ -116,6 +119,7 @@ impl Laws {
             fresh_sinking: ForceFactor::new(phi0, -wall_friction),
             min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
             sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
+            wall_sin_cos: wall_friction.sin_cos(),
             fresh: BandAngles {
                 friction: phi0,
                 dilation: material.dilation.at(0.0),
@@ -129,12 +133,23 @@ impl Laws {
 
     /// Eq. (1) coefficients for a candidate band at tan β.
     fn factor(&self, angles: BandAngles, tan_beta: f64) -> ForceFactor {
-        let rising = tan_beta + angles.dilation.tan() > 0.0;
+        let rising = tan_beta > self.sinking_below || {
+            // tan β + tan ψ > 0, multiplied by cos ψ > 0.
+            let (sin_psi, cos_psi) = trig::sin_cos(angles.dilation);
+            tan_beta * cos_psi + sin_psi > 0.0
+        };
         match (angles.fresh, rising) {
             (true, true) => self.fresh_rising,
             (true, false) => self.fresh_sinking,
-            (false, true) => ForceFactor::new(angles.friction, self.wall_friction),
-            (false, false) => ForceFactor::new(angles.friction, -self.wall_friction),
+            (false, rising) => {
+                let (sin_w, cos_w) = self.wall_sin_cos;
+                let wall = if rising {
+                    (sin_w, cos_w)
+                } else {
+                    (-sin_w, cos_w)
+                };
+                ForceFactor::from_sin_cos(trig::sin_cos(angles.friction), wall)
+            }
         }
     }
 
@@ -319,7 +334,8 @@ impl Simulation {
         self.laws.refresh_angles(&mut self.surface, moved);
         let c = &self.case;
         // Face friction opposes the block's motion along the face.
-        let rising = choice.tan_beta + choice.dilation.tan() > 0.0;
+        let (sin_psi, cos_psi) = trig::sin_cos(choice.dilation);
+        let rising = choice.tan_beta * cos_psi + sin_psi > 0.0;
         let wall = if rising { 1.0 } else { -1.0 } * self.laws.wall_friction;
         let (cos_w, sin_w) = (wall.cos(), wall.sin());
         Ok(StepRecord {

@@ -118,9 +118,18 @@ impl Surface {
     /// Weight of soil in front of the blade at node `first`, counting only
     /// the ground that existed at the start.
     pub fn mass(&self, first: usize) -> f64 {
-        compensated_sum(
-            (first..self.len()).map(|i| self.unit_weight[i] * self.column_area(i, first)),
-        ) - self.appended_mass
+        let undisturbed = self.pristine_from.clamp(first, self.len());
+        let disturbed =
+            (first..undisturbed).map(|i| self.unit_weight[i] * self.column_area(i, first));
+        // Undisturbed columns, γ0 d Δx each (half at the ends), in closed form.
+        let whole = (self.len() - undisturbed) as f64;
+        let halves = [first, self.len() - 1]
+            .iter()
+            .filter(|&&i| i >= undisturbed)
+            .count() as f64;
+        let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
+        let pristine = column * (whole - 0.5 * halves.min(whole));
+        compensated_sum(disturbed.chain([pristine, -self.appended_mass]))
     }
 }
 
