@@ -76,6 +76,45 @@ impl ForceFactor {
     }
 }
 
+/// Eq. (1) coefficients on a grid of friction angles, for a cheap lower
+/// bound: P/W grows with φ, so the entry at or below φ bounds it from below.
+#[derive(Clone, Debug)]
+pub struct FactorTable {
+    /// (+φw, −φw) at φ = k STEP.
+    entries: Vec<(ForceFactor, ForceFactor)>,
+}
+
+impl FactorTable {
+    const STEP: f64 = 0.1 * std::f64::consts::PI / 180.0;
+
+    pub fn new(wall_friction: f64) -> Self {
+        let n = (0.5 * std::f64::consts::PI / Self::STEP).ceil() as usize + 1;
+        let entries = (0..n)
+            .map(|k| {
+                let phi = k as f64 * Self::STEP;
+                (
+                    ForceFactor::new(phi, wall_friction),
+                    ForceFactor::new(phi, -wall_friction),
+                )
+            })
+            .collect();
+        FactorTable { entries }
+    }
+
+    /// A factor no larger than Eq. (1) at any φ' ≥ `phi` (radians, in
+    /// [0, π/2)), with +φw if `rising` and −φw otherwise.
+    #[inline]
+    pub fn below(&self, phi: f64, rising: bool) -> &ForceFactor {
+        let k = ((phi / Self::STEP) as usize).min(self.entries.len() - 1);
+        let entry = &self.entries[k];
+        if rising {
+            &entry.0
+        } else {
+            &entry.1
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -102,6 +141,25 @@ mod tests {
         for t in [0.1, 0.5, 1.0] {
             let (x, y) = (a.at(t).unwrap(), b.at(t).unwrap());
             assert!((x - y).abs() < 1e-14 * x);
+        }
+    }
+
+    #[test]
+    fn table_bounds_from_below() {
+        let w = 10f64.to_radians();
+        let table = FactorTable::new(w);
+        for deg in [12.34, 20.0, 33.333, 44.99] {
+            let phi = f64::to_radians(deg);
+            for t in [0.05, 0.4, 0.9] {
+                let exact = ForceFactor::new(phi, w).at(t).unwrap();
+                let low = table.below(phi, true).at(t).unwrap();
+                assert!(
+                    low <= exact && low > 0.99 * exact,
+                    "{deg} {t}: {low} {exact}"
+                );
+                let sinking = table.below(phi, false).at(t).unwrap();
+                assert!(sinking <= low);
+            }
         }
     }
 

@@ -38,7 +38,7 @@
 //! cannot flip the choice between near-equal mechanisms.
 
 use crate::band::Band;
-use crate::mechanism::ForceFactor;
+use crate::mechanism::{FactorTable, ForceFactor};
 use crate::surface::Surface;
 
 /// Relative force difference below which two candidates are equal.
@@ -108,6 +108,9 @@ where
     pub sinking_below: f64,
     /// Band angles of undisturbed ground.
     pub fresh: BandAngles,
+    /// Eq. (1) on a grid of friction angles (a lower bound before the
+    /// exact factor).
+    pub table: &'a FactorTable,
     /// The band's angles from the footprint means (the band-angle rule).
     pub angles: &'a A,
     /// Eq. (1) for a candidate's band angles at tan β.
@@ -243,8 +246,16 @@ impl Search {
     {
         self.evaluations += 1;
         let band = Band::new(scan.b, j, tan_beta, input.band_width, scan.d, scan.dx);
-        let angles = (input.angles)(self.band_angles(surface, &band));
-        self.consider(input, scan, j, tan_beta, weight, angles);
+        let angles = (input.angles)(self.band_angles(surface, &band, input.fresh));
+        let rising = tan_beta > input.sinking_below;
+        if angles.fresh
+            || input
+                .table
+                .below(angles.friction, rising)
+                .can_beat(weight, tan_beta, scan.bar)
+        {
+            self.consider(input, scan, j, tan_beta, weight, angles);
+        }
     }
 
     fn consider<A, F>(
@@ -287,15 +298,22 @@ impl Search {
 
     /// Mean angles over the band's footprint, nodes j − m ..= j (the prefix
     /// sums must cover the nodes before j).
-    fn band_angles(&mut self, surface: &Surface, band: &Band) -> BandAngles {
+    fn band_angles(&self, surface: &Surface, band: &Band, fresh: BandAngles) -> BandAngles {
         let (b, j) = (band.blade, band.emergence);
         let m = band.footprint(&surface.height);
         if m == 0 {
             return node_angles(surface, j);
         }
-        self.push_prefix(surface, j);
-        let hi = self.prefix.pop().expect("just pushed");
+        let before = self.prefix[j - b];
         let lo = self.prefix[j - m - b];
+        if before[2] == lo[2] && surface.accumulated_shear[j] == 0.0 {
+            return fresh;
+        }
+        let hi = [
+            before[0] + surface.friction[j],
+            before[1] + surface.dilation[j],
+            before[2] + surface.accumulated_shear[j],
+        ];
         window_angles(hi, lo, m)
     }
 

@@ -10,7 +10,7 @@ use crate::band::Band;
 use crate::case::{BandAngleRule, Case, CaseError};
 use crate::kinematics::Kinematics;
 use crate::material::Material;
-use crate::mechanism::ForceFactor;
+use crate::mechanism::{FactorTable, ForceFactor};
 use crate::search::{BandAngles, Choice, Search, SearchInput};
 use crate::surface::Surface;
 use crate::trig;
@@ -96,6 +96,8 @@ struct Laws {
     sinking_below: f64,
     /// (sin φw, cos φw).
     wall_sin_cos: (f64, f64),
+    /// Eq. (1) on a grid of friction angles, for the search's bounds.
+    table: FactorTable,
     /// Band angles of undisturbed soil.
     fresh: BandAngles,
 }
@@ -120,6 +122,7 @@ impl Laws {
             min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
             sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
             wall_sin_cos: wall_friction.sin_cos(),
+            table: FactorTable::new(wall_friction),
             fresh: BandAngles {
                 friction: phi0,
                 dilation: material.dilation.at(0.0),
@@ -283,6 +286,7 @@ impl Simulation {
             wall_friction: laws.wall_friction,
             sinking_below: laws.sinking_below,
             fresh: laws.fresh,
+            table: &laws.table,
             factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
         };
