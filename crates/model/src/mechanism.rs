@@ -153,10 +153,11 @@ mod tests {
             for t in [0.05, 0.4, 0.7] {
                 let exact = ForceFactor::new(phi, w).at(t).unwrap();
                 let low = table.below(phi, true).at(t).unwrap();
-                assert!(
-                    low <= exact && low > 0.99 * exact,
-                    "{deg} {t}: {low} {exact}"
-                );
+                assert!(low <= exact, "{deg} {t}: {low} {exact}");
+                // Tight away from β + φ + φw → 90°, where Eq. (1) blows up.
+                if deg + t.atan().to_degrees() + 10.0 < 80.0 {
+                    assert!(low > 0.99 * exact, "{deg} {t}: {low} {exact}");
+                }
                 let sinking = table.below(phi, false).at(t).unwrap();
                 assert!(sinking <= low);
             }
