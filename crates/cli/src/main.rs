@@ -5,12 +5,23 @@
 //! output folder, a case without an admissible mechanism), 1 anything else
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
+mod pictures;
+
 use clap::{Parser, Subcommand};
-use soilcut_io::{read_case, write_output_dir, LoadedCase, OutputError, Override, RunOutput};
-use soilcut_model::{Simulation, Summary};
+use indicatif::{ProgressBar, ProgressStyle};
+use pictures::PictureError;
+use soilcut_io::{
+    frames_csv, read_case, write_output_dir_then, LoadedCase, OutputError, Override, RunOutput,
+    SurfaceFrame,
+};
+use soilcut_model::{Simulation, StepRecord, Summary};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
+
+/// Surfaces captured during a run for the animation (evenly spaced).
+const FRAMES: usize = 120;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -21,7 +32,8 @@ Examples:
 const RUN_EXAMPLES: &str = "\
 Examples:
   soilcut run cases/paper/original.toml
-      writes out/original/{history.csv,profile.csv,summary.json,case.resolved.toml}
+      writes out/original/{history.csv,profile.csv,summary.json,case.resolved.toml,frames.csv},
+      out/original/plots/{force,beta,deformation}.{png,svg} and out/original/animation.gif
   soilcut run cases/paper/original.toml --set run.increment=0.02
   soilcut run cases/paper/original.toml --set run.travel=20 --out out/short --force";
 
@@ -29,6 +41,16 @@ const CHECK_EXAMPLES: &str = "\
 Examples:
   soilcut check cases/paper/original.toml
   soilcut check cases/paper/original.toml --set run.increment=0.02";
+
+const PLOT_EXAMPLES: &str = "\
+Examples:
+  soilcut plot out/original
+      redraws out/original/plots/{force,beta,deformation}.{png,svg} and out/original/animation.gif";
+
+const COMPARE_EXAMPLES: &str = "\
+Examples:
+  soilcut compare out/original out/fine
+  soilcut compare out/original out/fine --measured tests.csv --out fig7.svg";
 
 /// Soil cutting by sequential limit analysis (Jin & Hambleton).
 #[derive(Parser)]
@@ -54,6 +76,12 @@ enum Command {
         /// Replace the output folder if it exists and is not empty.
         #[arg(long)]
         force: bool,
+        /// Do not draw the pictures (plots/ and animation.gif); `soilcut plot` can draw them later.
+        #[arg(long)]
+        no_plots: bool,
+        /// No progress bar and no summary line.
+        #[arg(long, short)]
+        quiet: bool,
     },
     /// Read and validate a case without running it.
     #[command(after_help = CHECK_EXAMPLES)]
@@ -63,6 +91,27 @@ enum Command {
         /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+    },
+    /// Redraw the pictures of a finished run from its files (no simulation).
+    #[command(after_help = PLOT_EXAMPLES)]
+    Plot {
+        /// The run's output folder.
+        dir: PathBuf,
+    },
+    /// Overlay the force and β* curves of finished runs (paper Fig. 7).
+    #[command(after_help = COMPARE_EXAMPLES)]
+    Compare {
+        /// The runs' output folders; the legend shows each case's title.
+        #[arg(required = true, value_name = "OUTDIR")]
+        dirs: Vec<PathBuf>,
+        /// The picture to write, .png or .svg.
+        #[arg(long, value_name = "FILE", default_value = "compare.png")]
+        out: PathBuf,
+        /// A measured curve: CSV with columns u,force (u in the case's length
+        /// unit, force per unit width in γ·length²), normalised by the first
+        /// run's γ0 d².
+        #[arg(long, value_name = "FILE")]
+        measured: Option<PathBuf>,
     },
 }
 
@@ -94,6 +143,17 @@ impl Failure {
             message: e.to_string(),
         }
     }
+
+    fn picture(e: PictureError) -> Self {
+        match e {
+            PictureError::Read(e) => Failure::input(&e.path.clone(), e.message),
+            PictureError::Draw(e) => Failure {
+                code: 1,
+                path: e.path,
+                message: e.message,
+            },
+        }
+    }
 }
 
 fn main() -> ExitCode {
@@ -103,8 +163,16 @@ fn main() -> ExitCode {
             out,
             set,
             force,
-        } => run(&case, out, &set, force),
+            no_plots,
+            quiet,
+        } => run(&case, out, &set, force, !no_plots, quiet),
         Command::Check { case, set } => check(&case, &set),
+        Command::Plot { dir } => plot(&dir),
+        Command::Compare {
+            dirs,
+            out,
+            measured,
+        } => compare(&dirs, measured.as_deref(), &out),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -136,18 +204,25 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     Ok(())
 }
 
-fn run(path: &Path, out: Option<PathBuf>, set: &[String], force: bool) -> Result<(), Failure> {
+fn run(
+    path: &Path,
+    out: Option<PathBuf>,
+    set: &[String],
+    force: bool,
+    plots: bool,
+    quiet: bool,
+) -> Result<(), Failure> {
     let loaded = load(path, set)?;
     let case = &loaded.case;
     let out = out.unwrap_or_else(|| Path::new("out").join(&case.name));
     soilcut_io::check_output_dir(&out, force).map_err(Failure::output)?;
 
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
+    let bar = progress_bar(case.steps(), quiet);
     let start = Instant::now();
-    let history = sim
-        .run_to_end(|_| {})
-        .map_err(|e| Failure::input(path, e))?;
+    let (history, frames) = simulate(&mut sim, &bar).map_err(|e| Failure::input(path, e))?;
     let wall_time_s = start.elapsed().as_secs_f64();
+    bar.finish_and_clear();
     let summary = Summary::new(case, &history, sim.initial_mass());
     let output = RunOutput {
         loaded: &loaded,
@@ -157,7 +232,27 @@ fn run(path: &Path, out: Option<PathBuf>, set: &[String], force: bool) -> Result
         candidate_evaluations: sim.evaluations(),
         wall_time_s,
     };
-    write_output_dir(&out, &output.files(), force).map_err(Failure::output)?;
+    let mut files = output.files();
+    files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
+    write_output_dir_then(&out, &files, force, |staged| {
+        if plots {
+            pictures::draw_run_dir(staged).map_err(|e| {
+                let message = match e {
+                    PictureError::Read(e) => e.to_string(),
+                    PictureError::Draw(e) => e.message,
+                };
+                OutputError::Io {
+                    path: staged.to_path_buf(),
+                    source: std::io::Error::other(message),
+                }
+            })?;
+        }
+        Ok(())
+    })
+    .map_err(Failure::output)?;
+    if quiet {
+        return Ok(());
+    }
     println!(
         "{}: {} steps, max force_norm {:.4} at u/d = {:.3}, outputs in {}",
         case.name,
@@ -166,5 +261,62 @@ fn run(path: &Path, out: Option<PathBuf>, set: &[String], force: bool) -> Result
         summary.u_over_d_at_max,
         out.display()
     );
+    Ok(())
+}
+
+/// Runs the remaining increments, capturing [`FRAMES`] evenly spaced
+/// surfaces (the first before any increment, the last after all).
+fn simulate(
+    sim: &mut Simulation,
+    bar: &ProgressBar,
+) -> Result<(Vec<StepRecord>, Vec<SurfaceFrame>), soilcut_model::StepError> {
+    let total = sim.case().steps();
+    let n = FRAMES.min(total + 1).max(2);
+    let mut at: Vec<usize> = (0..n)
+        .map(|i| (i * total + (n - 1) / 2) / (n - 1))
+        .collect();
+    at.dedup();
+    let snapshot = |sim: &Simulation| SurfaceFrame {
+        step: sim.steps_done(),
+        u: sim.blade_position(),
+        surface: sim.profile(),
+    };
+    let mut frames = vec![snapshot(sim)];
+    let mut history = Vec::with_capacity(total);
+    let mut next = at.iter().skip(1).peekable();
+    while !sim.is_done() {
+        history.push(sim.step()?);
+        if next.next_if_eq(&&sim.steps_done()).is_some() {
+            frames.push(snapshot(sim));
+        }
+        bar.inc(1);
+    }
+    Ok((history, frames))
+}
+
+/// A progress bar on stderr, only if it is a terminal and not `quiet`.
+fn progress_bar(steps: usize, quiet: bool) -> ProgressBar {
+    if quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(steps as u64);
+    if let Ok(style) =
+        ProgressStyle::with_template("{bar:40} {pos}/{len} increments, {elapsed} (eta {eta})")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
+fn plot(dir: &Path) -> Result<(), Failure> {
+    let written = pictures::draw_run_dir(dir).map_err(Failure::picture)?;
+    println!("{}: {} pictures drawn", dir.display(), written.len());
+    Ok(())
+}
+
+fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<(), Failure> {
+    soilcut_plot::Format::of(out).map_err(|e| Failure::input(out, e.message))?;
+    pictures::compare(dirs, measured, out).map_err(Failure::picture)?;
+    println!("{}: {} runs compared", out.display(), dirs.len());
     Ok(())
 }

@@ -293,8 +293,11 @@ fn default_output_folder_and_result_line() {
     assert_eq!(
         files,
         [
+            "animation.gif",
             "case.resolved.toml",
+            "frames.csv",
             "history.csv",
+            "plots",
             "profile.csv",
             "summary.json"
         ]

@@ -6,18 +6,25 @@
 //! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
 //!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
 //! * [`read_measured`]: a measured force-displacement curve (`u,force`).
+//! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
+//!   reads a finished run's files back for drawing.
 
 mod case_file;
 mod error;
+mod finished;
 mod measured;
 mod output;
 mod overrides;
 
 pub use case_file::{parse_case, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
+pub use finished::{
+    frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
+    FRAME_ROWS,
+};
 pub use measured::{parse_measured, read_measured};
 pub use output::{
-    check_output_dir, peak_prominence_rule, write_output_dir, RunOutput, HISTORY_HEADER,
-    PROFILE_HEADER,
+    check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,
+    HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};

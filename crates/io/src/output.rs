@@ -202,6 +202,18 @@ pub fn write_output_dir(
     files: &[(&str, String)],
     force: bool,
 ) -> Result<(), OutputError> {
+    write_output_dir_then(dir, files, force, |_| Ok(()))
+}
+
+/// [`write_output_dir`], calling `finish` with the staging folder once
+/// `files` are in it and before it is renamed into place, so that files
+/// made from them (pictures) appear together with them or not at all.
+pub fn write_output_dir_then(
+    dir: &Path,
+    files: &[(&str, String)],
+    force: bool,
+    finish: impl FnOnce(&Path) -> Result<(), OutputError>,
+) -> Result<(), OutputError> {
     check_output_dir(dir, force)?;
     let parent = match dir.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
@@ -213,6 +225,7 @@ pub fn write_output_dir(
         let path = staging.path.join(name);
         fs::write(&path, contents).map_err(OutputError::io(&path))?;
     }
+    finish(&staging.path)?;
     staging.commit(dir)
 }
 

@@ -1,0 +1,252 @@
+//! Pictures: `soilcut run` draws them for every shipped case, `soilcut plot`
+//! redraws the same bytes, `--no-plots` leaves the results unchanged, and
+//! `soilcut compare` overlays runs.
+
+use std::fs;
+use std::io::Cursor;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const SHORT: [&str; 4] = ["--set", "run.travel=20", "--set", "run.increment=0.2"];
+
+/// Files every drawn run has, relative to its output folder.
+const PICTURES: [&str; 7] = [
+    "plots/force.png",
+    "plots/beta.png",
+    "plots/deformation.png",
+    "plots/force.svg",
+    "plots/beta.svg",
+    "plots/deformation.svg",
+    "animation.gif",
+];
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// Every case file under cases/, sorted.
+fn case_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "toml") {
+                out.push(path);
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(&workspace().join("cases"), &mut files);
+    files.sort();
+    files
+}
+
+fn soilcut(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_soilcut"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+fn assert_ok(o: &Output) {
+    assert!(
+        o.status.success(),
+        "{:?}: {}",
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+fn run_short(case: &Path, out: &Path, extra: &[&str]) {
+    let mut args = vec![
+        "run",
+        case.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend(SHORT);
+    args.extend(extra);
+    assert_ok(&soilcut(&args, out.parent().unwrap()));
+}
+
+fn assert_png(path: &Path) {
+    let bytes = fs::read(path).unwrap();
+    let mut reader = png::Decoder::new(Cursor::new(bytes))
+        .read_info()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut pixels).unwrap();
+    assert!(
+        info.width >= 800 && info.height >= 400,
+        "{}: {info:?}",
+        path.display()
+    );
+    assert!(
+        pixels.iter().any(|&p| p < 100),
+        "{}: something is drawn",
+        path.display()
+    );
+}
+
+fn assert_svg(path: &Path) {
+    let text = fs::read_to_string(path).unwrap();
+    let doc =
+        roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(doc.root_element().tag_name().name(), "svg");
+    let texts = doc.descendants().filter(|n| n.has_tag_name("text")).count();
+    assert!(texts > 5, "{}: axis labels are text", path.display());
+}
+
+/// Number of frames of a GIF, which must decode.
+fn gif_frames(path: &Path) -> usize {
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options.read_info(fs::File::open(path).unwrap()).unwrap();
+    let mut frames = 0;
+    while decoder.read_next_frame().unwrap().is_some() {
+        frames += 1;
+    }
+    frames
+}
+
+fn pictures(dir: &Path) -> Vec<Vec<u8>> {
+    PICTURES
+        .iter()
+        .map(|p| fs::read(dir.join(p)).unwrap())
+        .collect()
+}
+
+#[test]
+fn every_case_draws_valid_pictures_that_plot_redraws_and_that_change_nothing() {
+    let cases = case_files();
+    assert!(!cases.is_empty());
+    for case in cases {
+        let name = case.display().to_string();
+        let tmp = tempfile::tempdir().unwrap();
+        let out = tmp.path().join("drawn");
+        run_short(&case, &out, &[]);
+        for p in PICTURES {
+            let path = out.join(p);
+            assert!(fs::metadata(&path).unwrap().len() > 0, "{name}: {p}");
+            match path.extension().unwrap().to_str().unwrap() {
+                "png" => assert_png(&path),
+                "svg" => assert_svg(&path),
+                _ => {
+                    assert!(gif_frames(&path) > 1, "{name}: animated");
+                    assert!(
+                        fs::metadata(&path).unwrap().len() < 5 << 20,
+                        "{name}: < 5 MB"
+                    );
+                }
+            }
+        }
+        let frames = fs::read_to_string(out.join("frames.csv")).unwrap();
+        assert!(
+            frames.starts_with("frame,step,u,x,y,accumulated_shear\n"),
+            "{name}"
+        );
+
+        // `soilcut plot` redraws the same files from the run's files.
+        let drawn = pictures(&out);
+        for p in PICTURES {
+            fs::remove_file(out.join(p)).unwrap();
+        }
+        assert_ok(&soilcut(&["plot", out.to_str().unwrap()], tmp.path()));
+        let redrawn = pictures(&out);
+        for (i, p) in PICTURES.iter().enumerate() {
+            assert!(drawn[i] == redrawn[i], "{name}: {p} differs when redrawn");
+        }
+
+        // Drawing does not change the results.
+        let bare = tmp.path().join("bare");
+        run_short(&case, &bare, &["--no-plots"]);
+        assert!(!bare.join("plots").exists() && !bare.join("animation.gif").exists());
+        for file in ["history.csv", "profile.csv", "frames.csv"] {
+            assert!(
+                fs::read(out.join(file)).unwrap() == fs::read(bare.join(file)).unwrap(),
+                "{name}: {file} differs with --no-plots"
+            );
+        }
+    }
+}
+
+#[test]
+fn compare_overlays_runs_and_a_measured_curve() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/paper/original.toml");
+    let (a, b) = (tmp.path().join("a"), tmp.path().join("b"));
+    run_short(&case, &a, &["--no-plots"]);
+    run_short(&case, &b, &["--no-plots", "--set", "soil.friction.peak=38"]);
+    fs::write(
+        tmp.path().join("m.csv"),
+        "u,force\n0,1000\n10,1800\n20,2500\n",
+    )
+    .unwrap();
+    for out in ["cmp.png", "cmp.svg"] {
+        let o = soilcut(
+            &["compare", "a", "b", "--measured", "m.csv", "--out", out],
+            tmp.path(),
+        );
+        assert_ok(&o);
+        let path = tmp.path().join(out);
+        if out.ends_with(".png") {
+            assert_png(&path);
+        } else {
+            assert_svg(&path);
+            let text = fs::read_to_string(&path).unwrap();
+            assert!(
+                text.contains("measured (m.csv)"),
+                "legend names the measured file"
+            );
+            assert!(
+                text.contains("Original model"),
+                "legend names the runs' titles"
+            );
+        }
+    }
+    let o = soilcut(&["compare", "a", "--out", "cmp.pdf"], tmp.path());
+    assert_eq!(o.status.code(), Some(2), "only .png and .svg");
+    assert!(!tmp.path().join("cmp.pdf").exists());
+    let o = soilcut(&["compare", "a", "--measured", "nope.csv"], tmp.path());
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn plot_of_a_folder_without_a_run_is_bad_input() {
+    let tmp = tempfile::tempdir().unwrap();
+    let o = soilcut(&["plot", "."], tmp.path());
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.starts_with("error: ") && stderr.lines().count() == 1,
+        "{stderr}"
+    );
+}
+
+#[test]
+fn quiet_run_prints_nothing() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/paper/original.toml");
+    let out = tmp.path().join("q");
+    run_short(&case, &out, &["--no-plots", "--quiet"]);
+    let o = soilcut(
+        &[
+            "run",
+            case.to_str().unwrap(),
+            "--out",
+            "q2",
+            "--no-plots",
+            "--quiet",
+            "--set",
+            "run.travel=1",
+        ],
+        tmp.path(),
+    );
+    assert_ok(&o);
+    assert!(
+        o.stdout.is_empty() && o.stderr.is_empty(),
+        "no progress bar off a terminal"
+    );
+}

@@ -1,0 +1,372 @@
+//! The pattern of deformation (paper Figs. 4 and 6): ground, blade and the
+//! slip lines or shear bands of the run, with the accumulated shear below.
+
+use crate::render::{save, text, DrawResult, Picture};
+use crate::style::{
+    self, axes, curve, font, round_up, title_height, titled, top, viridis, Chart, Extent,
+    GroundPanel, Legend, Mark, Sizes, PAPER,
+};
+use crate::{Increment, PlotError, RunData, SurfacePoint};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::path::Path;
+
+/// Draws the pattern of deformation of a run. Top panel, to equal scales
+/// in x/d and y/d: the ground at the end of the run (filled), the blade at
+/// its final position, the initial ground line (dashed) and a readable
+/// subset of the chosen slip lines (original model) or shear bands of
+/// width dB (refined model, shaded between the lower boundary and the
+/// parallel upper one), each where it was when it was active: from the
+/// blade tip (u, −d) to its emergence point (cut at the right edge, 0.5 d
+/// beyond the ground that moved visibly), coloured by u/d (colour bar on
+/// the right). The subset is every increment whose emergence point
+/// jumped plus 24 evenly spaced ones. Bottom panel, sharing the x axis:
+/// the shear ut accumulated by the soil along the final surface, as ut/d.
+/// PNG or SVG by `path`'s extension, 1200 px wide, as tall as the ground
+/// needs.
+pub fn draw_deformation(run: &RunData, path: &Path) -> Result<(), PlotError> {
+    save(&Deformation::new(run), path)
+}
+
+const WIDTH: u32 = 1200;
+/// Width of the colour bar column.
+const BAR: u32 = 170;
+const MARGIN: u32 = 15;
+const Y_LABELS: u32 = 110;
+const X_LABELS: u32 = 78;
+/// Largest height of the ground's plotting area.
+const MAX_GROUND: f64 = 650.0;
+/// Height of the accumulated shear's plotting area.
+const SHEAR: u32 = 220;
+/// Evenly spaced slip lines drawn besides those of the jumps.
+const EVEN_BANDS: usize = 24;
+/// At most this many slip lines of jumps (evenly spaced among them).
+const MAX_JUMPS: usize = 40;
+
+pub(crate) const X_DESC: &str = "x/d (–)";
+pub(crate) const Y_DESC: &str = "y/d (–)";
+
+struct Deformation<'a> {
+    run: &'a RunData,
+    extent: Extent,
+    panel: GroundPanel,
+    bands: Vec<&'a Increment>,
+}
+
+impl<'a> Deformation<'a> {
+    fn new(run: &'a RunData) -> Self {
+        let extent = Extent::of(run, [run.profile.as_slice()]);
+        let sizes = (MARGIN, X_LABELS, Y_LABELS);
+        Deformation {
+            run,
+            extent,
+            panel: GroundPanel::new(extent, WIDTH - BAR, MAX_GROUND, sizes),
+            bands: chosen_bands(&run.history),
+        }
+    }
+
+    fn ground_height(&self) -> u32 {
+        self.panel.height()
+    }
+}
+
+/// Indices of the slip lines to draw: each increment whose emergence point
+/// differs from the previous one (at most [`MAX_JUMPS`], evenly spaced)
+/// and [`EVEN_BANDS`] evenly spaced increments, in order.
+fn chosen_bands(history: &[Increment]) -> Vec<&Increment> {
+    let n = history.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let jumps: Vec<usize> = (0..n)
+        .filter(|&i| i == 0 || history[i].x_emergence != history[i - 1].x_emergence)
+        .collect();
+    let mut chosen = evenly(&jumps, MAX_JUMPS);
+    let all: Vec<usize> = (0..n).collect();
+    chosen.extend(evenly(&all, EVEN_BANDS));
+    chosen.sort_unstable();
+    chosen.dedup();
+    chosen.into_iter().map(|i| &history[i]).collect()
+}
+
+/// At most `count` items of `items`, evenly spaced, first and last included.
+pub(crate) fn evenly<T: Copy>(items: &[T], count: usize) -> Vec<T> {
+    if items.len() <= count {
+        return items.to_vec();
+    }
+    let last = items.len() - 1;
+    let mut picked: Vec<usize> = (0..count)
+        .map(|k| (k * last + (count - 1) / 2) / (count - 1).max(1))
+        .collect();
+    picked.dedup();
+    picked.into_iter().map(|i| items[i]).collect()
+}
+
+impl Picture for Deformation<'_> {
+    fn size(&self) -> (u32, u32) {
+        let shear = 2 * MARGIN + SHEAR + X_LABELS;
+        let legend = self.legend().height();
+        (
+            WIDTH,
+            title_height(PAPER.title) + legend + self.ground_height() + shear,
+        )
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
+        root.fill(&WHITE).map_err(text)?;
+        let run = self.run;
+        let d = run.depth;
+        let area = titled(root, &run.title, PAPER.title)?;
+        let legend = self.legend();
+        let (legend_area, area) = area.split_vertically(legend.height());
+        legend.draw(&legend_area)?;
+        let (upper, lower) = area.split_vertically(self.ground_height());
+        let (ground_area, bar_area) = upper.split_horizontally(WIDTH - BAR);
+        let (shear_area, _) = lower.split_horizontally(WIDTH - BAR);
+        let u_max = round_up(top(run.history.iter().map(|h| h.u / d), 1.0));
+
+        let mut chart = self.panel.chart(&ground_area, self.extent.y)?;
+        axes(&mut chart, X_DESC, Y_DESC, PAPER)?;
+        let u_final = run.history.last().map_or(0.0, |h| h.u + run_increment(run));
+        draw_ground(&mut chart, &run.profile, u_final, d, self.extent)?;
+        for h in &self.bands {
+            let color = viridis(h.u / d / u_max);
+            draw_band(
+                &mut chart,
+                h,
+                self.extent.x.1,
+                d,
+                run.band_width,
+                color,
+                PAPER.line - 1,
+            )?;
+        }
+        draw_outline(&mut chart, &run.profile, u_final, d, self.extent, PAPER)?;
+        colour_bar(root, &bar_area, u_max, PAPER)?;
+
+        let shear: Vec<(f64, f64)> = run
+            .profile
+            .iter()
+            .map(|p| (p.x / d, p.accumulated_shear / d))
+            .filter(|p| p.0 <= self.extent.x.1)
+            .collect();
+        let shear_top = top(shear.iter().map(|p| p.1), 0.1) * 1.15;
+        let mut chart = self.panel.chart(&shear_area, (0.0, shear_top))?;
+        axes(&mut chart, X_DESC, "uₜ/d (–)", PAPER)?;
+        chart
+            .draw_series(stems(&chart, &shear).into_iter().map(|(x, top)| {
+                PathElement::new(vec![(x, 0.0), (x, top)], style::SHEAR.stroke_width(2))
+            }))
+            .map_err(text)?;
+        Ok(())
+    }
+}
+
+impl Deformation<'_> {
+    /// The legend above both panels.
+    fn legend(&self) -> Legend {
+        let what = if self.run.band_width > 0.0 {
+            "shear bands, coloured by u/d"
+        } else {
+            "slip lines, coloured by u/d"
+        };
+        let entries = vec![
+            ("initial ground".to_string(), Mark::Dashed(BLACK)),
+            ("ground surface".to_string(), Mark::Line(style::GROUND_EDGE)),
+            ("blade".to_string(), Mark::Block(style::BLADE)),
+            (what.to_string(), Mark::Line(viridis(0.5))),
+            (
+                "shear accumulated along the surface".to_string(),
+                Mark::Line(style::SHEAR),
+            ),
+        ];
+        Legend::new(entries, WIDTH - 60, PAPER)
+    }
+}
+
+/// For each pixel column of `points`: its first x and largest value, so
+/// that a one-pixel stem per column shows every spike however narrow.
+fn stems<'a, DB: DrawingBackend + 'a>(
+    chart: &Chart<'a, DB>,
+    points: &[(f64, f64)],
+) -> Vec<(f64, f64)> {
+    let mut out: Vec<(i32, (f64, f64))> = Vec::new();
+    for &(x, y) in points {
+        let column = chart.backend_coord(&(x, y)).0;
+        match out.last_mut() {
+            Some((c, stem)) if *c == column => stem.1 = stem.1.max(y),
+            _ => out.push((column, (x, y))),
+        }
+    }
+    out.into_iter().map(|(_, stem)| stem).collect()
+}
+
+/// The blade displacement of one increment, from the history (the face
+/// is one increment ahead of the last mechanism when the run ends).
+pub(crate) fn run_increment(run: &RunData) -> f64 {
+    match run.history.as_slice() {
+        [.., a, b] => b.u - a.u,
+        _ => 0.0,
+    }
+}
+
+/// The ground fill: the trench floor behind the blade and the soil in
+/// front of the face below `surface`.
+pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    surface: &[SurfacePoint],
+    u: f64,
+    d: f64,
+    ext: Extent,
+) -> DrawResult {
+    let face = u / d;
+    let floor = ext.y.0;
+    chart
+        .draw_series(std::iter::once(Rectangle::new(
+            [(ext.x.0, floor), (face, -1.0)],
+            style::GROUND.filled(),
+        )))
+        .map_err(text)?;
+    let mut outline = vec![(face, floor)];
+    outline.extend(visible(surface, d, ext));
+    let last_y = outline.last().map_or(0.0, |p| p.1);
+    outline.push((ext.x.1, last_y));
+    outline.push((ext.x.1, floor));
+    chart
+        .draw_series(std::iter::once(Polygon::new(
+            outline,
+            style::GROUND.filled(),
+        )))
+        .map_err(text)?;
+    chart
+        .draw_series(DashedLineSeries::new(
+            [(ext.x.0, 0.0), (ext.x.1, 0.0)],
+            12,
+            8,
+            BLACK.stroke_width(1),
+        ))
+        .map_err(text)?;
+    Ok(())
+}
+
+/// The surface line, the trench floor and the blade, drawn over the bands.
+pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    surface: &[SurfacePoint],
+    u: f64,
+    d: f64,
+    ext: Extent,
+    sizes: Sizes,
+) -> DrawResult {
+    let face = u / d;
+    let edge = style::GROUND_EDGE.stroke_width(sizes.line);
+    curve(
+        chart,
+        &visible(surface, d, ext),
+        style::GROUND_EDGE,
+        sizes.line,
+    )?;
+    chart
+        .draw_series(LineSeries::new([(ext.x.0, -1.0), (face, -1.0)], edge))
+        .map_err(text)?;
+    let thickness = 0.06 * ext.height().min(ext.width()).max(1.0) / 1.5;
+    chart
+        .draw_series(std::iter::once(Rectangle::new(
+            [(face - thickness, -1.0), (face, ext.y.1)],
+            style::BLADE.filled(),
+        )))
+        .map_err(text)?;
+    Ok(())
+}
+
+/// The surface points within the picture, in units of d.
+fn visible(surface: &[SurfacePoint], d: f64, ext: Extent) -> Vec<(f64, f64)> {
+    let mut points = Vec::new();
+    for p in surface {
+        points.push((p.x / d, p.y / d));
+        if p.x / d > ext.x.1 {
+            break;
+        }
+    }
+    points
+}
+
+/// The slip line of increment `h` from the blade tip to the emergence
+/// point; with `band_width` > 0 also the band's upper boundary, parallel
+/// and `band_width` above it (normal distance), and the band shaded; cut
+/// at `x_max` (in units of d).
+pub(crate) fn draw_band<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    h: &Increment,
+    x_max: f64,
+    d: f64,
+    band_width: f64,
+    color: RGBColor,
+    width: u32,
+) -> DrawResult {
+    let a = (h.u / d, -1.0);
+    let mut b = (h.x_emergence / d, h.y_emergence / d);
+    if b.0 > x_max && b.0 > a.0 {
+        b = (x_max, a.1 + (b.1 - a.1) * (x_max - a.0) / (b.0 - a.0));
+    }
+    if band_width > 0.0 && b.0 > a.0 {
+        let tan = (b.1 - a.1) / (b.0 - a.0);
+        let e = band_width / d * (1.0 + tan * tan).sqrt();
+        let upper = [(a.0, a.1 + e), (b.0, b.1 + e)];
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                vec![a, b, upper[1], upper[0]],
+                color.mix(0.15).filled(),
+            )))
+            .map_err(text)?;
+        chart
+            .draw_series(LineSeries::new(upper, color.stroke_width(width.max(1))))
+            .map_err(text)?;
+    }
+    chart
+        .draw_series(LineSeries::new([a, b], color.stroke_width(width.max(1))))
+        .map_err(text)?;
+    Ok(())
+}
+
+/// A vertical colour bar of u/d from 0 to `u_max`, aligned with the
+/// ground panel's plotting area.
+pub(crate) fn colour_bar<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    area: &DrawingArea<DB, Shift>,
+    u_max: f64,
+    sizes: Sizes,
+) -> DrawResult {
+    let mut chart = ChartBuilder::on(area)
+        .margin_top(MARGIN)
+        .margin_bottom(MARGIN + X_LABELS)
+        .margin_left(20)
+        .margin_right(10)
+        .right_y_label_area_size(sizes.tick * 3)
+        .build_cartesian_2d(0.0..1.0, 0.0..u_max)
+        .map_err(text)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_labels(6)
+        .y_label_formatter(&style::tick)
+        .label_style(font(sizes.tick))
+        .draw()
+        .map_err(text)?;
+    let n = 200;
+    chart
+        .draw_series((0..n).map(|i| {
+            let (t0, t1) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+            Rectangle::new(
+                [(0.0, t0 * u_max), (1.0, t1 * u_max)],
+                viridis((t0 + t1) / 2.0).filled(),
+            )
+        }))
+        .map_err(text)?;
+    let (x, y) = chart.backend_coord(&(0.5, 0.0));
+    let style = font(sizes.desc).pos(Pos::new(HPos::Center, VPos::Top));
+    root.draw(&Text::new("u/d (–)", (x + 10, y + 12), style))
+        .map_err(text)
+}

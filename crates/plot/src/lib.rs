@@ -1,0 +1,119 @@
+//! soilcut-plot: the pictures of a soilcut run, drawn from plain data.
+//!
+//! A pure drawing library: it reads nothing from disk and takes a run as
+//! [`RunData`] (the command line fills it from a run's output files).
+//! Every picture is deterministic: the same data gives byte-identical files.
+//!
+//! * [`draw_force`]: normalised blade force P/(γ0 d²) against u/d (paper Fig. 5a).
+//! * [`draw_beta`]: the slip-line angle β* in degrees against u/d (Fig. 5b).
+//! * [`draw_deformation`]: the pattern of deformation (Figs. 4 and 6).
+//! * [`draw_animation`]: an animated GIF of the cutting process.
+//! * [`draw_compare`]: force and β* of several runs overlaid (Fig. 7).
+//!
+//! Lengths are drawn divided by the blade depth d (the case's length unit
+//! is not stored with a run), so every axis is dimensionless.
+//!
+//! Text uses the bundled DejaVu Sans (`fonts/`), never system fonts; the SVG
+//! files name the generic family `sans-serif`.
+
+mod animation;
+mod curves;
+mod deformation;
+mod render;
+mod style;
+
+pub use animation::draw_animation;
+pub use curves::{draw_beta, draw_compare, draw_force};
+pub use deformation::draw_deformation;
+pub use render::{Format, PlotError};
+
+use std::path::{Path, PathBuf};
+
+/// One increment of a run (a row of `history.csv`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Increment {
+    /// Increment number, from 1.
+    pub step: usize,
+    /// Blade displacement u at which the mechanism was evaluated: the blade
+    /// tip was at (u, −d).
+    pub u: f64,
+    /// P*/(γ0 d²).
+    pub force_norm: f64,
+    /// β*, degrees.
+    pub beta_deg: f64,
+    /// Where the slip line (lower band boundary) met the surface.
+    pub x_emergence: f64,
+    pub y_emergence: f64,
+}
+
+/// A node of the ground surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfacePoint {
+    pub x: f64,
+    /// Height, 0 = undisturbed ground.
+    pub y: f64,
+    /// Accumulated shear ut (length).
+    pub accumulated_shear: f64,
+}
+
+/// The ground surface at one moment of the run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// Increments done (0 = flat ground before the first).
+    pub step: usize,
+    /// Blade position: the face is at x = u.
+    pub u: f64,
+    /// The surface from the face on.
+    pub surface: Vec<SurfacePoint>,
+}
+
+/// Everything the pictures of one run need.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RunData {
+    /// The case title, used as the pictures' title and legend entry.
+    pub title: String,
+    /// Blade depth d (length).
+    pub depth: f64,
+    /// Initial unit weight γ0 (to normalise measured forces).
+    pub unit_weight: f64,
+    /// Shear band width dB (length); 0 draws slip lines (original model).
+    pub band_width: f64,
+    /// The increments in order.
+    pub history: Vec<Increment>,
+    /// The final surface from the blade face on.
+    pub profile: Vec<SurfacePoint>,
+    /// Surfaces during the run, in order (for the animation).
+    pub frames: Vec<Frame>,
+}
+
+/// A measured force-displacement curve: (u, force per unit width), in the
+/// case's length unit and γ·length².
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Measured {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// The picture files of one run, written by [`draw_run`] into a folder.
+pub const RUN_PICTURES: [&str; 3] = ["force", "beta", "deformation"];
+
+/// Draws `force`, `beta` and `deformation`, each as PNG and SVG, into
+/// `dir` (created if needed). Returns the files written.
+pub fn draw_run(run: &RunData, dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    std::fs::create_dir_all(dir).map_err(|e| PlotError::new(dir, e))?;
+    let mut written = Vec::new();
+    type Draw = fn(&RunData, &Path) -> Result<(), PlotError>;
+    let pictures: [(&str, Draw); 3] = [
+        (RUN_PICTURES[0], draw_force),
+        (RUN_PICTURES[1], draw_beta),
+        (RUN_PICTURES[2], draw_deformation),
+    ];
+    for format in [Format::Png, Format::Svg] {
+        for (name, draw) in pictures {
+            let path = dir.join(format!("{name}.{}", format.extension()));
+            draw(run, &path)?;
+            written.push(path);
+        }
+    }
+    Ok(written)
+}
