@@ -6,6 +6,7 @@
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
 mod pictures;
+mod study_cmd;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -113,6 +114,15 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         measured: Option<PathBuf>,
     },
+    /// Run a case for many values of its keys (a grid or a Latin-hypercube sample), in parallel.
+    #[command(after_help = study_cmd::SWEEP_EXAMPLES)]
+    Sweep(study_cmd::SweepArgs),
+    /// Fit keys of a case to a measured force-displacement curve.
+    #[command(after_help = study_cmd::FIT_EXAMPLES)]
+    Fit(study_cmd::FitArgs),
+    /// Run a case with the increment halved level after level and report what converges.
+    #[command(after_help = study_cmd::CONVERGE_EXAMPLES)]
+    Converge(study_cmd::ConvergeArgs),
 }
 
 /// An error to print as `error: <path>: <message>` with its exit code.
@@ -173,6 +183,9 @@ fn main() -> ExitCode {
             out,
             measured,
         } => compare(&dirs, measured.as_deref(), &out),
+        Command::Sweep(args) => study_cmd::sweep(args),
+        Command::Fit(args) => study_cmd::fit(args),
+        Command::Converge(args) => study_cmd::converge(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -429,14 +429,33 @@ impl ConvergeResult {
             let v: Vec<String> = changes.iter().map(|row| f(row[i])).collect();
             let _ = writeln!(w, "| {name} | {} |", v.join(" | "));
         }
-        let _ = writeln!(w, "\n## Verdict\n");
-        for (name, verdict) in names.iter().zip(self.converged()) {
+        let _ = writeln!(
+            w,
+            "\nThe profile row is the RMS difference between the two levels' final surfaces over {PROFILE_REACH_DEPTHS} d ahead of the blade, relative to the finer level's pile height (the per-level table gives each level against the finest). Window rows give the largest change over the windows.\n"
+        );
+        let _ = writeln!(w, "## Verdict\n");
+        for (i, (name, verdict)) in names.iter().zip(self.converged()).enumerate() {
             let text = match verdict {
                 Some(true) => "converged",
                 Some(false) => "not converged",
                 None => "undetermined",
             };
-            let _ = writeln!(w, "- {name}: {text}");
+            let series: Vec<f64> = changes.iter().map(|row| row[i]).collect();
+            let last = series.last().map_or(String::new(), |c| {
+                format!(" ({:.2} % change at the finest step", c * 100.0)
+            });
+            let shrinking = if series.len() < 2 || last.is_empty() {
+                if last.is_empty() {
+                    ""
+                } else {
+                    ")"
+                }
+            } else if series.windows(2).all(|p| p[1] < p[0]) {
+                "; the change shrinks at every level)"
+            } else {
+                "; the change does not shrink at every level)"
+            };
+            let _ = writeln!(w, "- {name}: {text}{last}{shrinking}");
         }
         s
     }

@@ -31,6 +31,19 @@ const PANEL: (u32, u32) = (600, 420);
 /// Height of the title band.
 const TITLE_HEIGHT: u32 = 50;
 
+/// Series colours: the Okabe-Ito palette (told apart with colour-vision
+/// deficiencies), black last.
+const COLOURS: [RGBColor; 8] = [
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+    RGBColor(240, 228, 66),
+    RGBColor(0, 0, 0),
+];
+
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mark {
@@ -150,11 +163,13 @@ fn draw_panel<DB: DrawingBackend>(
         .light_line_style(RGBColor(235, 235, 235))
         .x_labels(6)
         .y_labels(6)
+        .x_label_formatter(&|x| tick(*x, x1 - x0))
+        .y_label_formatter(&|y| tick(*y, y1 - y0))
         .draw()
         .map_err(|e| text(&e))?;
     let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
     for (i, s) in panel.series.iter().enumerate() {
-        let colour = Palette99::pick(i).to_rgba();
+        let colour = COLOURS[i % COLOURS.len()];
         let points: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
         let drawn = match s.mark {
             Mark::Points => chart
@@ -183,6 +198,17 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A tick label on an axis spanning `span`: enough decimals to tell ticks
+/// apart, or scientific notation for very small or large spans.
+fn tick(value: f64, span: f64) -> String {
+    if !(1e-3..1e5).contains(&span) {
+        format!("{value:.2e}")
+    } else {
+        let decimals = (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize;
+        format!("{value:.decimals$}")
+    }
+}
+
 /// Encodes RGB pixels as PNG.
 fn png_bytes((w, h): (u32, u32), rgb: &[u8]) -> Result<Vec<u8>, String> {
     let mut out = Vec::new();
@@ -198,6 +224,14 @@ fn png_bytes((w, h): (u32, u32), rgb: &[u8]) -> Result<Vec<u8>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ticks_fit_the_span() {
+        assert_eq!(tick(32.5, 10.0), "32.5");
+        assert_eq!(tick(1.25, 0.5), "1.250");
+        assert_eq!(tick(2e-15, 4e-15), "2.00e-15");
+        assert_eq!(tick(1500.0, 2000.0), "1500");
+    }
 
     #[test]
     fn draws_a_deterministic_png() {

@@ -1,0 +1,180 @@
+//! `soilcut sweep`, `fit` and `converge` on a short, coarse case.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn refined() -> String {
+    workspace()
+        .join("crates/io/testdata/refined.toml")
+        .display()
+        .to_string()
+}
+
+fn soilcut(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_soilcut"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn ok(o: &Output) {
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+const SHORT: [&str; 4] = ["--set", "run.travel=10", "--set", "run.increment=1"];
+
+fn sweep(out: &Path, jobs: &str, extra: &[&str]) -> Output {
+    let case = refined();
+    let out = out.display().to_string();
+    let mut args = vec![
+        "sweep",
+        &case,
+        "--vary",
+        "soil.friction.peak=31:40",
+        "--vary",
+        "soil.friction.initial=20,33",
+        "--sample",
+        "lhs:6",
+        "--seed",
+        "4",
+        "--jobs",
+        jobs,
+        "--out",
+        &out,
+    ];
+    args.extend(SHORT);
+    args.extend(extra);
+    soilcut(&args)
+}
+
+#[test]
+fn sweep_files_do_not_depend_on_the_thread_count() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (a, b) = (tmp.path().join("a"), tmp.path().join("b"));
+    ok(&sweep(&a, "1", &[]));
+    ok(&sweep(&b, "2", &["--keep-runs"]));
+    for file in [
+        "sweep.csv",
+        "sweep-soil.friction.peak.png",
+        "sweep-soil.friction.initial.png",
+    ] {
+        assert_eq!(
+            std::fs::read(a.join(file)).unwrap(),
+            std::fs::read(b.join(file)).unwrap(),
+            "{file}"
+        );
+    }
+    let csv = std::fs::read_to_string(a.join("sweep.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 7);
+    // φc = 33° above φp for some draws: those runs are rows with errors.
+    let failed: Vec<&str> = csv.lines().filter(|l| l.contains(",failed,")).collect();
+    assert!(!failed.is_empty(), "{csv}");
+    assert!(failed
+        .iter()
+        .all(|l| l.contains("soil.friction.initial: must be <=")));
+    let kept = std::fs::read_dir(b.join("runs")).unwrap().count();
+    assert_eq!(kept, 6 - failed.len());
+    assert!(!a.join("runs").exists());
+    let o = sweep(&a, "1", &[]);
+    assert_eq!(o.status.code(), Some(2), "occupied output folder");
+    ok(&sweep(&a, "1", &["--force"]));
+    let leftovers = std::fs::read_dir(tmp.path()).unwrap().count();
+    assert_eq!(leftovers, 2, "no staging folders left behind");
+}
+
+#[test]
+fn bad_study_arguments_exit_2() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = refined();
+    let out = tmp.path().join("x").display().to_string();
+    for args in [
+        vec![
+            "sweep",
+            &case,
+            "--vary",
+            "soil.friction.peak=30:45",
+            "--out",
+            &out,
+        ],
+        vec![
+            "sweep",
+            &case,
+            "--vary",
+            "soil.friction.peak=a:b:c",
+            "--out",
+            &out,
+        ],
+        vec![
+            "sweep", &case, "--vary", "x=1,2", "--sample", "lhs:0", "--out", &out,
+        ],
+        vec!["converge", &case, "--levels", "0", "--out", &out],
+    ] {
+        let o = soilcut(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.starts_with("error: ") && err.lines().count() == 1,
+            "{err}"
+        );
+    }
+    assert!(!tmp.path().join("x").exists());
+}
+
+#[test]
+fn fit_and_converge_write_their_files() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = refined();
+    let truth = tmp.path().join("truth");
+    let mut args = vec!["run", &case, "--no-plots", "-q", "--out"];
+    let truth_s = truth.display().to_string();
+    args.push(&truth_s);
+    args.extend(SHORT);
+    ok(&soilcut(&args));
+    let measured = truth.join("history.csv").display().to_string();
+    let fit = |out: &Path, jobs: &str| {
+        let out = out.display().to_string();
+        let mut args = vec![
+            "fit",
+            &case,
+            "--measured",
+            &measured,
+            "--free",
+            "soil.friction.peak",
+            "--set",
+            "soil.friction.peak=38",
+            "--starts",
+            "2",
+            "--iterations",
+            "10",
+            "--jobs",
+            jobs,
+            "--out",
+            &out,
+        ];
+        args.extend(SHORT);
+        soilcut(&args)
+    };
+    let (a, b) = (tmp.path().join("fa"), tmp.path().join("fb"));
+    ok(&fit(&a, "1"));
+    ok(&fit(&b, "2"));
+    for file in ["fit.csv", "fit.md", "curves.csv", "best.toml", "fit.png"] {
+        assert_eq!(
+            std::fs::read(a.join(file)).unwrap(),
+            std::fs::read(b.join(file)).unwrap(),
+            "{file}"
+        );
+    }
+    let best = a.join("best.toml").display().to_string();
+    ok(&soilcut(&["check", &best]));
+    let c = tmp.path().join("c").display().to_string();
+    let mut args = vec!["converge", &case, "--levels", "2", "--out", &c];
+    args.extend(SHORT);
+    ok(&soilcut(&args));
+    let csv = std::fs::read_to_string(tmp.path().join("c/converge.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 3);
+    assert!(tmp.path().join("c/converge.png").exists());
+}
