@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Runs everything docs/reproduction.md reports, into out/repro/, and prints
+# the figures with docs/scripts/analyse.py. From the repository root:
+#   bash docs/scripts/reproduce.sh
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+cargo build --release -q -p soilcut
+soilcut=${CARGO_TARGET_DIR:-target}/release/soilcut
+out=out/repro
+mkdir -p "$out"
+run() { "$soilcut" run --quiet --no-plots --force "$@" >/dev/null; }
+
+# The shipped cases as they are.
+for case in original fig5 table1-hs table1-s fig8b; do
+  run "cases/paper/$case.toml" --out "$out/$case"
+done
+
+# MODEL.md's open choices, one at a time, on the three Table 1 / Fig 5 cases.
+for case in fig5 table1-hs table1-s; do
+  run "cases/paper/$case.toml" --out "$out/$case-angle-of-mean-shear" --set choices.band_angles=angle-of-mean-shear
+  run "cases/paper/$case.toml" --out "$out/$case-by-position" --set choices.band_shear=by-position
+  run "cases/paper/$case.toml" --out "$out/$case-per-node-formula" --set choices.unit_weight=per-node-formula
+done
+
+# Convergence: the shipped increment (d/500), half and double of it.
+for case in original fig5 table1-hs table1-s; do
+  d=$(grep -E '^depth' "cases/paper/$case.toml" | sed 's/[^0-9.]*\([0-9.]*\).*/\1/')
+  for per in 250 1000; do
+    run "cases/paper/$case.toml" --out "$out/$case-d$per" --set "run.increment=$(python3 -c "print($d/$per)")"
+  done
+done
+
+python3 docs/scripts/analyse.py "$out"/*
