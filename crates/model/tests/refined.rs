@@ -124,3 +124,21 @@ fn window_averaged_force_converges_when_the_increment_is_halved() {
         assert!(change < 0.02, "u/d in [{k}, {}): {a} vs {b}", k + 1);
     }
 }
+
+#[test]
+fn hardening_shears_continuously_softening_in_discrete_bands() {
+    let fraction = |which: &str| {
+        let case = common::refined(which, 5.0, 250.0);
+        let (history, sim) = common::run(&case);
+        let summary = Summary::new(&case, &history, sim.initial_mass());
+        let sheared = soilcut_model::summary::sheared_fraction(&case, &sim.profile());
+        (sheared, summary.band_jumps.len())
+    };
+    let (hs, hs_jumps) = fraction("table1-hs");
+    let (s, s_jumps) = fraction("table1-s");
+    assert!(hs > 3.0 * s, "sheared fraction HS {hs} vs S {s}");
+    assert!(
+        s_jumps <= 3 && hs_jumps > 50 * s_jumps,
+        "jumps HS {hs_jumps} vs S {s_jumps}"
+    );
+}
