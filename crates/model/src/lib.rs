@@ -5,6 +5,7 @@
 //! Start from a [`Case`], create a [`Simulation`] and call
 //! [`Simulation::step`] (or [`Simulation::run_to_end`]).
 
+pub mod analytic;
 pub mod avalanche;
 pub mod band;
 pub mod case;
