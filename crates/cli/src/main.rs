@@ -5,6 +5,7 @@
 //! output folder, a case without an admissible mechanism), 1 anything else
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
+mod analytic_cmd;
 mod pictures;
 mod study_cmd;
 
@@ -93,6 +94,15 @@ enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
     },
+    /// Print the analytical baselines (Rankine, Coulomb, FEE) for a case's initial flat ground.
+    #[command(after_help = analytic_cmd::EXAMPLES)]
+    Analytic {
+        /// The case file (TOML).
+        case: PathBuf,
+        /// Override a key of the case file, e.g. soil.cohesion=5 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
     /// Redraw the pictures of a finished run from its files (no simulation).
     #[command(after_help = PLOT_EXAMPLES)]
     Plot {
@@ -177,6 +187,9 @@ fn main() -> ExitCode {
             quiet,
         } => run(&case, out, &set, force, !no_plots, quiet),
         Command::Check { case, set } => check(&case, &set),
+        Command::Analytic { case, set } => load(&case, &set).map(|loaded| {
+            print!("{}", analytic_cmd::report(&loaded.case));
+        }),
         Command::Plot { dir } => plot(&dir),
         Command::Compare {
             dirs,
@@ -207,6 +220,8 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
 
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     let case = load(path, set)?.case;
+    case.validate_simulation()
+        .map_err(|e| Failure::input(path, e))?;
     println!(
         "ok: {}: name {}, model {}, {} steps",
         path.display(),

@@ -104,10 +104,17 @@ impl ChoicesFile {
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, expecting = "a table { depth, wall_friction }")]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table { depth, wall_friction, rake, adhesion }"
+)]
 struct BladeFile {
     depth: f64,
     wall_friction: f64,
+    #[serde(default)]
+    rake: Option<f64>,
+    #[serde(default)]
+    adhesion: Option<f64>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -128,6 +135,10 @@ struct SoilFile {
     band_width: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     band_width_d50: Option<f64>,
+    #[serde(default)]
+    cohesion: Option<f64>,
+    #[serde(default)]
+    surcharge: Option<f64>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -308,8 +319,12 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
 fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     check_name(&file.name)?;
     let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
+    let rake = *file.blade.rake.get_or_insert(90.0);
+    let adhesion = *file.blade.adhesion.get_or_insert(0.0);
     let soil = &mut file.soil;
     let repose = *soil.repose.get_or_insert(soil.friction.residual);
+    let cohesion = *soil.cohesion.get_or_insert(0.0);
+    let surcharge = *soil.surcharge.get_or_insert(0.0);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
@@ -341,6 +356,8 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         blade: Blade {
             depth: file.blade.depth,
             wall_friction: file.blade.wall_friction,
+            rake,
+            adhesion,
         },
         soil: Soil {
             unit_weight: soil.unit_weight,
@@ -354,6 +371,8 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             residual_shear: soil.residual_shear,
             repose,
             band_width,
+            cohesion,
+            surcharge,
         },
         run: Run {
             travel: file.run.travel,

@@ -6,6 +6,7 @@
 use crate::case_file::LoadedCase;
 use crate::error::OutputError;
 use serde::Serialize;
+use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::summary::{
     sheared_fraction, JUMP_DEPTHS, PEAK_PROMINENCE, SHEARED_REACH_DEPTHS, SHEARED_THRESHOLD,
 };
@@ -112,6 +113,8 @@ impl RunOutput<'_> {
             sheared_fraction: sheared_fraction(case, self.profile),
             sheared_fraction_rule: sheared_fraction_rule(),
             dilation_area: s.dilation_area,
+            simulated_initial_force: self.history.first().map_or(f64::NAN, |r| r.force),
+            baselines: BaselinesJson::of(case),
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
@@ -161,9 +164,64 @@ struct SummaryJson<'a> {
     sheared_fraction: f64,
     sheared_fraction_rule: String,
     dilation_area: f64,
+    simulated_initial_force: f64,
+    baselines: BaselinesJson,
     steps: usize,
     candidate_evaluations: u64,
     wall_time_s: f64,
+}
+
+/// The analytical baselines of the case's initial flat ground, beside the
+/// simulated first-increment force.
+#[derive(Serialize)]
+struct BaselinesJson {
+    rankine: BaselineJson,
+    coulomb: Option<BaselineJson>,
+    fee: Option<BaselineJson>,
+}
+
+#[derive(Serialize)]
+struct BaselineJson {
+    force: f64,
+    force_norm: f64,
+    force_h: f64,
+    force_v: f64,
+    failure_angle_deg: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    factors: Option<FactorsJson>,
+}
+
+#[derive(Serialize)]
+struct FactorsJson {
+    n_gamma: f64,
+    n_c: f64,
+    n_a: f64,
+    n_q: f64,
+}
+
+impl BaselinesJson {
+    fn of(case: &soilcut_model::Case) -> Self {
+        let wedge = Wedge::of_case(case);
+        let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+        let json = |b: Baseline| BaselineJson {
+            force: b.force,
+            force_norm: b.force / norm,
+            force_h: b.force_h,
+            force_v: b.force_v,
+            failure_angle_deg: b.failure_angle.to_degrees(),
+            factors: b.factors.map(|f| FactorsJson {
+                n_gamma: f.n_gamma,
+                n_c: f.n_c,
+                n_a: f.n_a,
+                n_q: f.n_q,
+            }),
+        };
+        BaselinesJson {
+            rankine: json(wedge.rankine()),
+            coulomb: wedge.coulomb().map(json),
+            fee: wedge.fee().map(json),
+        }
+    }
 }
 
 #[derive(Serialize)]

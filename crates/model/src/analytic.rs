@@ -73,6 +73,20 @@ pub struct Baseline {
 }
 
 impl Wedge {
+    /// The wedge of a case's initial flat ground (soil at zero shear).
+    pub fn of_case(case: &crate::Case) -> Self {
+        Wedge {
+            unit_weight: case.soil.unit_weight,
+            depth: case.blade.depth,
+            friction: case.soil.friction.initial.to_radians(),
+            wall_friction: case.blade.wall_friction.to_radians(),
+            rake: case.blade.rake.to_radians(),
+            cohesion: case.soil.cohesion,
+            adhesion: case.blade.adhesion,
+            surcharge: case.soil.surcharge,
+        }
+    }
+
     /// The FEE factors at failure angle β, if the wedge is admissible there
     /// (β > 0 and α + β + φ + φw < 180°).
     pub fn factors(&self, beta: f64) -> Option<Factors> {

@@ -62,6 +62,11 @@ pub struct Blade {
     pub depth: f64,
     /// φw: blade-soil friction angle, degrees.
     pub wall_friction: f64,
+    /// α: the face's angle from the horizontal on the soil side, degrees
+    /// (90: the paper's vertical blade; less: the face leans back).
+    pub rake: f64,
+    /// a: blade-soil adhesion (stress), on the face contact.
+    pub adhesion: f64,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -80,6 +85,10 @@ pub struct Soil {
     pub repose: f64,
     /// dB: shear band width (0 in the original model: a slip line).
     pub band_width: f64,
+    /// c: cohesion (stress) on the slip surface.
+    pub cohesion: f64,
+    /// q: surcharge pressure on the free surface.
+    pub surcharge: f64,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -231,7 +240,36 @@ impl Case {
         self.validate_friction()?;
         self.validate_wall_friction()?;
         self.validate_soil()?;
+        self.validate_loads()?;
         self.validate_run()
+    }
+
+    /// `validate` and what the simulation supports so far: a vertical blade.
+    pub fn validate_simulation(&self) -> Result<(), CaseError> {
+        self.validate()?;
+        if self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                "blade.rake",
+                format!(
+                    "the simulation supports only a vertical blade, 90° (got {}°); `soilcut analytic` takes 20°-90°",
+                    self.blade.rake
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_loads(&self) -> Result<(), CaseError> {
+        let rake = finite("blade.rake", self.blade.rake)?;
+        if !(20.0..=90.0).contains(&rake) {
+            return Err(CaseError::new(
+                "blade.rake",
+                format!("must be in [20°, 90°] (got {rake}°)"),
+            ));
+        }
+        non_negative("blade.adhesion", self.blade.adhesion)?;
+        non_negative("soil.cohesion", self.soil.cohesion)?;
+        non_negative("soil.surcharge", self.soil.surcharge)
     }
 
     fn validate_wall_friction(&self) -> Result<(), CaseError> {

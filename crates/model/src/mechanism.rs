@@ -61,6 +61,14 @@ impl ForceFactor {
         }
     }
 
+    /// The cohesion term of the vertical-blade equation per unit c L
+    /// (L the horizontal length of the block): c Ls cos φ / cos(β + φ + φw)
+    /// with Ls = L / cos β, i.e. (1 + t²) cos φ / (cos(φ + φw) − t sin(φ + φw)).
+    #[inline]
+    pub fn cohesion_at(&self, t: f64) -> f64 {
+        (1.0 + t * t) * self.cos_phi / (self.cos_phi_w - t * self.sin_phi_w)
+    }
+
     /// Whether W (P/W)(t) ≤ `bar` for an admissible t, division-free: false
     /// also where the mechanism is not admissible.
     #[inline]

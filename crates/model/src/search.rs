@@ -117,6 +117,36 @@ where
     pub factor: &'a F,
     /// Nodes appended when the scan needs more domain.
     pub grow_nodes: usize,
+    /// Loads beside the block's weight (all ≥ 0, so every bound on the
+    /// weight alone stays a bound).
+    pub loads: Loads,
+}
+
+/// What the extended equation adds to the block's weight for a vertical
+/// blade (`analytic` gives the general form):
+/// P = (W + q L + a Lb) (P/W)(β, φ) + c L (1 + tan²β) cos φ / cos(β + φ + φw),
+/// L the block's horizontal length, Lb = y_b + d the face contact.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Loads {
+    /// q: surcharge pressure on the free surface.
+    pub surcharge: f64,
+    /// a Lb: adhesion times the face contact length.
+    pub adhesion: f64,
+    /// c: cohesion on the slip surface.
+    pub cohesion: f64,
+}
+
+impl Loads {
+    /// P of a candidate of weight W and horizontal length L at tan β.
+    #[inline]
+    fn force(&self, factor: &ForceFactor, weight: f64, length: f64, t: f64) -> Option<f64> {
+        let f = factor.at(t)?;
+        let mut force = (weight + self.surcharge * length + self.adhesion) * f;
+        if self.cohesion > 0.0 {
+            force += self.cohesion * length * factor.cohesion_at(t);
+        }
+        Some(force)
+    }
 }
 
 /// The state of the outward scan over candidates.
@@ -270,8 +300,9 @@ impl Search {
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        if let Some(f) = (input.factor)(angles, tan_beta).at(tan_beta) {
-            let force = weight * f;
+        let factor = (input.factor)(angles, tan_beta);
+        let length = (j - scan.b) as f64 * scan.dx;
+        if let Some(force) = input.loads.force(&factor, weight, length, tan_beta) {
             if force > scan.bar {
                 return;
             }
@@ -361,7 +392,10 @@ impl Search {
             .map(sum)
             .fold([0.0; 3], |a, v| [a[0] + v[0], a[1] + v[1], a[2] + v[2]]);
         let angles = (input.angles)(window_angles(total, [0.0; 3], m));
-        let force = weight * (input.factor)(angles, tan_beta).at(tan_beta)?;
+        let factor = (input.factor)(angles, tan_beta);
+        let force = input
+            .loads
+            .force(&factor, weight, (j - b) as f64 * scan.dx, tan_beta)?;
         Some(force)
     }
 
@@ -386,8 +420,12 @@ impl Search {
             }
             let n2 = n1 + (n1 / 16).max(64) - 1;
             let t2 = far.tan_beta(n2);
-            let f2 = (input.factor)(fresh, t2).at(t2);
-            if f2.is_some_and(|f2| far.weight(n1) * f2 <= scan.bar) {
+            // Weight and length grow with n, P/W and the cohesion term
+            // with tan β: (n₁, β(n₂)) bounds the block from below.
+            let length = n1 as f64 * scan.dx;
+            let factor2 = (input.factor)(fresh, t2);
+            let bound = input.loads.force(&factor2, far.weight(n1), length, t2);
+            if bound.is_some_and(|p| p <= scan.bar) {
                 for n in n1..=n2 {
                     let weight = far.weight(n);
                     if scan.beyond_reach(weight, input.min_factor) {

@@ -11,7 +11,7 @@ use crate::case::{BandAngleRule, Case, CaseError};
 use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::mechanism::{FactorTable, ForceFactor};
-use crate::search::{BandAngles, Choice, Search, SearchInput};
+use crate::search::{BandAngles, Choice, Loads, Search, SearchInput};
 use crate::surface::Surface;
 use crate::trig;
 use std::fmt;
@@ -197,7 +197,7 @@ pub struct Simulation {
 impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
-        case.validate()?;
+        case.validate_simulation()?;
         let (d, dx) = (case.blade.depth, case.run.increment);
         let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
@@ -289,6 +289,11 @@ impl Simulation {
             table: &laws.table,
             factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
+            loads: Loads {
+                surcharge: self.case.soil.surcharge,
+                adhesion: self.case.blade.adhesion * (self.surface.height[self.done] + d),
+                cohesion: self.case.soil.cohesion,
+            },
         };
         let max_nodes = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;

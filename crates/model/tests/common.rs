@@ -14,6 +14,8 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
         blade: Blade {
             depth: d,
             wall_friction: 10.0,
+            rake: 90.0,
+            adhesion: 0.0,
         },
         soil: Soil {
             unit_weight: 1.0,
@@ -27,6 +29,8 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             residual_shear: 4.0,
             repose: 30.0,
             band_width: 0.0,
+            cohesion: 0.0,
+            surcharge: 0.0,
         },
         run: Run {
             travel: travel_depths * d,

@@ -57,3 +57,38 @@ fn error_shrinks_with_refinement() {
         "{coarse} {fine}"
     );
 }
+
+/// With cohesion, adhesion and a surcharge the first increment on flat
+/// ground is the least force of the trial wedge (FEE) for a vertical blade.
+#[test]
+fn cohesion_adhesion_and_surcharge_match_the_trial_wedge() {
+    for (c, a, q) in [
+        (2.0, 0.0, 0.0),
+        (0.0, 1.5, 0.0),
+        (0.0, 0.0, 3.0),
+        (1.0, 0.5, 2.0),
+    ] {
+        let mut case = common::original(0.05, 2000.0);
+        case.soil.friction = soilcut_model::AngleLaw::constant(30.0);
+        case.soil.cohesion = c;
+        case.blade.adhesion = a;
+        case.soil.surcharge = q;
+        let expected = soilcut_model::analytic::Wedge::of_case(&case)
+            .fee()
+            .unwrap();
+        let got = Simulation::new(&case).unwrap().step().unwrap();
+        let rel = (got.force - expected.force).abs() / expected.force;
+        assert!(
+            rel < 1e-4,
+            "c={c} a={a} q={q}: {} vs {}",
+            got.force,
+            expected.force
+        );
+        let beta = expected.failure_angle.to_degrees();
+        assert!(
+            (got.beta_deg - beta).abs() < 0.05,
+            "β* {} vs {beta}",
+            got.beta_deg
+        );
+    }
+}

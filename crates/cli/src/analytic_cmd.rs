@@ -1,0 +1,62 @@
+//! `soilcut analytic`: the analytical baselines of a case's initial flat
+//! ground, as a table on stdout.
+
+use soilcut_model::analytic::{Baseline, Wedge};
+use soilcut_model::Case;
+
+pub const EXAMPLES: &str = "\
+Examples:
+  soilcut analytic cases/paper/fig5.toml
+  soilcut analytic cases/tools/inclined.toml --set soil.cohesion=5";
+
+/// The table `soilcut analytic` prints.
+pub fn report(case: &Case) -> String {
+    let wedge = Wedge::of_case(case);
+    let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+    let mut out = format!(
+        "Analytic baselines for the initial flat ground of {} (forces per unit width)\n\
+         d = {}, γ0 = {}, φ = {}° (at zero shear), φw = {}°, α = {}°, c = {}, a = {}, q = {}\n\n\
+         {:<32} {:>12} {:>12} {:>12} {:>12} {:>10}\n",
+        case.name,
+        case.blade.depth,
+        case.soil.unit_weight,
+        case.soil.friction.initial,
+        case.blade.wall_friction,
+        case.blade.rake,
+        case.soil.cohesion,
+        case.blade.adhesion,
+        case.soil.surcharge,
+        "method",
+        "P",
+        "P/(γ0 d²)",
+        "horizontal",
+        "vertical",
+        "β* (°)",
+    );
+    let mut row = |name: &str, b: Option<Baseline>| match b {
+        Some(b) => out.push_str(&format!(
+            "{:<32} {:>12.6} {:>12.6} {:>12.6} {:>12.6} {:>10.3}\n",
+            name,
+            b.force,
+            b.force / norm,
+            b.force_h,
+            b.force_v,
+            b.failure_angle.to_degrees()
+        )),
+        None => out.push_str(&format!("{name:<32} no admissible wedge\n")),
+    };
+    row("Rankine (smooth vertical wall)", Some(wedge.rankine()));
+    row("Coulomb (trial wedge, c=a=q=0)", wedge.coulomb());
+    let fee = wedge.fee();
+    row("FEE (Reece; McKyes' factors)", fee);
+    if let Some(f) = fee.and_then(|b| b.factors) {
+        out.push_str(&format!(
+            "\nFEE factors at β*: Nγ = {:.6}, Nc = {:.6}, Na = {:.6}, Nq = {:.6}\n",
+            f.n_gamma, f.n_c, f.n_a, f.n_q
+        ));
+    }
+    out.push_str(
+        "\nvertical: the soil's force on the blade, positive upward; Rankine ignores φw, α and a.\n",
+    );
+    out
+}
