@@ -201,7 +201,9 @@ fn draw_panel<DB: DrawingBackend>(
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
 /// apart, or scientific notation for very small or large spans.
 fn tick(value: f64, span: f64) -> String {
-    if !(1e-3..1e5).contains(&span) {
+    if value.abs() < 1e-9 * span {
+        "0".to_string()
+    } else if !(1e-3..1e5).contains(&span) {
         format!("{value:.2e}")
     } else {
         let decimals = (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize;
@@ -231,6 +233,7 @@ mod tests {
         assert_eq!(tick(1.25, 0.5), "1.250");
         assert_eq!(tick(2e-15, 4e-15), "2.00e-15");
         assert_eq!(tick(1500.0, 2000.0), "1500");
+        assert_eq!(tick(-1.26e-29, 1e-13), "0");
     }
 
     #[test]
