@@ -47,8 +47,9 @@ pub struct Avalanche {
 }
 
 impl Avalanche {
-    /// Relaxes every slope steeper than `tan_repose` among the nodes from
-    /// `first` (the face) to the end of the domain, where slopes elsewhere
+    /// Relaxes every slope steeper than the angle of repose among the nodes
+    /// from `first` (the face) to the end of the domain, given as the
+    /// steepest grid slopes downhill and uphill (`slopes`), where slopes elsewhere
     /// are known to be at most the angle of repose: only the nodes in
     /// `changed` (and as far as pooling spreads from them) are visited;
     /// the result is that of passes over the whole domain. Returns the range
@@ -57,15 +58,15 @@ impl Avalanche {
         &mut self,
         surface: &mut Surface,
         first: usize,
-        tan_repose: f64,
+        slopes: (f64, f64),
         changed: &[Range<usize>],
     ) -> Range<usize> {
-        let s = surface.spacing * tan_repose;
+        let (down, up) = (surface.spacing * slopes.0, surface.spacing * slopes.1);
         self.set_windows(changed, first, surface.len());
         let mut touched = first..first;
         for _ in 0..MAX_PASSES {
-            let down = self.pass(surface, first, s, 1.0, &mut touched);
-            let up = self.pass(surface, first, s, -1.0, &mut touched);
+            let down = self.pass(surface, first, down, 1.0, &mut touched);
+            let up = self.pass(surface, first, up, -1.0, &mut touched);
             if !down && !up {
                 break;
             }

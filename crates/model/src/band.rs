@@ -15,10 +15,14 @@ pub struct Band {
     pub blade: usize,
     /// Emergence node j of the lower boundary.
     pub emergence: usize,
-    /// tan β.
+    /// Slope of the lower boundary on the grid (tan β, or its sheared value
+    /// for a raked blade: `Rake`).
     pub tan_beta: f64,
-    /// e = dB / cos β: vertical thickness of the band.
+    /// e: vertical thickness of the band on the grid (dB / cos β for a
+    /// vertical blade).
     pub thickness: f64,
+    /// dB: the band's width (normal to it).
+    pub width: f64,
     /// Blade tip depth d.
     pub depth: f64,
     /// Node spacing Δx.
@@ -26,19 +30,25 @@ pub struct Band {
 }
 
 impl Band {
+    /// The band of width dB whose lower boundary has slope `grid_slope` on
+    /// the grid and `tan_beta` physically (equal for a vertical blade; the
+    /// grid's vertical thickness is dB / cos β times their ratio).
     pub fn new(
         blade: usize,
         emergence: usize,
+        grid_slope: f64,
         tan_beta: f64,
         band_width: f64,
         depth: f64,
         spacing: f64,
     ) -> Self {
+        let stretch = grid_slope / tan_beta;
         Band {
             blade,
             emergence,
-            tan_beta,
-            thickness: band_width * (1.0 + tan_beta * tan_beta).sqrt(),
+            tan_beta: grid_slope,
+            thickness: band_width * (1.0 + tan_beta * tan_beta).sqrt() * stretch,
+            width: band_width,
             depth,
             spacing,
         }
@@ -148,7 +158,7 @@ mod tests {
         let dx = 1.0 / (n - 1) as f64;
         let height = vec![0.0; n + 5];
         let dband = 0.1;
-        let band = Band::new(0, n - 1, 1.0, dband, 1.0, dx);
+        let band = Band::new(0, n - 1, 1.0, 1.0, dband, 1.0, dx);
         let e = band.thickness;
         // Strip between y = x − 1 and y = x − 1 + e, below y = 0, x ∈ [0, 1]:
         // e·1 minus the triangle above y = 0 (legs e, e).
@@ -161,7 +171,7 @@ mod tests {
     #[test]
     fn slip_line_has_no_area_and_no_footprint() {
         let height = vec![0.0; 50];
-        let band = Band::new(0, 40, 0.5, 0.0, 1.0, 0.05);
+        let band = Band::new(0, 40, 0.5, 0.5, 0.0, 1.0, 0.05);
         assert_eq!(band.area_below(&height), 0.0);
         assert_eq!(band.footprint(&height), 0);
         assert_eq!(band.position(0.0, 40), 0.0);

@@ -244,15 +244,17 @@ impl Case {
         self.validate_run()
     }
 
-    /// `validate` and what the simulation supports so far: a vertical blade.
+    /// `validate` and what the simulation needs beyond the baselines.
     pub fn validate_simulation(&self) -> Result<(), CaseError> {
         self.validate()?;
-        if self.blade.rake != 90.0 {
+        // On the sheared grid of a raked blade, sand at repose must still
+        // slope down away from the face (θr < α).
+        if self.soil.repose >= self.blade.rake {
             return Err(CaseError::new(
-                "blade.rake",
+                "soil.repose",
                 format!(
-                    "the simulation supports only a vertical blade, 90° (got {}°); `soilcut analytic` takes 20°-90°",
-                    self.blade.rake
+                    "must be < blade.rake ({}°) (got {}°)",
+                    self.blade.rake, self.soil.repose
                 ),
             ));
         }
@@ -268,6 +270,17 @@ impl Case {
             ));
         }
         non_negative("blade.adhesion", self.blade.adhesion)?;
+        // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
+        // search's bounds rely on that.
+        let phi_min = self.soil.friction.min();
+        if self.blade.adhesion > 0.0 && rake + phi_min < 90.0 {
+            return Err(CaseError::new(
+                "blade.adhesion",
+                format!(
+                    "must be 0 unless blade.rake + every friction angle ≥ 90° (got {rake}° + {phi_min}°)"
+                ),
+            ));
+        }
         non_negative("soil.cohesion", self.soil.cohesion)?;
         non_negative("soil.surcharge", self.soil.surcharge)
     }

@@ -31,6 +31,7 @@
 
 use crate::band::Band;
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
+use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
 
@@ -64,18 +65,21 @@ impl Kinematics {
         band: &Band,
         choice: &Choice,
         choices: Choices,
+        rake: &Rake,
     ) -> Update {
         let mass_before = region_mass(surface, band.blade, band.emergence);
-        let update = match self.shear_band(surface, band, choice.dilation, choices.band_shear) {
-            Some(update) => update,
-            None => slide_block(surface, band.blade, choice),
-        };
+        let motion = BandMotion::new(choice, rake, surface.spacing);
+        let update =
+            match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
+                Some(update) => update,
+                None => slide_block(surface, band.blade, choice, rake),
+            };
         match choices.unit_weight {
             UnitWeightRule::BandUniform => {
                 conserve_mass(surface, band, update.first_band_node, mass_before)
             }
             UnitWeightRule::PerNodeFormula => {
-                let band_width = band.thickness / (1.0 + band.tan_beta.powi(2)).sqrt();
+                let band_width = band.width;
                 let strain = update.slip * choice.dilation.tan() / band_width;
                 if band_width > 0.0 && update.dilation_area != 0.0 {
                     for g in &mut surface.unit_weight[update.first_band_node..=band.emergence] {
@@ -93,22 +97,18 @@ impl Kinematics {
         &mut self,
         surface: &mut Surface,
         band: &Band,
-        psi: f64,
+        motion: BandMotion,
         rule: BandShearRule,
     ) -> Option<Update> {
         let (b, j, dx, t) = (band.blade, band.emergence, surface.spacing, band.tan_beta);
-        let e = band.thickness;
-        let rho = (t + psi.tan()) / (1.0 - t * psi.tan());
-        let rise = dx * rho;
-        if e == 0.0 || e + dx * (rho - t) < 0.0 || 1.0 - t * psi.tan() <= 0.0 {
+        let (e, rise, slip) = (band.thickness, motion.rise, motion.slip);
+        if e == 0.0 || e + rise - dx * t < 0.0 {
             return None;
         }
         let last_block_x = self.trace_image(surface, band, rise)?;
         let first_band_node = (b + 2..j).find(|&i| surface.x(i) > last_block_x)?;
         let area_before = region_area(surface, b, j);
-        let slip = dx * psi.cos() * (1.0 + rho * rho).sqrt();
-        let band_width = e / (1.0 + t * t).sqrt();
-        let dilation_area = band.area_below(&surface.height) * slip * psi.tan() / band_width;
+        let dilation_area = band.area_below(&surface.height) * slip * motion.tan_psi / band.width;
         self.resample(surface, b, j);
         // Swept area ½ Δx (e + rise) on a half-weight node: a rise of e + rise.
         surface.height[b + 1] += e + rise;
@@ -187,10 +187,37 @@ impl Kinematics {
     }
 }
 
+/// The motion of the band's block: rise v0 tan(β + ψ) on the grid, slip
+/// Δut = λ cos ψ with λ = v0 sin α / sin(α + β + ψ) (`Rake`); `None` where
+/// β + ψ ≥ 90°.
+#[derive(Clone, Copy, Debug)]
+struct BandMotion {
+    rise: f64,
+    slip: f64,
+    tan_psi: f64,
+}
+
+impl BandMotion {
+    fn new(choice: &Choice, rake: &Rake, dx: f64) -> Option<Self> {
+        let (t, psi) = (choice.tan_beta, choice.dilation);
+        let tan_psi = psi.tan();
+        let run = 1.0 - t * tan_psi;
+        if run <= 0.0 {
+            return None;
+        }
+        let rho = (t + tan_psi) / run;
+        Some(BandMotion {
+            rise: dx * rake.grid(rho),
+            slip: dx * psi.cos() * (1.0 + rho * rho).sqrt() / (1.0 + rake.cot * rho),
+            tan_psi,
+        })
+    }
+}
+
 /// The slip-line update (see the module doc).
-pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice) -> Update {
-    let (j, dx) = (choice.node, surface.spacing);
-    let rise = dx * choice.tan_beta;
+pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
+    let (j, dx, t) = (choice.node, surface.spacing, choice.tan_beta);
+    let rise = dx * choice.grid_slope;
     let h = &mut surface.height;
     h.copy_within(blade..j, blade + 1);
     for y in &mut h[blade + 1..=j] {
@@ -198,7 +225,7 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice) -> Upda
     }
     h[blade + 1] += rise;
     shift_block_state(surface, blade, j);
-    let slip = dx * (1.0 + choice.tan_beta * choice.tan_beta).sqrt();
+    let slip = dx * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t);
     surface.accumulated_shear[j] += slip;
     Update {
         slip,

@@ -13,6 +13,7 @@ pub mod kinematics;
 pub mod material;
 pub mod mechanism;
 pub mod peaks;
+pub mod rake;
 pub mod search;
 pub mod simulation;
 pub mod summary;

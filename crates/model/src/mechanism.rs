@@ -61,6 +61,18 @@ impl ForceFactor {
         }
     }
 
+    /// (sin φ, cos φ).
+    #[inline]
+    pub fn friction_sin_cos(&self) -> (f64, f64) {
+        (self.sin_phi, self.cos_phi)
+    }
+
+    /// The denominator of Eq. (1) divided by cos β (positive iff admissible).
+    #[inline]
+    pub fn denominator(&self, t: f64) -> f64 {
+        self.cos_phi_w - t * self.sin_phi_w
+    }
+
     /// The cohesion term of the vertical-blade equation per unit c L
     /// (L the horizontal length of the block): c Ls cos φ / cos(β + φ + φw)
     /// with Ls = L / cos β, i.e. (1 + t²) cos φ / (cos(φ + φw) − t sin(φ + φw)).
@@ -88,21 +100,23 @@ impl ForceFactor {
 /// bound: P/W grows with φ, so the entry at or below φ bounds it from below.
 #[derive(Clone, Debug)]
 pub struct FactorTable {
-    /// (+φw, −φw) at φ = k STEP.
+    /// (rising, sinking) at φ = k STEP.
     entries: Vec<(ForceFactor, ForceFactor)>,
 }
 
 impl FactorTable {
     const STEP: f64 = 0.1 * std::f64::consts::PI / 180.0;
 
-    pub fn new(wall_friction: f64) -> Self {
+    /// `walls`: the wall friction of Eq. (1) for a rising and a sinking
+    /// block (radians).
+    pub fn new(walls: (f64, f64)) -> Self {
         let n = (0.5 * std::f64::consts::PI / Self::STEP).ceil() as usize + 1;
         let entries = (0..n)
             .map(|k| {
                 let phi = k as f64 * Self::STEP;
                 (
-                    ForceFactor::new(phi, wall_friction),
-                    ForceFactor::new(phi, -wall_friction),
+                    ForceFactor::new(phi, walls.0),
+                    ForceFactor::new(phi, walls.1),
                 )
             })
             .collect();
@@ -155,7 +169,7 @@ mod tests {
     #[test]
     fn table_bounds_from_below() {
         let w = 10f64.to_radians();
-        let table = FactorTable::new(w);
+        let table = FactorTable::new((w, -w));
         for deg in [12.34, 20.0, 33.333, 44.99] {
             let phi = f64::to_radians(deg);
             for t in [0.05, 0.4, 0.7] {

@@ -39,6 +39,7 @@
 
 use crate::band::Band;
 use crate::mechanism::{FactorTable, ForceFactor};
+use crate::rake::Rake;
 use crate::surface::Surface;
 
 /// Relative force difference below which two candidates are equal.
@@ -52,8 +53,11 @@ const GROW_NODES_MIN: usize = 256;
 pub struct Choice {
     /// Emergence node j.
     pub node: usize,
-    /// tan β*.
+    /// tan β* (physical).
     pub tan_beta: f64,
+    /// Slope of the slip line on the grid (= tan β* for a vertical blade;
+    /// see `Rake`).
+    pub grid_slope: f64,
     /// P*: force per unit width.
     pub force: f64,
     /// W: weight of the block.
@@ -101,11 +105,13 @@ where
     pub band_width: f64,
     /// Lower bound of P/W over every candidate (see the stopping rule).
     pub min_factor: f64,
-    /// Wall friction φw (radians) and the tan β below which a block may
-    /// sink (β + ψ ≤ 0 for some reachable ψ), where the least-force wall
-    /// friction is −φw: for the pruning bound.
-    pub wall_friction: f64,
+    /// The wall friction in Eq. (1) for a rising and a sinking block (±φw,
+    /// plus α − 90° for a raked blade), radians, and the tan β below which a
+    /// block may sink (β + ψ ≤ 0 for some reachable ψ): for the bounds.
+    pub walls: (f64, f64),
     pub sinking_below: f64,
+    /// The shear of coordinates of a raked blade.
+    pub rake: Rake,
     /// Band angles of undisturbed ground.
     pub fresh: BandAngles,
     /// Eq. (1) on a grid of friction angles (a lower bound before the
@@ -122,10 +128,11 @@ where
     pub loads: Loads,
 }
 
-/// What the extended equation adds to the block's weight for a vertical
-/// blade (`analytic` gives the general form):
-/// P = (W + q L + a Lb) (P/W)(β, φ) + c L (1 + tan²β) cos φ / cos(β + φ + φw),
-/// L the block's horizontal length, Lb = y_b + d the face contact.
+/// What the extended equation adds to the block's weight (`analytic` gives
+/// it on flat ground), divided through by cos β:
+/// P = [(W + q Lt) sin(β + φ) + c Ls cos φ − a Lb cos(α + β + φ)] / sin(α + β + φ + φw),
+/// with Lt the block's top and Ls the slip line (horizontal lengths L of
+/// the slip line, L + (y_b + d) cot α of the top) and Lb the face contact.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Loads {
     /// q: surcharge pressure on the free surface.
@@ -134,16 +141,32 @@ pub struct Loads {
     pub adhesion: f64,
     /// c: cohesion on the slip surface.
     pub cohesion: f64,
+    /// (y_b + d) cot α: how far the block's top reaches behind the tip.
+    pub face_run: f64,
+    /// (sin, cos) of α − 90°.
+    pub rake_offset: (f64, f64),
 }
 
 impl Loads {
-    /// P of a candidate of weight W and horizontal length L at tan β.
+    /// P of a candidate of weight W whose slip line runs `length` ahead of
+    /// the tip, at tan β. Each added term is ≥ 0 (adhesion: validated), so
+    /// every bound on the weight alone stays a bound.
     #[inline]
     fn force(&self, factor: &ForceFactor, weight: f64, length: f64, t: f64) -> Option<f64> {
         let f = factor.at(t)?;
-        let mut force = (weight + self.surcharge * length + self.adhesion) * f;
+        let mut force = (weight + self.surcharge * (length + self.face_run)) * f;
         if self.cohesion > 0.0 {
             force += self.cohesion * length * factor.cohesion_at(t);
+        }
+        if self.adhesion > 0.0 {
+            // −cos(α + β + φ) / cos β = t cos(φ + α − 90°) + sin(φ + α − 90°).
+            let (sin_phi, cos_phi) = factor.friction_sin_cos();
+            let (sin_d, cos_d) = self.rake_offset;
+            let (sin_a, cos_a) = (
+                sin_phi * cos_d + cos_phi * sin_d,
+                cos_phi * cos_d - sin_phi * sin_d,
+            );
+            force += self.adhesion * (t * cos_a + sin_a) / factor.denominator(t);
         }
         Some(force)
     }
@@ -235,12 +258,15 @@ impl Search {
                 let r = rise / k;
                 scan.r_min = r;
                 let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
-                let tan_beta = r / dx;
-                if lower
-                    .at(tan_beta, input)
-                    .can_beat(weight, tan_beta, scan.bar)
-                {
-                    self.evaluate(surface, input, &mut scan, j, tan_beta, weight);
+                let grid = r / dx;
+                if let Some(tan_beta) = input.rake.physical(grid) {
+                    if lower
+                        .at(tan_beta, input)
+                        .can_beat(weight, tan_beta, scan.bar)
+                    {
+                        let slope = Slope { grid, tan_beta };
+                        self.evaluate(surface, input, &mut scan, j, slope, weight);
+                    }
                 }
                 if scan.beyond_reach(weight, input.min_factor) {
                     break;
@@ -268,23 +294,23 @@ impl Search {
         input: &SearchInput<A, F>,
         scan: &mut Scan,
         j: usize,
-        tan_beta: f64,
+        slope: Slope,
         weight: f64,
     ) where
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         self.evaluations += 1;
-        let band = Band::new(scan.b, j, tan_beta, input.band_width, scan.d, scan.dx);
+        let band = slope.band(scan, j, input.band_width);
         let angles = (input.angles)(self.band_angles(surface, &band, input.fresh));
-        let rising = tan_beta > input.sinking_below;
+        let rising = slope.tan_beta > input.sinking_below;
         if angles.fresh
             || input
                 .table
                 .below(angles.friction, rising)
-                .can_beat(weight, tan_beta, scan.bar)
+                .can_beat(weight, slope.tan_beta, scan.bar)
         {
-            self.consider(input, scan, j, tan_beta, weight, angles);
+            self.consider(input, scan, j, slope, weight, angles);
         }
     }
 
@@ -293,23 +319,24 @@ impl Search {
         input: &SearchInput<A, F>,
         scan: &mut Scan,
         j: usize,
-        tan_beta: f64,
+        slope: Slope,
         weight: f64,
         angles: BandAngles,
     ) where
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        let factor = (input.factor)(angles, tan_beta);
-        let length = (j - scan.b) as f64 * scan.dx;
-        if let Some(force) = input.loads.force(&factor, weight, length, tan_beta) {
+        let factor = (input.factor)(angles, slope.tan_beta);
+        let length = slope.length(j - scan.b, scan.dx);
+        if let Some(force) = input.loads.force(&factor, weight, length, slope.tan_beta) {
             if force > scan.bar {
                 return;
             }
             scan.improve(force);
             self.admissible.push(Choice {
                 node: j,
-                tan_beta,
+                tan_beta: slope.tan_beta,
+                grid_slope: slope.grid,
                 force,
                 weight,
                 friction: angles.friction,
@@ -378,8 +405,12 @@ impl Search {
             sum_gk += g * k;
         }
         let weight = scan.dx * (scan.base + sum_gh - r * sum_gk);
-        let tan_beta = r / scan.dx;
-        let band = Band::new(b, j, tan_beta, input.band_width, d, scan.dx);
+        let grid = r / scan.dx;
+        let slope = Slope {
+            grid,
+            tan_beta: input.rake.physical(grid)?,
+        };
+        let band = slope.band(scan, j, input.band_width);
         let m = band.footprint(&surface.height);
         let sum = |i: usize| {
             [
@@ -392,10 +423,9 @@ impl Search {
             .map(sum)
             .fold([0.0; 3], |a, v| [a[0] + v[0], a[1] + v[1], a[2] + v[2]]);
         let angles = (input.angles)(window_angles(total, [0.0; 3], m));
-        let factor = (input.factor)(angles, tan_beta);
-        let force = input
-            .loads
-            .force(&factor, weight, (j - b) as f64 * scan.dx, tan_beta)?;
+        let factor = (input.factor)(angles, slope.tan_beta);
+        let length = slope.length(j - b, scan.dx);
+        let force = input.loads.force(&factor, weight, length, slope.tan_beta)?;
         Some(force)
     }
 
@@ -419,24 +449,57 @@ impl Search {
                 return;
             }
             let n2 = n1 + (n1 / 16).max(64) - 1;
-            let t2 = far.tan_beta(n2);
-            // Weight and length grow with n, P/W and the cohesion term
+            // Weight and slip length grow with n, P/W and the cohesion term
             // with tan β: (n₁, β(n₂)) bounds the block from below.
-            let length = n1 as f64 * scan.dx;
-            let factor2 = (input.factor)(fresh, t2);
-            let bound = input.loads.force(&factor2, far.weight(n1), length, t2);
-            if bound.is_some_and(|p| p <= scan.bar) {
-                for n in n1..=n2 {
-                    let weight = far.weight(n);
-                    if scan.beyond_reach(weight, input.min_factor) {
-                        return;
+            let slopes = (far.slope(n1, &input.rake), far.slope(n2, &input.rake));
+            if let (Some(first), Some(last)) = slopes {
+                let factor2 = (input.factor)(fresh, last.tan_beta);
+                let length = first.length(n1, scan.dx);
+                let bound = input
+                    .loads
+                    .force(&factor2, far.weight(n1), length, last.tan_beta);
+                if bound.is_some_and(|p| p <= scan.bar) {
+                    for n in n1..=n2 {
+                        let weight = far.weight(n);
+                        if scan.beyond_reach(weight, input.min_factor) {
+                            return;
+                        }
+                        if let Some(slope) = far.slope(n, &input.rake) {
+                            self.evaluations += 1;
+                            self.consider(input, scan, scan.b + n, slope, weight, fresh);
+                        }
                     }
-                    self.evaluations += 1;
-                    self.consider(input, scan, scan.b + n, far.tan_beta(n), weight, fresh);
                 }
             }
             n1 = n2 + 1;
         }
+    }
+}
+
+/// The slope of a candidate's slip line on the grid and physically.
+#[derive(Clone, Copy, Debug)]
+struct Slope {
+    grid: f64,
+    tan_beta: f64,
+}
+
+impl Slope {
+    /// Physical horizontal length of the slip line reaching `nodes` nodes
+    /// ahead of the tip on the grid.
+    fn length(&self, nodes: usize, dx: f64) -> f64 {
+        nodes as f64 * dx * (self.grid / self.tan_beta)
+    }
+
+    fn band(&self, scan: &Scan, j: usize, band_width: f64) -> Band {
+        Band::new(
+            scan.b,
+            j,
+            self.grid,
+            self.tan_beta,
+            band_width,
+            scan.d,
+            scan.dx,
+        )
     }
 }
 
@@ -454,8 +517,8 @@ impl Lower {
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         Lower {
-            rising: ForceFactor::new(phi, input.wall_friction),
-            sinking: ForceFactor::new(phi, -input.wall_friction),
+            rising: ForceFactor::new(phi, input.walls.0),
+            sinking: ForceFactor::new(phi, input.walls.1),
         }
     }
 
@@ -509,8 +572,12 @@ impl FarField {
                 - r * (self.sum_gk + self.gamma * triangle))
     }
 
-    fn tan_beta(&self, n: usize) -> f64 {
-        (self.d / n as f64) / self.dx
+    fn slope(&self, n: usize, rake: &Rake) -> Option<Slope> {
+        let grid = (self.d / n as f64) / self.dx;
+        Some(Slope {
+            grid,
+            tan_beta: rake.physical(grid)?,
+        })
     }
 
     /// First n ≥ n_s whose line passes below every node before it.
@@ -544,9 +611,12 @@ where
         return false;
     }
     let dx = surface.spacing;
-    let tan_beta = (input.depth / (j - input.blade) as f64) / dx;
-    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt();
-    let footprint = thickness / tan_beta / dx + 2.0;
+    let grid = (input.depth / (j - input.blade) as f64) / dx;
+    let Some(tan_beta) = input.rake.physical(grid) else {
+        return false;
+    };
+    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * (grid / tan_beta);
+    let footprint = thickness / grid / dx + 2.0;
     (j - undisturbed) as f64 > footprint
 }
 

@@ -11,6 +11,7 @@ use crate::case::{BandAngleRule, Case, CaseError};
 use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::mechanism::{FactorTable, ForceFactor};
+use crate::rake::Rake;
 use crate::search::{BandAngles, Choice, Loads, Search, SearchInput};
 use crate::surface::Surface;
 use crate::trig;
@@ -86,7 +87,9 @@ pub struct ProfilePoint {
 #[derive(Clone, Debug)]
 struct Laws {
     material: Material,
-    wall_friction: f64,
+    /// The wall friction of Eq. (1) for a block rising along the face and
+    /// for one sinking: ±φw + (α − 90°) (`Rake`), radians.
+    walls: (f64, f64),
     /// Fresh soil with the block rising along the face (+φw) and not (−φw).
     fresh_rising: ForceFactor,
     fresh_sinking: ForceFactor,
@@ -94,8 +97,8 @@ struct Laws {
     min_factor: f64,
     /// tan β below which some band may sink (β + ψ ≤ 0).
     sinking_below: f64,
-    /// (sin φw, cos φw).
-    wall_sin_cos: (f64, f64),
+    /// (sin, cos) of the two walls.
+    wall_sin_cos: ((f64, f64), (f64, f64)),
     /// Eq. (1) on a grid of friction angles, for the search's bounds.
     table: FactorTable,
     /// Band angles of undisturbed soil.
@@ -106,23 +109,21 @@ impl Laws {
     fn new(case: &Case) -> Self {
         let material = Material::new(&case.soil);
         let wall_friction = case.blade.wall_friction.to_radians();
+        let offset = Rake::new(case.blade.rake).offset;
+        let walls = (wall_friction + offset, -wall_friction + offset);
         let phi0 = material.friction.at(0.0);
         // Friction on the face opposes the block's motion relative to it:
         // where the block does not rise (β + ψ ≤ 0, compaction) it acts
         // upward on the block, the least-force choice at β + ψ = 0.
         let can_sink = case.soil.dilation.min() < 0.0;
-        let lowest_wall = if can_sink {
-            -wall_friction
-        } else {
-            wall_friction
-        };
+        let lowest_wall = if can_sink { walls.1 } else { walls.0 };
         Laws {
-            fresh_rising: ForceFactor::new(phi0, wall_friction),
-            fresh_sinking: ForceFactor::new(phi0, -wall_friction),
+            fresh_rising: ForceFactor::new(phi0, walls.0),
+            fresh_sinking: ForceFactor::new(phi0, walls.1),
             min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
             sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
-            wall_sin_cos: wall_friction.sin_cos(),
-            table: FactorTable::new(wall_friction),
+            wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
+            table: FactorTable::new(walls),
             fresh: BandAngles {
                 friction: phi0,
                 dilation: material.dilation.at(0.0),
@@ -130,7 +131,7 @@ impl Laws {
                 fresh: true,
             },
             material,
-            wall_friction,
+            walls,
         }
     }
 
@@ -145,11 +146,10 @@ impl Laws {
             (true, true) => self.fresh_rising,
             (true, false) => self.fresh_sinking,
             (false, rising) => {
-                let (sin_w, cos_w) = self.wall_sin_cos;
                 let wall = if rising {
-                    (sin_w, cos_w)
+                    self.wall_sin_cos.0
                 } else {
-                    (-sin_w, cos_w)
+                    self.wall_sin_cos.1
                 };
                 ForceFactor::from_sin_cos(trig::sin_cos(angles.friction), wall)
             }
@@ -184,7 +184,11 @@ impl Laws {
 pub struct Simulation {
     case: Case,
     laws: Laws,
-    tan_repose: f64,
+    /// The grid's shear for a raked blade (identity for 90°).
+    rake: Rake,
+    /// Steepest slopes on the grid, downhill and uphill in +x: tan θr for a
+    /// vertical blade; on the sheared grid tan θr / (1 ∓ tan θr cot α).
+    repose_slopes: (f64, f64),
     surface: Surface,
     search: Search,
     kinematics: Kinematics,
@@ -207,9 +211,15 @@ impl Simulation {
         );
         let surface = Surface::flat(dx, d, case.soil.unit_weight, fresh, nodes);
         let initial_mass = surface.mass(0);
+        let rake = Rake::new(case.blade.rake);
+        let tan_repose = case.soil.repose.to_radians().tan();
         Ok(Simulation {
             laws,
-            tan_repose: case.soil.repose.to_radians().tan(),
+            rake,
+            repose_slopes: (
+                tan_repose / (1.0 - tan_repose * rake.cot),
+                tan_repose / (1.0 + tan_repose * rake.cot),
+            ),
             surface,
             search: Search::default(),
             kinematics: Kinematics::default(),
@@ -260,14 +270,39 @@ impl Simulation {
     /// The free surface from the face to the end of the domain.
     pub fn profile(&self) -> Vec<ProfilePoint> {
         let s = &self.surface;
+        let d = self.case.blade.depth;
         (self.done..s.len())
             .map(|i| ProfilePoint {
-                x: s.x(i),
+                x: self.rake.x(s.x(i), s.height[i], d),
                 y: s.height[i],
                 accumulated_shear: s.accumulated_shear[i],
                 unit_weight: s.unit_weight[i],
             })
             .collect()
+    }
+
+    /// Cohesion, adhesion and surcharge for this increment's face contact.
+    fn loads(&self) -> Loads {
+        let c = &self.case;
+        // The face from the tip to the surface: y_b + d high, Lb long.
+        let rise = self.surface.height[self.done] + c.blade.depth;
+        let sin_alpha = if c.blade.rake == 90.0 {
+            1.0
+        } else {
+            c.blade.rake.to_radians().sin()
+        };
+        let offset = self.rake.offset;
+        Loads {
+            surcharge: c.soil.surcharge,
+            adhesion: c.blade.adhesion * rise / sin_alpha,
+            cohesion: c.soil.cohesion,
+            face_run: rise * self.rake.cot,
+            rake_offset: if offset == 0.0 {
+                (0.0, 1.0)
+            } else {
+                offset.sin_cos()
+            },
+        }
     }
 
     fn find_mechanism(&mut self) -> Option<Choice> {
@@ -283,17 +318,14 @@ impl Simulation {
             depth: d,
             band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
-            wall_friction: laws.wall_friction,
+            walls: laws.walls,
             sinking_below: laws.sinking_below,
+            rake: self.rake,
             fresh: laws.fresh,
             table: &laws.table,
             factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
-            loads: Loads {
-                surcharge: self.case.soil.surcharge,
-                adhesion: self.case.blade.adhesion * (self.surface.height[self.done] + d),
-                cohesion: self.case.soil.cohesion,
-            },
+            loads: self.loads(),
         };
         let max_nodes = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
@@ -313,19 +345,21 @@ impl Simulation {
             .find_mechanism()
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
         let (b, j) = (self.done, choice.node);
-        let (x_emergence, y_emergence) = (self.surface.x(j), self.surface.height[j]);
         let c = &self.case;
+        let y_emergence = self.surface.height[j];
+        let x_emergence = self.rake.x(self.surface.x(j), y_emergence, c.blade.depth);
         let band = Band::new(
             b,
             j,
+            choice.grid_slope,
             choice.tan_beta,
             c.soil.band_width,
             c.blade.depth,
             self.surface.spacing,
         );
-        let update = self
-            .kinematics
-            .apply(&mut self.surface, &band, &choice, c.choices);
+        let update =
+            self.kinematics
+                .apply(&mut self.surface, &band, &choice, c.choices, &self.rake);
         self.laws
             .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
         self.surface.disturb(j + 1);
@@ -336,7 +370,7 @@ impl Simulation {
         let moved = self.avalanche.relax(
             &mut self.surface,
             self.done,
-            self.tan_repose,
+            self.repose_slopes,
             &[face, band_nodes],
         );
         self.surface.disturb(moved.end);
@@ -345,8 +379,14 @@ impl Simulation {
         // Face friction opposes the block's motion along the face.
         let (sin_psi, cos_psi) = trig::sin_cos(choice.dilation);
         let rising = choice.tan_beta * cos_psi + sin_psi > 0.0;
-        let wall = if rising { 1.0 } else { -1.0 } * self.laws.wall_friction;
-        let (cos_w, sin_w) = (wall.cos(), wall.sin());
+        // The reaction is at φw (with its sign) from the face normal, which
+        // is α − 90° from the horizontal: ω = ±φw + α − 90°.
+        let omega = if rising {
+            self.laws.walls.0
+        } else {
+            self.laws.walls.1
+        };
+        let (cos_w, sin_w) = (omega.cos(), omega.sin());
         Ok(StepRecord {
             step,
             u,
