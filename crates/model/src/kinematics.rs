@@ -55,6 +55,8 @@ pub struct Kinematics {
     /// Relative positions f_i = clamp(g_i, 0, 1) of nodes b..=j before the
     /// update.
     position: Vec<f64>,
+    /// γ of nodes b..=j before the update.
+    old_unit_weight: Vec<f64>,
 }
 
 impl Kinematics {
@@ -68,12 +70,16 @@ impl Kinematics {
         rake: &Rake,
     ) -> Update {
         let mass_before = region_mass(surface, band.blade, band.emergence);
+        self.old_unit_weight.clear();
+        self.old_unit_weight
+            .extend_from_slice(&surface.unit_weight[band.blade..=band.emergence]);
         let motion = BandMotion::new(choice, rake, surface.spacing);
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
                 None => slide_block(surface, band.blade, choice, rake),
             };
+        self.mix_block_columns(surface, band, update.first_band_node);
         match choices.unit_weight {
             UnitWeightRule::BandUniform => {
                 conserve_mass(surface, band, update.first_band_node, mass_before)
@@ -258,6 +264,24 @@ fn region_mass(surface: &Surface, b: usize, j: usize) -> f64 {
     (b..=j)
         .map(|i| surface.unit_weight[i] * surface.column_area(i, b))
         .sum()
+}
+
+impl Kinematics {
+    /// Unit weight of the block's columns after the shift: the soil below
+    /// the slip line stays (its column's γ), the soil above it came from the
+    /// column behind (that column's γ), mixed by area. Without this the band
+    /// would have to absorb every difference of γ along the block, which can
+    /// drive its unit weight negative.
+    fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
+        let b = band.blade;
+        for i in b + 1..first_band {
+            let total = surface.height[i] - surface.floor;
+            let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
+            let (staying, arriving) =
+                (self.old_unit_weight[i - b], self.old_unit_weight[i - 1 - b]);
+            surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+        }
+    }
 }
 
 /// Gives the band's nodes (first..=j) the one unit weight that makes the

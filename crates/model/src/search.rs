@@ -392,18 +392,24 @@ impl Search {
         if j <= b || j + 1 >= surface.len() {
             return None;
         }
-        let r = (surface.height[j] + d) / (j - b) as f64;
-        let (mut sum_gh, mut sum_gk) = (0.0, 0.0);
+        // The scan's own admissibility test, to the last bit: a seed the
+        // scan would reject must not lower the bar.
+        let (mut sum_gh, mut sum_gk, mut r_min) = (0.0, 0.0, f64::INFINITY);
         for i in b + 1..j {
             let k = (i - b) as f64;
             let rise = surface.height[i] + d;
-            if rise < r * k {
-                return None;
+            if rise <= r_min * k {
+                r_min = rise / k;
             }
             let g = surface.unit_weight[i];
             sum_gh += g * rise;
             sum_gk += g * k;
         }
+        let (k, rise) = ((j - b) as f64, surface.height[j] + d);
+        if rise > r_min * k {
+            return None;
+        }
+        let r = rise / k;
         let weight = scan.dx * (scan.base + sum_gh - r * sum_gk);
         let grid = r / scan.dx;
         let slope = Slope {

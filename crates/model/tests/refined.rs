@@ -142,3 +142,25 @@ fn hardening_shears_continuously_softening_in_discrete_bands() {
         "jumps HS {hs_jumps} vs S {s_jumps}"
     );
 }
+
+/// A valid parameter set of the Table 1 HS sweep once failed at u/d = 4.8:
+/// the band's unit weight had to absorb every difference of γ along the
+/// block and went negative (then φ of mixed soil). Unit weights must stay
+/// positive and the run must finish.
+#[test]
+fn unit_weight_stays_positive_in_a_long_hardening_run() {
+    let mut case = common::refined("table1-hs", 5.0, 200.0);
+    case.soil.friction.initial = 17.56264077835547;
+    case.soil.friction.peak = 35.4906289577928;
+    case.soil.dilation.initial = -0.38497306413798427;
+    case.soil.peak_shear = 1.2284971937703288;
+    case.soil.band_width = 5.020545903720507 * 0.6;
+    let (_, sim) = common::run(&case);
+    let profile = sim.profile();
+    assert!(profile
+        .iter()
+        .all(|p| p.unit_weight > 0.5 && p.unit_weight < 2.0));
+    assert!(profile.iter().all(|p| p.accumulated_shear >= 0.0));
+    let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+    assert!(drift.abs() < 1e-9, "{drift:e}");
+}
