@@ -140,3 +140,35 @@ fn summary_carries_the_baselines_beside_the_first_force() {
         "a smooth wall needs less force: {rankine} vs {fee}"
     );
 }
+
+#[test]
+fn bad_depth_paths_are_refused() {
+    let (dir, _) = sandbox();
+    for (path, says) in [
+        ("[[0, 10], [20, 5]]", "not decrease"),
+        ("[[0, 10], [0, 15]]", "u must increase"),
+        ("[[0, -1]]", "depth > 0"),
+        ("[[0, 10], [20, nan]]", "finite"),
+    ] {
+        let set = format!("blade.depth_path={path}");
+        let o = soilcut(dir.path(), &["run", "case.toml", "--set", &set]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{path}: {err}");
+        assert!(
+            err.starts_with("error: case.toml: blade.depth_path: "),
+            "{err}"
+        );
+        assert!(err.contains(says), "{path}: {err}");
+    }
+    let o = soilcut(
+        dir.path(),
+        &[
+            "check",
+            "case.toml",
+            "--set",
+            "blade.depth_path=[[0, 10], [20, 20]]",
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!dir.path().join("out").exists());
+}

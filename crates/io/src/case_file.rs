@@ -106,7 +106,7 @@ impl ChoicesFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { depth, wall_friction, rake, adhesion }"
+    expecting = "a table { depth, wall_friction, rake, adhesion, depth_path }"
 )]
 struct BladeFile {
     depth: f64,
@@ -115,6 +115,8 @@ struct BladeFile {
     rake: Option<f64>,
     #[serde(default)]
     adhesion: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    depth_path: Option<Vec<[f64; 2]>>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -358,6 +360,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             wall_friction: file.blade.wall_friction,
             rake,
             adhesion,
+            depth_path: file.blade.depth_path.clone().unwrap_or_default(),
         },
         soil: Soil {
             unit_weight: soil.unit_weight,

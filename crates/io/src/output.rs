@@ -16,7 +16,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Columns of `history.csv`, in order.
-pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area";
+pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth";
 
 /// Columns of `profile.csv`, in order.
 pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight";
@@ -51,7 +51,7 @@ impl RunOutput<'_> {
             let u_over_d = r.u / d;
             writeln!(
                 out,
-                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.step,
                 r.u,
                 r.force,
@@ -65,7 +65,8 @@ impl RunOutput<'_> {
                 r.friction_deg,
                 r.slip,
                 r.dilation_deg,
-                r.dilation_area
+                r.dilation_area,
+                r.depth
             )
             .expect("writing to a String");
         }

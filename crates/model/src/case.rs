@@ -67,6 +67,10 @@ pub struct Blade {
     pub rake: f64,
     /// a: blade-soil adhesion (stress), on the face contact.
     pub adhesion: f64,
+    /// The tip depth as a piecewise-linear function of blade travel,
+    /// [u, d] points (constant beyond the ends); empty: always `depth`,
+    /// which is also the reference depth of normalised forces.
+    pub depth_path: Vec<[f64; 2]>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -270,6 +274,7 @@ impl Case {
             ));
         }
         non_negative("blade.adhesion", self.blade.adhesion)?;
+        self.validate_depth_path()?;
         // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
         // search's bounds rely on that.
         let phi_min = self.soil.friction.min();
@@ -382,6 +387,50 @@ impl Case {
         Ok(())
     }
 
+    fn validate_depth_path(&self) -> Result<(), CaseError> {
+        let key = "blade.depth_path";
+        let path = &self.blade.depth_path;
+        for (k, &[u, d]) in path.iter().enumerate() {
+            finite(key, u)?;
+            finite(key, d)?;
+            if u < 0.0 || d <= 0.0 {
+                return Err(CaseError::new(
+                    key,
+                    format!("point {k}: needs u ≥ 0 and depth > 0 (got [{u}, {d}])"),
+                ));
+            }
+            if k > 0 && (u <= path[k - 1][0] || d < path[k - 1][1]) {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "point {k}: u must increase and the depth must not decrease (the blade may deepen, not rise) (got [{u}, {d}] after {:?})",
+                        path[k - 1]
+                    ),
+                ));
+            }
+        }
+        if !path.is_empty() && self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                key,
+                format!(
+                    "needs a vertical blade, blade.rake = 90° (got {}°)",
+                    self.blade.rake
+                ),
+            ));
+        }
+        if let Some(shallowest) = path.first().map(|p| p[1]) {
+            if self.run.increment >= shallowest || self.soil.band_width >= shallowest {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "the shallowest depth ({shallowest}) must exceed run.increment and the band width"
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn validate_run(&self) -> Result<(), CaseError> {
         positive("run.travel", self.run.travel)?;
         positive("run.increment", self.run.increment)?;
@@ -408,7 +457,27 @@ impl Case {
 
     /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
     pub fn initial_nodes(&self) -> f64 {
-        let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.blade.depth;
+        let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
         (reach / self.run.increment).ceil() + 2.0
+    }
+
+    /// The tip depth at blade displacement u (`blade.depth_path`, linear
+    /// between its points, constant beyond them; else `blade.depth`).
+    pub fn tip_depth(&self, u: f64) -> f64 {
+        let path = &self.blade.depth_path;
+        match path.iter().position(|p| p[0] > u) {
+            None => path.last().map_or(self.blade.depth, |p| p[1]),
+            Some(0) => path[0][1],
+            Some(k) => {
+                let ([u0, d0], [u1, d1]) = (path[k - 1], path[k]);
+                d0 + (d1 - d0) * (u - u0) / (u1 - u0)
+            }
+        }
+    }
+
+    /// The deepest the tip goes: soil below it never moves.
+    pub fn deepest(&self) -> f64 {
+        let path = self.blade.depth_path.iter().map(|p| p[1]);
+        path.fold(self.blade.depth, f64::max)
     }
 }

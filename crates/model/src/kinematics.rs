@@ -45,6 +45,8 @@ pub struct Update {
     /// First node of the band after the update (the emergence node for a
     /// slip line).
     pub first_band_node: usize,
+    /// Weight of the soil the tip passed over, left behind in the trench.
+    pub trench_mass: f64,
 }
 
 /// Reusable scratch for the band update.
@@ -68,8 +70,15 @@ impl Kinematics {
         choice: &Choice,
         choices: Choices,
         rake: &Rake,
+        deepening: f64,
     ) -> Update {
-        let mass_before = region_mass(surface, band.blade, band.emergence);
+        // The strip the blade moves through: soil below the tip's path
+        // (from depth d to d + Δd) stays behind; what lies between that path
+        // and the slip line is pushed up the face (`deepening` adds to the
+        // face's lift).
+        let trench_area = surface.spacing * (-surface.floor - band.depth - 0.5 * deepening);
+        let trench_mass = surface.unit_weight[band.blade] * trench_area;
+        let mass_before = region_mass(surface, band.blade, band.emergence) - trench_mass;
         self.old_unit_weight.clear();
         self.old_unit_weight
             .extend_from_slice(&surface.unit_weight[band.blade..=band.emergence]);
@@ -79,6 +88,11 @@ impl Kinematics {
                 Some(update) => update,
                 None => slide_block(surface, band.blade, choice, rake),
             };
+        surface.height[band.blade + 1] += deepening;
+        let update = Update {
+            trench_mass,
+            ..update
+        };
         self.mix_block_columns(surface, band, update.first_band_node);
         match choices.unit_weight {
             UnitWeightRule::BandUniform => {
@@ -118,7 +132,10 @@ impl Kinematics {
         self.resample(surface, b, j);
         // Swept area ½ Δx (e + rise) on a half-weight node: a rise of e + rise.
         surface.height[b + 1] += e + rise;
-        let residual = area_before + dilation_area - region_area(surface, b + 1, j);
+        // The strip's soil below the tip (deeper than d, above the floor)
+        // stays behind the blade.
+        let left_behind = dx * (-surface.floor - band.depth);
+        let residual = area_before - left_behind + dilation_area - region_area(surface, b + 1, j);
         let correction = residual / ((j - first_band_node) as f64 * dx);
         for y in &mut surface.height[first_band_node..j] {
             *y += correction;
@@ -135,6 +152,7 @@ impl Kinematics {
             slip,
             dilation_area,
             first_band_node,
+            trench_mass: 0.0,
         })
     }
 
@@ -237,6 +255,7 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &
         slip,
         dilation_area: 0.0,
         first_band_node: j,
+        trench_mass: 0.0,
     }
 }
 

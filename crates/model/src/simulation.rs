@@ -31,7 +31,7 @@ pub struct StepRecord {
     pub u: f64,
     /// P*: resultant blade force.
     pub force: f64,
-    /// P* / (γ0 d²).
+    /// P* / (γ0 d²), d the reference depth `blade.depth`.
     pub force_norm: f64,
     /// Horizontal (draft) component P* cos φw.
     pub force_h: f64,
@@ -44,6 +44,8 @@ pub struct StepRecord {
     /// Emergence point of the slip line (lower band boundary).
     pub x_emergence: f64,
     pub y_emergence: f64,
+    /// Depth of the blade tip during the increment.
+    pub depth: f64,
     /// Band dilation angle ψ of the chosen mechanism, degrees.
     pub dilation_deg: f64,
     /// Δut of the band (slip line) in this increment.
@@ -202,7 +204,7 @@ impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
         case.validate_simulation()?;
-        let (d, dx) = (case.blade.depth, case.run.increment);
+        let (d, dx) = (case.deepest(), case.run.increment);
         let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
         let fresh = (
@@ -285,7 +287,7 @@ impl Simulation {
     fn loads(&self) -> Loads {
         let c = &self.case;
         // The face from the tip to the surface: y_b + d high, Lb long.
-        let rise = self.surface.height[self.done] + c.blade.depth;
+        let rise = self.surface.height[self.done] + self.tip_depth();
         let sin_alpha = if c.blade.rake == 90.0 {
             1.0
         } else {
@@ -305,8 +307,13 @@ impl Simulation {
         }
     }
 
+    /// Depth of the blade tip now.
+    pub fn tip_depth(&self) -> f64 {
+        self.case.tip_depth(self.blade_position())
+    }
+
     fn find_mechanism(&mut self) -> Option<Choice> {
-        let d = self.case.blade.depth;
+        let d = self.tip_depth();
         let dx = self.surface.spacing;
         let laws = &self.laws;
         let rule = self.case.choices.band_angles;
@@ -346,20 +353,28 @@ impl Simulation {
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
         let (b, j) = (self.done, choice.node);
         let c = &self.case;
+        let depth = self.tip_depth();
+        let deepening = c.tip_depth(u + self.surface.spacing) - depth;
         let y_emergence = self.surface.height[j];
-        let x_emergence = self.rake.x(self.surface.x(j), y_emergence, c.blade.depth);
+        let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
         let band = Band::new(
             b,
             j,
             choice.grid_slope,
             choice.tan_beta,
             c.soil.band_width,
-            c.blade.depth,
+            depth,
             self.surface.spacing,
         );
-        let update =
-            self.kinematics
-                .apply(&mut self.surface, &band, &choice, c.choices, &self.rake);
+        let update = self.kinematics.apply(
+            &mut self.surface,
+            &band,
+            &choice,
+            c.choices,
+            &self.rake,
+            deepening,
+        );
+        self.surface.trench_mass += update.trench_mass;
         self.laws
             .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
         self.surface.disturb(j + 1);
@@ -399,6 +414,7 @@ impl Simulation {
             dilation_deg: choice.dilation.to_degrees(),
             x_emergence,
             y_emergence,
+            depth,
             slip: update.slip,
             dilation_area: update.dilation_area,
             mass: self.mass(),

@@ -33,6 +33,9 @@ pub struct Surface {
     fresh_angles: (f64, f64),
     /// Nodes from here on are undisturbed flat ground (y = 0, ut = 0, γ0).
     pub pristine_from: usize,
+    /// Weight of the soil left below the tip's path behind the blade (a
+    /// deepening blade passes over it).
+    pub trench_mass: f64,
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
     appended_mass: f64,
@@ -59,6 +62,7 @@ impl Surface {
             dilation: vec![fresh_angles.1; nodes],
             fresh_angles,
             pristine_from: 0,
+            trench_mass: 0.0,
             appended_mass: 0.0,
         }
     }
@@ -115,8 +119,9 @@ impl Surface {
         compensated_sum((first..self.len()).map(|i| self.column_area(i, first))) - appended
     }
 
-    /// Weight of soil in front of the blade at node `first`, counting only
-    /// the ground that existed at the start.
+    /// Weight of soil in front of the blade at node `first` and of the soil
+    /// left below a deepening tip's path, counting only the ground that
+    /// existed at the start.
     pub fn mass(&self, first: usize) -> f64 {
         let undisturbed = self.pristine_from.clamp(first, self.len());
         let disturbed =
@@ -129,7 +134,7 @@ impl Surface {
             .count() as f64;
         let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
         let pristine = column * (whole - 0.5 * halves.min(whole));
-        compensated_sum(disturbed.chain([pristine, -self.appended_mass]))
+        compensated_sum(disturbed.chain([pristine, self.trench_mass, -self.appended_mass]))
     }
 }
 

@@ -16,6 +16,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             wall_friction: 10.0,
             rake: 90.0,
             adhesion: 0.0,
+            depth_path: Vec::new(),
         },
         soil: Soil {
             unit_weight: 1.0,
