@@ -251,6 +251,8 @@ impl Simulation {
         self.surface.x(self.done)
     }
 
+    /// The nodes as the model holds them: on the grid, whose x is the
+    /// physical x only for a vertical blade (`Rake`; `profile` converts).
     pub fn surface(&self) -> &Surface {
         &self.surface
     }
