@@ -130,6 +130,7 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
     Ok(RunData {
         title: case.title.clone(),
         depth: case.blade.depth,
+        rake: case.blade.rake,
         unit_weight: case.soil.unit_weight,
         band_width: case.soil.band_width,
         history,

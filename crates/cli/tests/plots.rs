@@ -250,3 +250,34 @@ fn quiet_run_prints_nothing() {
         "no progress bar off a terminal"
     );
 }
+
+/// The rake is drawn: the inclined case's deformation picture and
+/// animation differ from the same case with a vertical blade, whose blade
+/// is a rectangle where the inclined one is a polygon (the plate's
+/// geometry is tested in `soilcut-plot`).
+#[test]
+fn an_inclined_blade_is_drawn_inclined() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/tools/inclined.toml");
+    let (raked, vertical) = (tmp.path().join("raked"), tmp.path().join("vertical"));
+    run_short(&case, &raked, &[]);
+    run_short(&case, &vertical, &["--set", "blade.rake=90"]);
+    let resolved = fs::read_to_string(raked.join("case.resolved.toml")).unwrap();
+    assert!(resolved.contains("rake = 60"), "{resolved}");
+    for p in [
+        "plots/deformation.png",
+        "plots/deformation.svg",
+        "animation.gif",
+    ] {
+        assert!(
+            fs::read(raked.join(p)).unwrap() != fs::read(vertical.join(p)).unwrap(),
+            "{p} shows the rake"
+        );
+    }
+    let svg = |dir: &Path| fs::read_to_string(dir.join("plots/deformation.svg")).unwrap();
+    let polygons = |text: &str| text.matches("<polygon").count();
+    assert!(
+        polygons(&svg(&raked)) > polygons(&svg(&vertical)),
+        "the plate is a polygon"
+    );
+}

@@ -17,9 +17,10 @@ pub const FRAME_ROWS: usize = 400;
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceFrame {
     pub step: usize,
-    /// Blade position (the face is at x = u).
+    /// Blade position: the tip is at (u, −d) (the face, at x = u for a
+    /// vertical blade, leans back from it for an inclined one).
     pub u: f64,
-    /// The surface from the face to the end of the domain.
+    /// The surface from where the face meets it to the end of the domain.
     pub surface: Vec<ProfilePoint>,
 }
 

@@ -94,7 +94,7 @@ impl Picture for Scene<'_> {
 
         let mut chart = self.layout.chart(&ground_area, ext.y)?;
         axes(&mut chart, X_DESC, Y_DESC, SMALL)?;
-        draw_ground(&mut chart, &frame.surface, frame.u, d, ext)?;
+        draw_ground(&mut chart, &frame.surface, frame.u, d, run.rake, ext)?;
         if let Some(h) = done.last() {
             draw_band(
                 &mut chart,
@@ -106,7 +106,7 @@ impl Picture for Scene<'_> {
                 SMALL.line,
             )?;
         }
-        draw_outline(&mut chart, &frame.surface, frame.u, d, ext, SMALL)?;
+        draw_outline(&mut chart, &frame.surface, frame.u, d, run.rake, ext, SMALL)?;
         let (x1, y1) = chart.backend_coord(&(ext.x.1, ext.y.1));
         let label = format!("u/d = {:.2}", frame.u / d);
         let style = font(SMALL.desc).pos(Pos::new(HPos::Right, VPos::Top));

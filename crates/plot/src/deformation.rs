@@ -1,6 +1,7 @@
 //! The pattern of deformation (paper Figs. 4 and 6): ground, blade and the
 //! slip lines or shear bands of the run, with the accumulated shear below.
 
+use crate::blade::{blade_outline, ground_outline, is_vertical};
 use crate::render::{save, text, DrawResult, Picture};
 use crate::style::{
     self, axes, curve, font, round_up, title_height, titled, top, viridis, Chart, Extent,
@@ -129,7 +130,7 @@ impl Picture for Deformation<'_> {
         let mut chart = self.panel.chart(&ground_area, self.extent.y)?;
         axes(&mut chart, X_DESC, Y_DESC, PAPER)?;
         let u_final = run.history.last().map_or(0.0, |h| h.u + run_increment(run));
-        draw_ground(&mut chart, &run.profile, u_final, d, self.extent)?;
+        draw_ground(&mut chart, &run.profile, u_final, d, run.rake, self.extent)?;
         for h in &self.bands {
             let color = viridis(h.u / d / u_max);
             draw_band(
@@ -142,7 +143,16 @@ impl Picture for Deformation<'_> {
                 PAPER.line - 1,
             )?;
         }
-        draw_outline(&mut chart, &run.profile, u_final, d, self.extent, PAPER)?;
+        let profile = &run.profile;
+        draw_outline(
+            &mut chart,
+            profile,
+            u_final,
+            d,
+            run.rake,
+            self.extent,
+            PAPER,
+        )?;
         colour_bar(root, &bar_area, u_max, PAPER)?;
 
         let shear: Vec<(f64, f64)> = run
@@ -211,28 +221,27 @@ pub(crate) fn run_increment(run: &RunData) -> f64 {
     }
 }
 
-/// The ground fill: the trench floor behind the blade and the soil in
-/// front of the face below `surface`.
+/// The ground fill: the trench floor behind the blade tip (at u, depth d)
+/// and the soil in front of the face below `surface`, which starts where
+/// the face meets it; for an inclined blade (`rake` < 90°) the soil's
+/// left boundary is the face line from the tip up to that point.
 pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
     chart: &mut Chart<'a, DB>,
     surface: &[SurfacePoint],
     u: f64,
     d: f64,
+    rake: f64,
     ext: Extent,
 ) -> DrawResult {
-    let face = u / d;
+    let tip = u / d;
     let floor = ext.y.0;
     chart
         .draw_series(std::iter::once(Rectangle::new(
-            [(ext.x.0, floor), (face, -1.0)],
+            [(ext.x.0, floor), (tip, -1.0)],
             style::GROUND.filled(),
         )))
         .map_err(text)?;
-    let mut outline = vec![(face, floor)];
-    outline.extend(visible(surface, d, ext));
-    let last_y = outline.last().map_or(0.0, |p| p.1);
-    outline.push((ext.x.1, last_y));
-    outline.push((ext.x.1, floor));
+    let outline = ground_outline(&visible(surface, d, ext), tip, rake, ext);
     chart
         .draw_series(std::iter::once(Polygon::new(
             outline,
@@ -250,12 +259,16 @@ pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
     Ok(())
 }
 
-/// The surface line, the trench floor and the blade, drawn over the bands.
+/// The surface line, the trench floor and the blade (an inclined plate
+/// for `rake` < 90°, see [`blade_outline`]), drawn over the bands; the
+/// blade reaches the top of the picture.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
     chart: &mut Chart<'a, DB>,
     surface: &[SurfacePoint],
     u: f64,
     d: f64,
+    rake: f64,
     ext: Extent,
     sizes: Sizes,
 ) -> DrawResult {
@@ -271,12 +284,19 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
         .draw_series(LineSeries::new([(ext.x.0, -1.0), (face, -1.0)], edge))
         .map_err(text)?;
     let thickness = 0.06 * ext.height().min(ext.width()).max(1.0) / 1.5;
-    chart
-        .draw_series(std::iter::once(Rectangle::new(
-            [(face - thickness, -1.0), (face, ext.y.1)],
-            style::BLADE.filled(),
-        )))
-        .map_err(text)?;
+    if is_vertical(rake) {
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(face - thickness, -1.0), (face, ext.y.1)],
+                style::BLADE.filled(),
+            )))
+            .map_err(text)?;
+    } else {
+        let plate = blade_outline(face, rake, thickness, ext.y.1, ext.x.0);
+        chart
+            .draw_series(std::iter::once(Polygon::new(plate, style::BLADE.filled())))
+            .map_err(text)?;
+    }
     Ok(())
 }
 

@@ -17,6 +17,7 @@
 //! files name the generic family `sans-serif`.
 
 mod animation;
+mod blade;
 mod curves;
 mod deformation;
 mod render;
@@ -61,19 +62,23 @@ pub struct SurfacePoint {
 pub struct Frame {
     /// Increments done (0 = flat ground before the first).
     pub step: usize,
-    /// Blade position: the face is at x = u.
+    /// Blade position: the tip is at (u, −d).
     pub u: f64,
-    /// The surface from the face on.
+    /// The surface from the face on (its first point is where the face
+    /// meets the surface, behind the tip for an inclined blade).
     pub surface: Vec<SurfacePoint>,
 }
 
 /// Everything the pictures of one run need.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct RunData {
     /// The case title, used as the pictures' title and legend entry.
     pub title: String,
     /// Blade depth d (length).
     pub depth: f64,
+    /// Rake α, degrees: the face's angle from the horizontal on the soil
+    /// side (90: vertical; less: the face leans back from the tip).
+    pub rake: f64,
     /// Initial unit weight γ0 (to normalise measured forces).
     pub unit_weight: f64,
     /// Shear band width dB (length); 0 draws slip lines (original model).
@@ -84,6 +89,22 @@ pub struct RunData {
     pub profile: Vec<SurfacePoint>,
     /// Surfaces during the run, in order (for the animation).
     pub frames: Vec<Frame>,
+}
+
+impl Default for RunData {
+    /// An empty run of a vertical blade.
+    fn default() -> Self {
+        RunData {
+            title: String::new(),
+            depth: 0.0,
+            rake: 90.0,
+            unit_weight: 0.0,
+            band_width: 0.0,
+            history: Vec::new(),
+            profile: Vec::new(),
+            frames: Vec::new(),
+        }
+    }
 }
 
 /// A measured force-displacement curve: (u, force per unit width), in the

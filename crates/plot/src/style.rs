@@ -179,9 +179,10 @@ pub struct Extent {
 }
 
 impl Extent {
-    /// From 0.25 d behind the blade's start and 0.25 d below its tip to
-    /// 0.5 d beyond the farthest ground that any of `surfaces` shows moved
-    /// (at least 1.5 d ahead of the blade) and 0.3 d above the highest
+    /// From 0.25 d behind the blade's start (or behind where an inclined
+    /// face meets the ground, if that is farther back) and 0.25 d below its
+    /// tip to 0.5 d beyond the farthest ground that any of `surfaces` shows
+    /// moved (at least 1.5 d ahead of the blade) and 0.3 d above the highest
     /// surface point there. Long shallow bands of the refined model can
     /// emerge farther ahead, where the ground hardly moves; they are cut at
     /// the right edge.
@@ -199,8 +200,14 @@ impl Extent {
                 y_top = y_top.max(p.y);
             }
         }
+        // An inclined face meets the surface behind the tip: keep that
+        // ground in view (at the blade's start it lies left of x = 0).
+        let x_lo = surfaces
+            .iter()
+            .filter_map(|s| s.first())
+            .fold(-0.25f64, |lo, p| lo.min(p.x / d - 0.25));
         Extent {
-            x: (-0.25, x_hi),
+            x: (x_lo, x_hi),
             y: (-1.25, (y_top / d + 0.3).max(0.5)),
         }
     }

@@ -46,6 +46,7 @@ fn run(band_width: f64) -> RunData {
     RunData {
         title: "A made-up run".into(),
         depth: d,
+        rake: 90.0,
         unit_weight: 1.0,
         band_width,
         history,
