@@ -76,6 +76,26 @@ fn rake_outside_its_range_is_refused() {
             assert_eq!(err.lines().count(), 1);
         }
     }
+    // Eq. (1) must grow with φ: sin(α − φw) > 0.
+    let o = soilcut(
+        dir.path(),
+        &[
+            "check",
+            "case.toml",
+            "--set",
+            "blade.rake=30",
+            "--set",
+            "soil.repose=20",
+            "--set",
+            "blade.wall_friction=31",
+        ],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with("error: case.toml: blade.wall_friction: "),
+        "{err}"
+    );
     // Sand at repose must still slope away from a face leaning back.
     let o = soilcut(
         dir.path(),

@@ -267,12 +267,7 @@ impl Case {
 
     fn validate_loads(&self) -> Result<(), CaseError> {
         let rake = finite("blade.rake", self.blade.rake)?;
-        if !(20.0..=90.0).contains(&rake) {
-            return Err(CaseError::new(
-                "blade.rake",
-                format!("must be in [20°, 90°] (got {rake}°)"),
-            ));
-        }
+        self.validate_rake(rake)?;
         non_negative("blade.adhesion", self.blade.adhesion)?;
         self.validate_depth_path()?;
         // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
@@ -381,6 +376,26 @@ impl Case {
                 format!(
                     "must be < blade.depth ({}) (got {})",
                     self.blade.depth, s.band_width
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_rake(&self, rake: f64) -> Result<(), CaseError> {
+        if !(20.0..=90.0).contains(&rake) {
+            return Err(CaseError::new(
+                "blade.rake",
+                format!("must be in [20°, 90°] (got {rake}°)"),
+            ));
+        }
+        // Eq. (1) grows with φ only while sin(α − φw) > 0.
+        if self.blade.wall_friction >= rake {
+            return Err(CaseError::new(
+                "blade.wall_friction",
+                format!(
+                    "must be below blade.rake ({rake}°) (got {}°)",
+                    self.blade.wall_friction
                 ),
             ));
         }

@@ -260,10 +260,7 @@ impl Search {
                 let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
                 let grid = r / dx;
                 if let Some(tan_beta) = input.rake.physical(grid) {
-                    if lower
-                        .at(tan_beta, input)
-                        .can_beat(weight, tan_beta, scan.bar)
-                    {
+                    if lower.can_beat(weight, tan_beta, scan.bar, input) {
                         let slope = Slope { grid, tan_beta };
                         self.evaluate(surface, input, &mut scan, j, slope, weight);
                     }
@@ -303,13 +300,16 @@ impl Search {
         self.evaluations += 1;
         let band = slope.band(scan, j, input.band_width);
         let angles = (input.angles)(self.band_angles(surface, &band, input.fresh));
-        let rising = slope.tan_beta > input.sinking_below;
-        if angles.fresh
-            || input
+        let t = slope.tan_beta;
+        let can_beat = |rising| {
+            input
                 .table
                 .below(angles.friction, rising)
-                .can_beat(weight, slope.tan_beta, scan.bar)
-        {
+                .can_beat(weight, t, scan.bar)
+        };
+        // Which face friction is the lesser depends on the rake (see
+        // `Lower`): where the block may sink, either may be.
+        if angles.fresh || can_beat(true) || (t <= input.sinking_below && can_beat(false)) {
             self.consider(input, scan, j, slope, weight, angles);
         }
     }
@@ -449,6 +449,7 @@ impl Search {
     {
         let far = FarField::new(scan, ground_unit_weight, j0 - scan.b);
         let fresh = (input.angles)(input.fresh);
+        let fresh_walls = Lower::new(fresh.friction, input);
         let mut n1 = far.first_admissible(scan.r_min);
         while scan.b + n1 < max_nodes {
             if scan.beyond_reach(far.weight(n1), input.min_factor) {
@@ -459,12 +460,15 @@ impl Search {
             // with tan β: (n₁, β(n₂)) bounds the block from below.
             let slopes = (far.slope(n1, &input.rake), far.slope(n2, &input.rake));
             if let (Some(first), Some(last)) = slopes {
-                let factor2 = (input.factor)(fresh, last.tan_beta);
                 let length = first.length(n1, scan.dx);
-                let bound = input
-                    .loads
-                    .force(&factor2, far.weight(n1), length, last.tan_beta);
-                if bound.is_some_and(|p| p <= scan.bar) {
+                let t2 = last.tan_beta;
+                let bound =
+                    |factor: &ForceFactor| input.loads.force(factor, far.weight(n1), length, t2);
+                let below = |p: Option<f64>| p.is_some_and(|p| p <= scan.bar);
+                let could_sink = t2 <= input.sinking_below;
+                if below(bound(&fresh_walls.rising))
+                    || (could_sink && below(bound(&fresh_walls.sinking)))
+                {
                     for n in n1..=n2 {
                         let weight = far.weight(n);
                         if scan.beyond_reach(weight, input.min_factor) {
@@ -528,16 +532,24 @@ impl Lower {
         }
     }
 
-    fn at<A, F>(&self, tan_beta: f64, input: &SearchInput<A, F>) -> &ForceFactor
+    /// Whether W (P/W) ≤ `bar` at tan β for either face friction the block
+    /// may have there. Eq. (1) grows with φ (as sin(α ± φw) > 0), but with
+    /// the face friction only where α + β + φ ± φw > 90°: for a vertical
+    /// blade the sinking block's −φw is always the lesser, for a raked one
+    /// either may be, so both are tried.
+    fn can_beat<A, F>(
+        &self,
+        weight: f64,
+        tan_beta: f64,
+        bar: f64,
+        input: &SearchInput<A, F>,
+    ) -> bool
     where
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        if tan_beta > input.sinking_below {
-            &self.rising
-        } else {
-            &self.sinking
-        }
+        self.rising.can_beat(weight, tan_beta, bar)
+            || (tan_beta <= input.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
     }
 }
 

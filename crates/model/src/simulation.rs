@@ -118,11 +118,18 @@ impl Laws {
         // where the block does not rise (β + ψ ≤ 0, compaction) it acts
         // upward on the block, the least-force choice at β + ψ = 0.
         let can_sink = case.soil.dilation.min() < 0.0;
-        let lowest_wall = if can_sink { walls.1 } else { walls.0 };
+        // The infimum of P/W (β → 0, least φ) over the face frictions the
+        // block may have: which one is least depends on the rake.
+        let at_zero = |wall: f64| ForceFactor::new(material.friction.min(), wall).at_zero_angle();
+        let min_factor = if can_sink {
+            at_zero(walls.0).min(at_zero(walls.1))
+        } else {
+            at_zero(walls.0)
+        };
         Laws {
             fresh_rising: ForceFactor::new(phi0, walls.0),
             fresh_sinking: ForceFactor::new(phi0, walls.1),
-            min_factor: ForceFactor::new(material.friction.min(), lowest_wall).at_zero_angle(),
+            min_factor,
             sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
             wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
             table: FactorTable::new(walls),

@@ -101,3 +101,33 @@ fn soil_is_conserved_on_an_inclined_blade() {
     let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
     assert!(drift.abs() < 1e-9, "refined, α=60: drift {drift:e}");
 }
+
+/// Found by a random sweep: a 45° blade in compacting soil. For a raked
+/// blade the sinking block's face friction (−φw) is not always the one of
+/// least force (Eq. (1) grows with the face friction only where
+/// α + β + φ ± φw > 90°), so a bound that assumed it pruned the best
+/// candidate and the run stopped with "no admissible mechanism".
+#[test]
+fn pruning_holds_for_either_face_friction() {
+    let mut case = common::refined("table1-hs", 2.0, 100.0);
+    case.blade.wall_friction = 14.643671488853254;
+    case.blade.rake = 44.919641801594224;
+    case.soil.repose = 24.17812028809093;
+    case.soil.friction = AngleLaw {
+        initial: 16.548591382057694,
+        peak: 32.38252442868833,
+        residual: 31.99914739834374,
+    };
+    case.soil.dilation = AngleLaw {
+        initial: -9.79526550108956,
+        peak: 2.3403156322219254,
+        residual: 0.0,
+    };
+    case.soil.peak_shear = 1.7949911882687086;
+    case.soil.residual_shear = 5.905982773926114;
+    case.soil.band_width = 6.955949706770847 * 0.6;
+    let (history, sim) = common::run(&case);
+    assert_eq!(history.len(), case.steps());
+    let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+    assert!(drift.abs() < 1e-9, "{drift:e}");
+}
