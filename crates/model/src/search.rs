@@ -186,6 +186,8 @@ struct Scan {
     r_min: f64,
     /// Best force so far, widened by the tie tolerance.
     bar: f64,
+    /// Whether bounds may reject candidates unevaluated.
+    prune: bool,
 }
 
 impl Scan {
@@ -212,6 +214,29 @@ impl Search {
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
+        let found = self.scan(surface, input, max_nodes, true);
+        if found.is_some() {
+            return found;
+        }
+        // The bounds are proven, so this does not happen; if it ever does,
+        // tests fail here and a user's run still gets the true minimum.
+        debug_assert!(false, "a bound rejected every admissible candidate");
+        self.scan(surface, input, max_nodes, false)
+    }
+
+    /// The outward scan; with `prune` false, no candidate is rejected
+    /// unevaluated except beyond the stopping bound.
+    fn scan<A, F>(
+        &mut self,
+        surface: &mut Surface,
+        input: &SearchInput<A, F>,
+        max_nodes: usize,
+        prune: bool,
+    ) -> Option<Choice>
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
         self.admissible.clear();
         self.prefix.clear();
         self.prefix.push([0.0; 3]);
@@ -225,11 +250,10 @@ impl Search {
             sum_gk: 0.0,
             r_min: f64::INFINITY,
             bar: f64::INFINITY,
+            prune,
         };
-        if let Some(force) = self
-            .previous
-            .and_then(|j| self.seed(surface, input, &scan, j))
-        {
+        let seed = self.previous.filter(|_| prune);
+        if let Some(force) = seed.and_then(|j| self.seed(surface, input, &scan, j)) {
             scan.improve(force);
         }
         let mut phi_lo = surface.friction[b];
@@ -260,7 +284,7 @@ impl Search {
                 let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
                 let grid = r / dx;
                 if let Some(tan_beta) = input.rake.physical(grid) {
-                    if lower.can_beat(weight, tan_beta, scan.bar, input) {
+                    if !scan.prune || lower.can_beat(weight, tan_beta, scan.bar, input) {
                         let slope = Slope { grid, tan_beta };
                         self.evaluate(surface, input, &mut scan, j, slope, weight);
                     }
@@ -309,7 +333,8 @@ impl Search {
         };
         // Which face friction is the lesser depends on the rake (see
         // `Lower`): where the block may sink, either may be.
-        if angles.fresh || can_beat(true) || (t <= input.sinking_below && can_beat(false)) {
+        let may_win = || can_beat(true) || (t <= input.sinking_below && can_beat(false));
+        if angles.fresh || !scan.prune || may_win() {
             self.consider(input, scan, j, slope, weight, angles);
         }
     }
@@ -466,7 +491,8 @@ impl Search {
                     |factor: &ForceFactor| input.loads.force(factor, far.weight(n1), length, t2);
                 let below = |p: Option<f64>| p.is_some_and(|p| p <= scan.bar);
                 let could_sink = t2 <= input.sinking_below;
-                if below(bound(&fresh_walls.rising))
+                if !scan.prune
+                    || below(bound(&fresh_walls.rising))
                     || (could_sink && below(bound(&fresh_walls.sinking)))
                 {
                     for n in n1..=n2 {
