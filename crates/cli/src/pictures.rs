@@ -99,6 +99,12 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
             "y_emergence",
         ],
     )?;
+    // Runs from before depth paths have no `depth` column: the tip was at
+    // blade.depth throughout.
+    let depth = match run.history.optional_column("depth") {
+        Some(depth) => depth,
+        None => vec![run.case.blade.depth; step.len()],
+    };
     let history = (0..step.len())
         .map(|i| Increment {
             step: step[i] as usize,
@@ -107,6 +113,7 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
             beta_deg: beta[i],
             x_emergence: xe[i],
             y_emergence: ye[i],
+            depth: depth[i],
         })
         .collect();
     let [x, y, shear] = columns(&run.profile, ["x", "y", "accumulated_shear"])?;
@@ -137,4 +144,49 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
         profile: surface(&x, &y, &shear),
         frames,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::fs;
+
+    /// A finished run of `cases/paper/original.toml` (d = 20) with two
+    /// increments, `history` its history.csv.
+    fn finished(history: &str) -> (tempfile::TempDir, FinishedRun) {
+        let tmp = tempfile::tempdir().unwrap();
+        let case = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/paper/original.toml");
+        fs::copy(case, tmp.path().join("case.resolved.toml")).unwrap();
+        fs::write(tmp.path().join("history.csv"), history).unwrap();
+        fs::write(
+            tmp.path().join("profile.csv"),
+            "x,y,accumulated_shear,unit_weight\n0.04,0,0,1\n",
+        )
+        .unwrap();
+        let run = read_finished_run(tmp.path()).unwrap();
+        (tmp, run)
+    }
+
+    const OLD: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,\
+        x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area";
+
+    #[test]
+    fn the_depth_column_is_read_and_older_runs_are_at_blade_depth() {
+        let (_tmp, run) = finished(&format!(
+            "{OLD},depth\n1,0,0,1,1,1,0,20,50,1,0,35,0.1,0,0,10\n\
+             2,0.04,0.002,1,1,1,0,20,50,1,0,35,0.1,0,0,10.01\n"
+        ));
+        let data = run_data(&run).unwrap();
+        let depths: Vec<f64> = data.history.iter().map(|h| h.depth).collect();
+        assert_eq!(depths, [10.0, 10.01]);
+        assert_eq!(data.depth, 20.0, "the reference depth");
+
+        let (_tmp, run) = finished(&format!(
+            "{OLD}\n1,0,0,1,1,1,0,20,50,1,0,35,0.1,0,0\n\
+             2,0.04,0.002,1,1,1,0,20,50,1,0,35,0.1,0,0\n"
+        ));
+        let data = run_data(&run).unwrap();
+        let depths: Vec<f64> = data.history.iter().map(|h| h.depth).collect();
+        assert_eq!(depths, [20.0, 20.0], "blade.depth without the column");
+    }
 }

@@ -17,8 +17,9 @@ pub const FRAME_ROWS: usize = 400;
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceFrame {
     pub step: usize,
-    /// Blade position: the tip is at (u, −d) (the face, at x = u for a
-    /// vertical blade, leans back from it for an inclined one).
+    /// Blade position: the tip is at (u, −t), t the tip's depth there
+    /// (`blade.depth` but on a depth path; the face, at x = u for a
+    /// vertical blade, leans back from the tip for an inclined one).
     pub u: f64,
     /// The surface from where the face meets it to the end of the domain.
     pub surface: Vec<ProfilePoint>,
@@ -148,6 +149,13 @@ impl Table {
             .ok_or_else(|| RunFilesError::new(&self.path, format!("no column `{name}`")))?;
         Ok(self.rows.iter().map(|r| r[i]).collect())
     }
+
+    /// The values of column `name`, or `None` if the table has no such
+    /// column (a column added in a later version, absent from older runs).
+    pub fn optional_column(&self, name: &str) -> Option<Vec<f64>> {
+        let i = self.header.iter().position(|h| h == name)?;
+        Some(self.rows.iter().map(|r| r[i]).collect())
+    }
 }
 
 /// The files of a finished run: `case.resolved.toml`, `history.csv`,
@@ -196,6 +204,8 @@ mod tests {
             .unwrap_err()
             .message
             .contains("no column `beta`"));
+        assert_eq!(t.optional_column("u"), Some(vec![0.0, 2.0]));
+        assert_eq!(t.optional_column("depth"), None);
     }
 
     #[test]

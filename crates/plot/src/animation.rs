@@ -23,8 +23,9 @@ pub const LAST_DELAY: u16 = 250;
 
 /// Draws the cutting process as an animated GIF, one picture per frame of
 /// `run.frames` (at most [`MAX_FRAMES`], evenly spaced): top, to equal
-/// scales in x/d and y/d, the ground at that moment, the blade and the
-/// slip line or shear band of the increment just done; below, the force
+/// scales in x/d and y/d, the ground at that moment, the blade (its tip
+/// at that moment's depth, the trench floor behind it where the tip went)
+/// and the slip line or shear band of the increment just done; below, the force
 /// curve P/(γ0 d²) growing up to that moment, with a dot at its end.
 /// Frames show for 0.05 s (the last for 2.5 s), so 120 frames last about
 /// 8.5 s; 960 px wide. Unchanged pixels are transparent in each frame
@@ -94,7 +95,7 @@ impl Picture for Scene<'_> {
 
         let mut chart = self.layout.chart(&ground_area, ext.y)?;
         axes(&mut chart, X_DESC, Y_DESC, SMALL)?;
-        draw_ground(&mut chart, &frame.surface, frame.u, d, run.rake, ext)?;
+        draw_ground(&mut chart, run, &frame.surface, frame.u, ext)?;
         if let Some(h) = done.last() {
             draw_band(
                 &mut chart,
@@ -106,7 +107,7 @@ impl Picture for Scene<'_> {
                 SMALL.line,
             )?;
         }
-        draw_outline(&mut chart, &frame.surface, frame.u, d, run.rake, ext, SMALL)?;
+        draw_outline(&mut chart, run, &frame.surface, frame.u, ext, SMALL)?;
         let (x1, y1) = chart.backend_coord(&(ext.x.1, ext.y.1));
         let label = format!("u/d = {:.2}", frame.u / d);
         let style = font(SMALL.desc).pos(Pos::new(HPos::Right, VPos::Top));

@@ -1,10 +1,12 @@
 //! The pattern of deformation (paper Figs. 4 and 6): ground, blade and the
 //! slip lines or shear bands of the run, with the accumulated shear below.
 
-use crate::blade::{blade_outline, ground_outline, is_vertical};
+use crate::blade::{
+    blade_outline, ground_outline, height_at, is_level, is_vertical, slip_start, trench_floor,
+};
 use crate::render::{save, text, DrawResult, Picture};
 use crate::style::{
-    self, axes, curve, font, round_up, title_height, titled, top, viridis, Chart, Extent,
+    self, axes, curve, font, round_up, thin, title_height, titled, top, viridis, Chart, Extent,
     GroundPanel, Legend, Mark, Sizes, PAPER,
 };
 use crate::{Increment, PlotError, RunData, SurfacePoint};
@@ -19,7 +21,8 @@ use std::path::Path;
 /// subset of the chosen slip lines (original model) or shear bands of
 /// width dB (refined model, shaded between the lower boundary and the
 /// parallel upper one), each where it was when it was active: from the
-/// blade tip (u, −d) to its emergence point (cut at the right edge, 0.5 d
+/// blade tip (u, −t) of its increment (t the tip's depth then, d but for
+/// a blade following a depth path) to its emergence point (cut at the right edge, 0.5 d
 /// beyond the ground that moved visibly), coloured by u/d (colour bar on
 /// the right). The subset is every increment whose emergence point
 /// jumped plus 24 evenly spaced ones. Bottom panel, sharing the x axis:
@@ -129,8 +132,8 @@ impl Picture for Deformation<'_> {
 
         let mut chart = self.panel.chart(&ground_area, self.extent.y)?;
         axes(&mut chart, X_DESC, Y_DESC, PAPER)?;
-        let u_final = run.history.last().map_or(0.0, |h| h.u + run_increment(run));
-        draw_ground(&mut chart, &run.profile, u_final, d, run.rake, self.extent)?;
+        let u_final = run.final_position();
+        draw_ground(&mut chart, run, &run.profile, u_final, self.extent)?;
         for h in &self.bands {
             let color = viridis(h.u / d / u_max);
             draw_band(
@@ -143,16 +146,7 @@ impl Picture for Deformation<'_> {
                 PAPER.line - 1,
             )?;
         }
-        let profile = &run.profile;
-        draw_outline(
-            &mut chart,
-            profile,
-            u_final,
-            d,
-            run.rake,
-            self.extent,
-            PAPER,
-        )?;
+        draw_outline(&mut chart, run, &run.profile, u_final, self.extent, PAPER)?;
         colour_bar(root, &bar_area, u_max, PAPER)?;
 
         let shear: Vec<(f64, f64)> = run
@@ -212,36 +206,38 @@ fn stems<'a, DB: DrawingBackend + 'a>(
     out.into_iter().map(|(_, stem)| stem).collect()
 }
 
-/// The blade displacement of one increment, from the history (the face
-/// is one increment ahead of the last mechanism when the run ends).
-pub(crate) fn run_increment(run: &RunData) -> f64 {
-    match run.history.as_slice() {
-        [.., a, b] => b.u - a.u,
-        _ => 0.0,
-    }
-}
-
-/// The ground fill: the trench floor behind the blade tip (at u, depth d)
+/// The ground fill with the blade's tip at displacement `u`: below the
+/// trench floor behind the tip (where the tip went, see [`trench_floor`])
 /// and the soil in front of the face below `surface`, which starts where
-/// the face meets it; for an inclined blade (`rake` < 90°) the soil's
-/// left boundary is the face line from the tip up to that point.
+/// the face meets it, down to the bottom of the picture (below the
+/// deepest tip); for an inclined blade (`rake` < 90°) the soil's left
+/// boundary is the face line from the tip up to that point.
 pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
     chart: &mut Chart<'a, DB>,
+    run: &RunData,
     surface: &[SurfacePoint],
     u: f64,
-    d: f64,
-    rake: f64,
     ext: Extent,
 ) -> DrawResult {
-    let tip = u / d;
+    let d = run.depth;
+    let trench = trench_floor(run, u, ext.x.0);
+    let tip = trench[trench.len() - 1];
     let floor = ext.y.0;
-    chart
-        .draw_series(std::iter::once(Rectangle::new(
-            [(ext.x.0, floor), (tip, -1.0)],
-            style::GROUND.filled(),
-        )))
-        .map_err(text)?;
-    let outline = ground_outline(&visible(surface, d, ext), tip, rake, ext);
+    if is_level(&trench) {
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(ext.x.0, floor), tip],
+                style::GROUND.filled(),
+            )))
+            .map_err(text)?;
+    } else {
+        let mut below = thin(chart, &trench);
+        below.extend([(tip.0, floor), (ext.x.0, floor)]);
+        chart
+            .draw_series(std::iter::once(Polygon::new(below, style::GROUND.filled())))
+            .map_err(text)?;
+    }
+    let outline = ground_outline(&visible(surface, d, ext), tip, run.rake, ext);
     chart
         .draw_series(std::iter::once(Polygon::new(
             outline,
@@ -259,20 +255,19 @@ pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
     Ok(())
 }
 
-/// The surface line, the trench floor and the blade (an inclined plate
-/// for `rake` < 90°, see [`blade_outline`]), drawn over the bands; the
-/// blade reaches the top of the picture.
-#[allow(clippy::too_many_arguments)]
+/// The surface line, the trench floor (see [`trench_floor`]) and the
+/// blade with its tip at displacement `u` (an inclined plate for
+/// `rake` < 90°, see [`blade_outline`]), drawn over the bands; the blade
+/// reaches the top of the picture.
 pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
     chart: &mut Chart<'a, DB>,
+    run: &RunData,
     surface: &[SurfacePoint],
     u: f64,
-    d: f64,
-    rake: f64,
     ext: Extent,
     sizes: Sizes,
 ) -> DrawResult {
-    let face = u / d;
+    let d = run.depth;
     let edge = style::GROUND_EDGE.stroke_width(sizes.line);
     curve(
         chart,
@@ -280,19 +275,38 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
         style::GROUND_EDGE,
         sizes.line,
     )?;
-    chart
-        .draw_series(LineSeries::new([(ext.x.0, -1.0), (face, -1.0)], edge))
-        .map_err(text)?;
+    let trench = trench_floor(run, u, ext.x.0);
+    let tip = trench[trench.len() - 1];
+    if is_level(&trench) {
+        chart
+            .draw_series(LineSeries::new([trench[0], tip], edge))
+            .map_err(text)?;
+    } else {
+        curve(chart, &trench, style::GROUND_EDGE, sizes.line)?;
+    }
+    let face = tip.0;
     let thickness = 0.06 * ext.height().min(ext.width()).max(1.0) / 1.5;
-    if is_vertical(rake) {
+    if is_vertical(run.rake) && is_level(&trench) {
         chart
             .draw_series(std::iter::once(Rectangle::new(
-                [(face - thickness, -1.0), (face, ext.y.1)],
+                [(face - thickness, tip.1), (face, ext.y.1)],
                 style::BLADE.filled(),
             )))
             .map_err(text)?;
+    } else if is_vertical(run.rake) {
+        // A deepening blade's back stands on the floor its tip cut.
+        let back = face - thickness;
+        let plate = vec![
+            (back, height_at(&trench, back)),
+            tip,
+            (face, ext.y.1),
+            (back, ext.y.1),
+        ];
+        chart
+            .draw_series(std::iter::once(Polygon::new(plate, style::BLADE.filled())))
+            .map_err(text)?;
     } else {
-        let plate = blade_outline(face, rake, thickness, ext.y.1, ext.x.0);
+        let plate = blade_outline(tip, run.rake, thickness, ext.y.1, ext.x.0);
         chart
             .draw_series(std::iter::once(Polygon::new(plate, style::BLADE.filled())))
             .map_err(text)?;
@@ -312,7 +326,7 @@ fn visible(surface: &[SurfacePoint], d: f64, ext: Extent) -> Vec<(f64, f64)> {
     points
 }
 
-/// The slip line of increment `h` from the blade tip to the emergence
+/// The slip line of increment `h` from the blade tip (`h.u`, −`h.depth`) to the emergence
 /// point; with `band_width` > 0 also the band's upper boundary, parallel
 /// and `band_width` above it (normal distance), and the band shaded; cut
 /// at `x_max` (in units of d).
@@ -325,7 +339,7 @@ pub(crate) fn draw_band<'a, DB: DrawingBackend + 'a>(
     color: RGBColor,
     width: u32,
 ) -> DrawResult {
-    let a = (h.u / d, -1.0);
+    let a = slip_start(h, d);
     let mut b = (h.x_emergence / d, h.y_emergence / d);
     if b.0 > x_max && b.0 > a.0 {
         b = (x_max, a.1 + (b.1 - a.1) * (x_max - a.0) / (b.0 - a.0));

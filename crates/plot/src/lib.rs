@@ -36,7 +36,7 @@ pub struct Increment {
     /// Increment number, from 1.
     pub step: usize,
     /// Blade displacement u at which the mechanism was evaluated: the blade
-    /// tip was at (u, −d).
+    /// tip was at (u, −`depth`).
     pub u: f64,
     /// P*/(γ0 d²).
     pub force_norm: f64,
@@ -45,6 +45,9 @@ pub struct Increment {
     /// Where the slip line (lower band boundary) met the surface.
     pub x_emergence: f64,
     pub y_emergence: f64,
+    /// Depth of the blade tip during the increment (length): the run's
+    /// [`RunData::depth`] unless the blade followed a depth path.
+    pub depth: f64,
 }
 
 /// A node of the ground surface.
@@ -62,7 +65,7 @@ pub struct SurfacePoint {
 pub struct Frame {
     /// Increments done (0 = flat ground before the first).
     pub step: usize,
-    /// Blade position: the tip is at (u, −d).
+    /// Blade position: the tip is at (u, −[`RunData::tip_depth`] (u)).
     pub u: f64,
     /// The surface from the face on (its first point is where the face
     /// meets the surface, behind the tip for an inclined blade).
@@ -74,7 +77,9 @@ pub struct Frame {
 pub struct RunData {
     /// The case title, used as the pictures' title and legend entry.
     pub title: String,
-    /// Blade depth d (length).
+    /// Blade depth d (length): the reference depth that lengths are drawn
+    /// in units of (the tip's depth in each increment is
+    /// [`Increment::depth`]).
     pub depth: f64,
     /// Rake α, degrees: the face's angle from the horizontal on the soil
     /// side (90: vertical; less: the face leans back from the tip).
@@ -104,6 +109,56 @@ impl Default for RunData {
             profile: Vec::new(),
             frames: Vec::new(),
         }
+    }
+}
+
+impl RunData {
+    /// Depth of the blade tip at blade displacement `u`: linear between
+    /// the increments' depths, the first one's before them; past the last
+    /// increment the last one's trend for at most one increment (the blade
+    /// ends one increment beyond its last mechanism), then constant.
+    /// [`RunData::depth`] for a run without increments.
+    pub fn tip_depth(&self, u: f64) -> f64 {
+        let h = &self.history;
+        match h.iter().position(|k| k.u > u) {
+            Some(0) => h[0].depth,
+            Some(k) => {
+                let (a, b) = (&h[k - 1], &h[k]);
+                a.depth + (b.depth - a.depth) * (u - a.u) / (b.u - a.u)
+            }
+            None => match h.as_slice() {
+                [] => self.depth,
+                [.., a, b] if b.depth != a.depth && b.u > a.u => {
+                    let run = (u - b.u).min(b.u - a.u);
+                    b.depth + (b.depth - a.depth) * run / (b.u - a.u)
+                }
+                [.., b] => b.depth,
+            },
+        }
+    }
+
+    /// Where the blade ends: one increment beyond the last mechanism.
+    pub fn final_position(&self) -> f64 {
+        match self.history.as_slice() {
+            [] => 0.0,
+            [.., b] => b.u + increment(&self.history),
+        }
+    }
+
+    /// The deepest the tip goes during the run (at least `depth`).
+    pub fn deepest(&self) -> f64 {
+        let depths = self.history.iter().map(|h| h.depth);
+        depths
+            .chain([self.tip_depth(self.final_position())])
+            .fold(self.depth, f64::max)
+    }
+}
+
+/// The blade displacement of one increment (0 for fewer than two).
+pub(crate) fn increment(history: &[Increment]) -> f64 {
+    match history {
+        [.., a, b] => b.u - a.u,
+        _ => 0.0,
     }
 }
 

@@ -181,7 +181,7 @@ pub struct Extent {
 impl Extent {
     /// From 0.25 d behind the blade's start (or behind where an inclined
     /// face meets the ground, if that is farther back) and 0.25 d below its
-    /// tip to 0.5 d beyond the farthest ground that any of `surfaces` shows
+    /// tip (its deepest, for a blade that follows a depth path) to 0.5 d beyond the farthest ground that any of `surfaces` shows
     /// moved (at least 1.5 d ahead of the blade) and 0.3 d above the highest
     /// surface point there. Long shallow bands of the refined model can
     /// emerge farther ahead, where the ground hardly moves; they are cut at
@@ -208,7 +208,10 @@ impl Extent {
             .fold(-0.25f64, |lo, p| lo.min(p.x / d - 0.25));
         Extent {
             x: (x_lo, x_hi),
-            y: (-1.25, (y_top / d + 0.3).max(0.5)),
+            y: (
+                (-1.25f64).min(-run.deepest() / d - 0.25),
+                (y_top / d + 0.3).max(0.5),
+            ),
         }
     }
 

@@ -21,6 +21,7 @@ fn run(band_width: f64) -> RunData {
                 beta_deg: 20.0 + (i % 30) as f64 * 0.3,
                 x_emergence: u + 25.0 - (i % 30) as f64 * 0.2,
                 y_emergence: 2.0,
+                depth: d,
             }
         })
         .collect();
@@ -120,6 +121,46 @@ fn animation_and_comparison() {
     assert!(e.message.contains(".png or .svg"), "{e}");
     assert!(draw_compare(&[], None, &tmp.path().join("d.png")).is_err());
     assert_eq!(Format::of(Path::new("x.SVG")).unwrap(), Format::Svg);
+}
+
+/// `run` with the blade deepening from d/2 to d over its first d of travel.
+fn deepening() -> RunData {
+    let mut run = run(0.0);
+    let d = run.depth;
+    for h in &mut run.history {
+        h.depth = d * (0.5 + 0.5 * (h.u / d).min(1.0));
+    }
+    run
+}
+
+/// A depth path is drawn: the deformation picture and the animation of a
+/// deepening blade differ from those of the same run at a constant depth
+/// (the geometry of the trench floor and the slip lines' starts is tested
+/// in the library), and are deterministic too.
+#[test]
+fn a_deepening_blade_is_drawn_along_its_path() {
+    let tmp = tempfile::tempdir().unwrap();
+    let draw = |run: &RunData, name: &str| {
+        let dir = tmp.path().join(name);
+        draw_run(run, &dir).unwrap();
+        draw_animation(run, &dir.join("a.gif")).unwrap();
+        read_all(&dir)
+    };
+    let flat = draw(&run(0.0), "flat");
+    let deep = draw(&deepening(), "deep");
+    let again = draw(&deepening(), "again");
+    for (((name, f), (_, x)), (_, y)) in flat.iter().zip(&deep).zip(&again) {
+        assert!(x == y, "{name} is the same when drawn again");
+        let differs = ["deformation.png", "deformation.svg", "a.gif"]
+            .iter()
+            .any(|n| name.ends_with(n));
+        let same = ["force.png", "beta.png"].iter().any(|n| name.ends_with(n));
+        if differs {
+            assert!(f != x, "{name} shows the depth path");
+        } else if same {
+            assert!(f == x, "{name} does not depend on the path");
+        }
+    }
 }
 
 /// Fonts are bundled: nothing may bring in plotters' `ttf` feature, which
