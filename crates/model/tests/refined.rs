@@ -164,3 +164,19 @@ fn unit_weight_stays_positive_in_a_long_hardening_run() {
     let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
     assert!(drift.abs() < 1e-9, "{drift:e}");
 }
+
+/// MODEL.md section 4: applying A_new = A0 (1 + Δut tan ψ / dB) to each
+/// band node's unit weight on its own drifts the mass by per cents over
+/// 5 d; the band-as-a-whole rule keeps it to round-off.
+#[test]
+fn the_paper_formula_node_by_node_does_not_conserve_mass() {
+    let mut case = common::refined("table1-s", 5.0, 100.0);
+    let drift = |case: &soilcut_model::Case| {
+        let (_, sim) = common::run(case);
+        (sim.mass() - sim.initial_mass()) / sim.initial_mass()
+    };
+    assert!(drift(&case).abs() < 1e-9);
+    case.choices.unit_weight = soilcut_model::UnitWeightRule::PerNodeFormula;
+    let per_node = drift(&case);
+    assert!(per_node.abs() > 1e-3, "per-node formula drift {per_node:e}");
+}
