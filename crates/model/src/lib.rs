@@ -9,6 +9,7 @@ pub mod analytic;
 pub mod avalanche;
 pub mod band;
 pub mod case;
+mod far_field;
 pub mod kinematics;
 pub mod material;
 pub mod mechanism;

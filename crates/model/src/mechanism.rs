@@ -137,6 +137,50 @@ impl FactorTable {
     }
 }
 
+/// What the extended equation adds to the block's weight (`analytic` gives
+/// it on flat ground), divided through by cos β:
+/// P = [(W + q Lt) sin(β + φ) + c Ls cos φ − a Lb cos(α + β + φ)] / sin(α + β + φ + φw),
+/// with Lt the block's top and Ls the slip line (horizontal lengths L of
+/// the slip line, L + (y_b + d) cot α of the top) and Lb the face contact.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Loads {
+    /// q: surcharge pressure on the free surface.
+    pub surcharge: f64,
+    /// a Lb: adhesion times the face contact length.
+    pub adhesion: f64,
+    /// c: cohesion on the slip surface.
+    pub cohesion: f64,
+    /// (y_b + d) cot α: how far the block's top reaches behind the tip.
+    pub face_run: f64,
+    /// (sin, cos) of α − 90°.
+    pub rake_offset: (f64, f64),
+}
+
+impl Loads {
+    /// P of a candidate of weight W whose slip line runs `length` ahead of
+    /// the tip, at tan β. Each added term is ≥ 0 (adhesion: validated), so
+    /// every bound on the weight alone stays a bound.
+    #[inline]
+    pub fn force(&self, factor: &ForceFactor, weight: f64, length: f64, t: f64) -> Option<f64> {
+        let f = factor.at(t)?;
+        let mut force = (weight + self.surcharge * (length + self.face_run)) * f;
+        if self.cohesion > 0.0 {
+            force += self.cohesion * length * factor.cohesion_at(t);
+        }
+        if self.adhesion > 0.0 {
+            // −cos(α + β + φ) / cos β = t cos(φ + α − 90°) + sin(φ + α − 90°).
+            let (sin_phi, cos_phi) = factor.friction_sin_cos();
+            let (sin_d, cos_d) = self.rake_offset;
+            let (sin_a, cos_a) = (
+                sin_phi * cos_d + cos_phi * sin_d,
+                cos_phi * cos_d - sin_phi * sin_d,
+            );
+            force += self.adhesion * (t * cos_a + sin_a) / factor.denominator(t);
+        }
+        Some(force)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -31,14 +31,16 @@
 //! emergence node, evaluated first. Beyond the last disturbed node the ground
 //! is undisturbed and flat, so W_j has a closed form in n = j − b and every
 //! band there has the fresh soil's angles: those candidates are handled in
-//! blocks, each skipped whole when W(n₁) (P/W)(β(n₂)) cannot beat the best.
+//! blocks (`far_field`), each skipped whole when W(n₁) (P/W)(β(n₂)) cannot
+//! beat the best.
 //!
 //! Ties: candidates whose force is within `TIE_TOLERANCE` (relative) of the
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
 
 use crate::band::Band;
-use crate::mechanism::{FactorTable, ForceFactor};
+use crate::far_field::{far_field_from, FarField};
+use crate::mechanism::{FactorTable, ForceFactor, Loads};
 use crate::rake::Rake;
 use crate::surface::Surface;
 
@@ -128,66 +130,22 @@ where
     pub loads: Loads,
 }
 
-/// What the extended equation adds to the block's weight (`analytic` gives
-/// it on flat ground), divided through by cos β:
-/// P = [(W + q Lt) sin(β + φ) + c Ls cos φ − a Lb cos(α + β + φ)] / sin(α + β + φ + φw),
-/// with Lt the block's top and Ls the slip line (horizontal lengths L of
-/// the slip line, L + (y_b + d) cot α of the top) and Lb the face contact.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Loads {
-    /// q: surcharge pressure on the free surface.
-    pub surcharge: f64,
-    /// a Lb: adhesion times the face contact length.
-    pub adhesion: f64,
-    /// c: cohesion on the slip surface.
-    pub cohesion: f64,
-    /// (y_b + d) cot α: how far the block's top reaches behind the tip.
-    pub face_run: f64,
-    /// (sin, cos) of α − 90°.
-    pub rake_offset: (f64, f64),
-}
-
-impl Loads {
-    /// P of a candidate of weight W whose slip line runs `length` ahead of
-    /// the tip, at tan β. Each added term is ≥ 0 (adhesion: validated), so
-    /// every bound on the weight alone stays a bound.
-    #[inline]
-    fn force(&self, factor: &ForceFactor, weight: f64, length: f64, t: f64) -> Option<f64> {
-        let f = factor.at(t)?;
-        let mut force = (weight + self.surcharge * (length + self.face_run)) * f;
-        if self.cohesion > 0.0 {
-            force += self.cohesion * length * factor.cohesion_at(t);
-        }
-        if self.adhesion > 0.0 {
-            // −cos(α + β + φ) / cos β = t cos(φ + α − 90°) + sin(φ + α − 90°).
-            let (sin_phi, cos_phi) = factor.friction_sin_cos();
-            let (sin_d, cos_d) = self.rake_offset;
-            let (sin_a, cos_a) = (
-                sin_phi * cos_d + cos_phi * sin_d,
-                cos_phi * cos_d - sin_phi * sin_d,
-            );
-            force += self.adhesion * (t * cos_a + sin_a) / factor.denominator(t);
-        }
-        Some(force)
-    }
-}
-
 /// The state of the outward scan over candidates.
-struct Scan {
-    b: usize,
-    d: f64,
-    dx: f64,
+pub(crate) struct Scan {
+    pub(crate) b: usize,
+    pub(crate) d: f64,
+    pub(crate) dx: f64,
     /// ½ γ_b (y_b + d): the face node's trapezoid share.
-    base: f64,
+    pub(crate) base: f64,
     /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
-    sum_gh: f64,
-    sum_gk: f64,
+    pub(crate) sum_gh: f64,
+    pub(crate) sum_gk: f64,
     /// Running minimum of r_i.
-    r_min: f64,
+    pub(crate) r_min: f64,
     /// Best force so far, widened by the tie tolerance.
-    bar: f64,
+    pub(crate) bar: f64,
     /// Whether bounds may reject candidates unevaluated.
-    prune: bool,
+    pub(crate) prune: bool,
 }
 
 impl Scan {
@@ -514,15 +472,15 @@ impl Search {
 
 /// The slope of a candidate's slip line on the grid and physically.
 #[derive(Clone, Copy, Debug)]
-struct Slope {
-    grid: f64,
-    tan_beta: f64,
+pub(crate) struct Slope {
+    pub(crate) grid: f64,
+    pub(crate) tan_beta: f64,
 }
 
 impl Slope {
     /// Physical horizontal length of the slip line reaching `nodes` nodes
     /// ahead of the tip on the grid.
-    fn length(&self, nodes: usize, dx: f64) -> f64 {
+    pub(crate) fn length(&self, nodes: usize, dx: f64) -> f64 {
         nodes as f64 * dx * (self.grid / self.tan_beta)
     }
 
@@ -577,91 +535,6 @@ impl Lower {
         self.rising.can_beat(weight, tan_beta, bar)
             || (tan_beta <= input.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
     }
-}
-
-/// Candidates on undisturbed flat ground (y = 0, unit weight γ0) from
-/// n_s = j0 − b on: with the running sums S over the nodes before j0,
-/// W(n) = Δx [½ γ_b (y_b + d) + S_gh + γ0 d (n − n_s)
-///            − (d/n) (S_gk + γ0 Σ_{k=n_s}^{n−1} k)].
-struct FarField {
-    d: f64,
-    dx: f64,
-    base: f64,
-    sum_gh: f64,
-    sum_gk: f64,
-    gamma: f64,
-    start: usize,
-}
-
-impl FarField {
-    fn new(scan: &Scan, gamma: f64, start: usize) -> Self {
-        FarField {
-            d: scan.d,
-            dx: scan.dx,
-            base: scan.base,
-            sum_gh: scan.sum_gh,
-            sum_gk: scan.sum_gk,
-            gamma,
-            start,
-        }
-    }
-
-    fn weight(&self, n: usize) -> f64 {
-        let s = self.start;
-        let ahead = (n - s) as f64;
-        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64;
-        let r = self.d / n as f64;
-        self.dx
-            * (self.base + self.sum_gh + self.gamma * self.d * ahead
-                - r * (self.sum_gk + self.gamma * triangle))
-    }
-
-    fn slope(&self, n: usize, rake: &Rake) -> Option<Slope> {
-        let grid = (self.d / n as f64) / self.dx;
-        Some(Slope {
-            grid,
-            tan_beta: rake.physical(grid)?,
-        })
-    }
-
-    /// First n ≥ n_s whose line passes below every node before it.
-    fn first_admissible(&self, r_min: f64) -> usize {
-        let admissible = |n: usize| self.d <= r_min * n as f64;
-        let mut n = if r_min.is_finite() {
-            ((self.d / r_min).ceil() as usize).max(self.start)
-        } else {
-            self.start
-        };
-        while n > self.start && admissible(n - 1) {
-            n -= 1;
-        }
-        while !admissible(n) {
-            n += 1;
-        }
-        n
-    }
-}
-
-/// Whether candidate j and everything beyond lies on undisturbed flat ground
-/// with a footprint (and its secant window) that does not reach disturbed
-/// nodes.
-fn far_field_from<A, F>(surface: &Surface, input: &SearchInput<A, F>, j: usize) -> bool
-where
-    A: Fn(BandAngles) -> BandAngles,
-    F: Fn(BandAngles, f64) -> ForceFactor,
-{
-    let undisturbed = surface.pristine_from;
-    if j < undisturbed {
-        return false;
-    }
-    let dx = surface.spacing;
-    let grid = (input.depth / (j - input.blade) as f64) / dx;
-    let Some(tan_beta) = input.rake.physical(grid) else {
-        return false;
-    };
-    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * (grid / tan_beta);
-    let footprint = thickness / grid / dx + 2.0;
-    (j - undisturbed) as f64 > footprint
 }
 
 fn node_angles(surface: &Surface, j: usize) -> BandAngles {
