@@ -180,3 +180,26 @@ fn the_paper_formula_node_by_node_does_not_conserve_mass() {
     let per_node = drift(&case);
     assert!(per_node.abs() > 1e-3, "per-node formula drift {per_node:e}");
 }
+
+/// With ψ ≠ 0 the area the ground gains is the band's dilation, at every
+/// increment; and that gain converges when the increment is halved (its
+/// discretisation error shrinks): Table 1 S over 2 d.
+#[test]
+fn area_gain_is_the_dilation_and_converges_with_the_increment() {
+    let gain = |per_depth: f64| {
+        let case = common::refined("table1-s", 2.0, per_depth);
+        let (history, sim) = common::run(&case);
+        let initial_area = sim.initial_mass() / case.soil.unit_weight;
+        let gained = sim.surface().area(sim.steps_done()) - initial_area;
+        let dilation: f64 = history.iter().map(|r| r.dilation_area).sum();
+        assert!(
+            (gained - dilation).abs() < 1e-9 * initial_area,
+            "{per_depth}"
+        );
+        gained
+    };
+    let (coarse, mid, fine) = (gain(100.0), gain(200.0), gain(400.0));
+    assert!(coarse > 0.0, "dilatant band: the ground grows");
+    let (first, second) = ((coarse - mid).abs(), (mid - fine).abs());
+    assert!(second < 0.5 * first, "changes {first} then {second}");
+}
