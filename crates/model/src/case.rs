@@ -50,10 +50,6 @@ impl AngleLaw {
     pub fn min(&self) -> f64 {
         self.values().into_iter().fold(f64::INFINITY, f64::min)
     }
-
-    pub fn max(&self) -> f64 {
-        self.values().into_iter().fold(f64::NEG_INFINITY, f64::max)
-    }
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -145,13 +145,19 @@ impl Laws {
         }
     }
 
+    /// Whether a block on a band at tan β with dilation ψ rises along the
+    /// face (β + ψ > 0), which sets the sign of the face friction.
+    fn rises(&self, tan_beta: f64, dilation: f64) -> bool {
+        tan_beta > self.sinking_below || {
+            // tan β + tan ψ > 0, multiplied by cos ψ > 0.
+            let (sin_psi, cos_psi) = trig::sin_cos(dilation);
+            tan_beta * cos_psi + sin_psi > 0.0
+        }
+    }
+
     /// Eq. (1) coefficients for a candidate band at tan β.
     fn factor(&self, angles: BandAngles, tan_beta: f64) -> ForceFactor {
-        let rising = tan_beta > self.sinking_below || {
-            // tan β + tan ψ > 0, multiplied by cos ψ > 0.
-            let (sin_psi, cos_psi) = trig::sin_cos(angles.dilation);
-            tan_beta * cos_psi + sin_psi > 0.0
-        };
+        let rising = self.rises(tan_beta, angles.dilation);
         match (angles.fresh, rising) {
             (true, true) => self.fresh_rising,
             (true, false) => self.fresh_sinking,
@@ -401,12 +407,10 @@ impl Simulation {
         self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
         let c = &self.case;
-        // Face friction opposes the block's motion along the face.
-        let (sin_psi, cos_psi) = trig::sin_cos(choice.dilation);
-        let rising = choice.tan_beta * cos_psi + sin_psi > 0.0;
-        // The reaction is at φw (with its sign) from the face normal, which
-        // is α − 90° from the horizontal: ω = ±φw + α − 90°.
-        let omega = if rising {
+        // Face friction opposes the block's motion along the face. The
+        // reaction is at φw (with its sign) from the face normal, which is
+        // α − 90° from the horizontal: ω = ±φw + α − 90°.
+        let omega = if self.laws.rises(choice.tan_beta, choice.dilation) {
             self.laws.walls.0
         } else {
             self.laws.walls.1
