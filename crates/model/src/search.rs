@@ -4,7 +4,8 @@
 //!
 //! Candidate j is the straight line from the blade tip A = (x_b, −d) to
 //! surface node j. With r_j = (y_j + d) / (j − b) (rise per node, so that
-//! tan β_j = r_j / Δx):
+//! tan β_j = r_j / Δx on the grid; for a raked blade the grid is sheared and
+//! `Rake` converts the slope):
 //!
 //! * the line stays inside the soil iff no node between lies below it, i.e.
 //!   r_j ≤ min over b < i < j of r_i (a running minimum);
@@ -17,8 +18,10 @@
 //!   line), from running prefix sums.
 //!
 //! Stopping rule (why the domain may be finite): along admissible candidates
-//! the lines only get lower, so W_j never decreases, and P/W ≥ f_min =
-//! sin φ_min / cos(φ_min + φw) for every admissible β. Once W_j f_min exceeds
+//! the lines only get lower, so W_j never decreases, and P/W ≥ f_min, its
+//! value at β → 0 for the least friction angle and the lesser of the face
+//! frictions the block may have (P/W grows with β and φ while the rake
+//! exceeds the wall friction, which the case validation ensures). Once W_j f_min exceeds
 //! the best force found, no later candidate can win. The scan stops there and
 //! grows the domain only if it reaches the end first: growing never changes
 //! the result.
