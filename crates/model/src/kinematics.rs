@@ -78,7 +78,8 @@ impl Kinematics {
         // face's lift).
         let trench_area = surface.spacing * (-surface.floor - band.depth - 0.5 * deepening);
         let trench_mass = surface.unit_weight[band.blade] * trench_area;
-        let mass_before = region_mass(surface, band.blade, band.emergence) - trench_mass;
+        let mass_before =
+            region_mass(surface, band.blade, band.blade..band.emergence + 1) - trench_mass;
         self.old_unit_weight.clear();
         self.old_unit_weight
             .extend_from_slice(&surface.unit_weight[band.blade..=band.emergence]);
@@ -277,11 +278,11 @@ fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
     surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
 }
 
-/// Weight of the columns of nodes b..=j as counted by `Surface::mass` with
-/// the face at b (j is an interior node).
-fn region_mass(surface: &Surface, b: usize, j: usize) -> f64 {
-    (b..=j)
-        .map(|i| surface.unit_weight[i] * surface.column_area(i, b))
+/// Weight of the columns of `nodes` as counted by `Surface::mass` with the
+/// face at node `face` (which counts half; none of them is the last node).
+fn region_mass(surface: &Surface, face: usize, nodes: std::ops::Range<usize>) -> f64 {
+    nodes
+        .map(|i| surface.unit_weight[i] * surface.column_area(i, face))
         .sum()
 }
 
@@ -307,9 +308,7 @@ impl Kinematics {
 /// weight of nodes b+1..=j (face now at b+1) equal `mass_before`.
 fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
     let (b, j) = (band.blade + 1, band.emergence);
-    let outside: f64 = (b..first)
-        .map(|i| surface.unit_weight[i] * surface.column_area(i, b))
-        .sum();
+    let outside = region_mass(surface, b, b..first);
     let band_area: f64 = (first..=j).map(|i| surface.column_area(i, b)).sum();
     let gamma = (mass_before - outside) / band_area;
     for g in &mut surface.unit_weight[first..=j] {
