@@ -6,6 +6,7 @@
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
 mod analytic_cmd;
+mod landscape_cmd;
 mod pictures;
 mod study_cmd;
 
@@ -124,6 +125,9 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         measured: Option<PathBuf>,
     },
+    /// The force of every candidate band at one moment of a run.
+    #[command(after_help = landscape_cmd::EXAMPLES)]
+    Landscape(landscape_cmd::LandscapeArgs),
     /// Run a case for many values of its keys (a grid or a Latin-hypercube sample), in parallel.
     #[command(after_help = study_cmd::SWEEP_EXAMPLES)]
     Sweep(study_cmd::SweepArgs),
@@ -196,6 +200,7 @@ fn main() -> ExitCode {
             out,
             measured,
         } => compare(&dirs, measured.as_deref(), &out),
+        Command::Landscape(args) => landscape_cmd::landscape(args),
         Command::Sweep(args) => study_cmd::sweep(args),
         Command::Fit(args) => study_cmd::fit(args),
         Command::Converge(args) => study_cmd::converge(args),

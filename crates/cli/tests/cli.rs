@@ -538,3 +538,48 @@ fn help_examples_are_valid() {
     }
     assert!(examples >= 6, "{examples} examples");
 }
+
+/// The landscape's least candidate is the force the run records at the
+/// same increment, and every candidate's ratio to it is at least 1.
+#[test]
+fn landscape_least_candidate_is_the_recorded_force() {
+    let sandbox = Sandbox::new(REFINED);
+    let o = sandbox.soilcut(&["landscape", "case.toml", "--at", "0.5", "--out", "ls"]);
+    assert_ok(&o);
+    assert!(stdout(&o).contains("u/d = 0.500"), "{}", stdout(&o));
+    assert_ok(&sandbox.soilcut(&["run", "case.toml", "--out", "run", "--no-plots"]));
+    assert!(sandbox.path("ls/landscape.png").is_file());
+    let rows = |file: &str, key: &str| -> Vec<Vec<f64>> {
+        let text = fs::read_to_string(sandbox.path(file)).unwrap();
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        assert!(header.contains(&key), "{file}: {header:?}");
+        lines
+            .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+            .collect()
+    };
+    let landscape = rows("ls/landscape.csv", "force_over_least");
+    assert!(landscape.len() > 50, "{} candidates", landscape.len());
+    let least = landscape.iter().map(|r| r[4]).fold(f64::INFINITY, f64::min);
+    assert!(landscape.iter().all(|r| r[6] >= 1.0));
+    let history = rows("run/history.csv", "force");
+    let at_half = history.iter().find(|r| r[2] == 0.5).expect("u/d = 0.5 row");
+    assert_eq!(least, at_half[3]);
+}
+
+#[test]
+fn landscape_outside_the_travel_is_refused() {
+    for at in ["1.5", "-0.1", "NaN"] {
+        let sandbox = Sandbox::new(REFINED);
+        let o = sandbox.soilcut(&["landscape", "case.toml", "--at", at]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{at}: {err}");
+        assert!(
+            err.starts_with(
+                "error: case.toml: --at must be a number from 0 to run.travel / blade.depth = 1 "
+            ),
+            "{err}"
+        );
+        assert_eq!(sandbox.entries(), ["case.toml"], "no output folder");
+    }
+}

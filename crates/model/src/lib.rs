@@ -11,6 +11,7 @@ pub mod band;
 pub mod case;
 mod far_field;
 pub mod kinematics;
+pub mod landscape;
 pub mod material;
 pub mod mechanism;
 pub mod peaks;
@@ -25,5 +26,6 @@ pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
     UnitWeightRule,
 };
+pub use landscape::Candidate;
 pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};
 pub use summary::{Peak, Summary};

@@ -96,6 +96,16 @@ pub struct Search {
     previous: Option<usize>,
     /// Candidates evaluated in full since creation (for benchmarks).
     pub evaluations: u64,
+    /// Set while a landscape is being taken.
+    landscape: Option<Landscape>,
+}
+
+/// Every candidate of one search, and the state to restore after it.
+#[derive(Clone, Debug)]
+struct Landscape {
+    candidates: Vec<Choice>,
+    previous: Option<usize>,
+    evaluations: u64,
 }
 
 /// What the search needs to know about the soil besides the surface.
@@ -175,8 +185,9 @@ impl Search {
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        let found = self.scan(surface, input, max_nodes, true);
-        if found.is_some() {
+        let prune = self.landscape.is_none();
+        let found = self.scan(surface, input, max_nodes, prune);
+        if found.is_some() || !prune {
             return found;
         }
         // The bounds are proven, so this does not happen; if it ever does,
@@ -315,11 +326,7 @@ impl Search {
         let factor = (input.factor)(angles, slope.tan_beta);
         let length = slope.length(j - scan.b, scan.dx);
         if let Some(force) = input.loads.force(&factor, weight, length, slope.tan_beta) {
-            if force > scan.bar {
-                return;
-            }
-            scan.improve(force);
-            self.admissible.push(Choice {
+            let candidate = Choice {
                 node: j,
                 tan_beta: slope.tan_beta,
                 grid_slope: slope.grid,
@@ -327,8 +334,38 @@ impl Search {
                 weight,
                 friction: angles.friction,
                 dilation: angles.dilation,
-            });
+            };
+            if let Some(landscape) = &mut self.landscape {
+                landscape.candidates.push(candidate);
+            }
+            if force > scan.bar {
+                return;
+            }
+            scan.improve(force);
+            self.admissible.push(candidate);
         }
+    }
+
+    /// Makes the next `run` a landscape: no pruning, and every admissible
+    /// candidate up to the stopping bound recorded (`end_landscape`).
+    pub fn begin_landscape(&mut self) {
+        self.landscape = Some(Landscape {
+            candidates: Vec::new(),
+            previous: self.previous,
+            evaluations: self.evaluations,
+        });
+    }
+
+    /// The candidates recorded since `begin_landscape`, nearest the blade
+    /// first; the search is left as it was before (the next increment is
+    /// seeded from the same node, and `evaluations` counts increments only).
+    pub fn end_landscape(&mut self) -> Vec<Choice> {
+        let Some(landscape) = self.landscape.take() else {
+            return Vec::new();
+        };
+        self.previous = landscape.previous;
+        self.evaluations = landscape.evaluations;
+        landscape.candidates
     }
 
     fn push_prefix(&mut self, surface: &Surface, i: usize) {

@@ -9,6 +9,7 @@ use crate::avalanche::Avalanche;
 use crate::band::Band;
 use crate::case::{BandAngleRule, Case, CaseError};
 use crate::kinematics::Kinematics;
+use crate::landscape::Candidate;
 use crate::material::Material;
 use crate::mechanism::Loads;
 use crate::mechanism::{FactorTable, ForceFactor};
@@ -358,6 +359,36 @@ impl Simulation {
             self.surface.grow(missing.max(input.grow_nodes));
         }
         Some(choice)
+    }
+
+    /// Every admissible candidate of the next increment with its force,
+    /// nearest the blade first, up to where the stopping bound proves that
+    /// none further can beat the least (`search`); nothing is advanced, and
+    /// the next `step` is the one it would have been.
+    pub fn landscape(&mut self) -> Vec<Candidate> {
+        self.search.begin_landscape();
+        // The minimum itself is among the candidates recorded.
+        let _ = self.find_mechanism();
+        let choices = self.search.end_landscape();
+        let depth = self.tip_depth();
+        let c = &self.case;
+        let scale = c.soil.unit_weight * c.blade.depth * c.blade.depth;
+        choices
+            .iter()
+            .map(|choice| {
+                // Far-field candidates may lie beyond the nodes held: flat ground.
+                let y = self.surface.height.get(choice.node).copied().unwrap_or(0.0);
+                Candidate {
+                    x_emergence: self.rake.x(self.surface.x(choice.node), y, depth),
+                    y_emergence: y,
+                    beta_deg: choice.tan_beta.atan().to_degrees(),
+                    force: choice.force,
+                    force_norm: choice.force / scale,
+                    friction_deg: choice.friction.to_degrees(),
+                    dilation_deg: choice.dilation.to_degrees(),
+                }
+            })
+            .collect()
     }
 
     /// Advances the blade by one increment.

@@ -9,6 +9,7 @@
 //! * [`draw_deformation`]: the pattern of deformation (Figs. 4 and 6).
 //! * [`draw_animation`]: an animated GIF of the cutting process.
 //! * [`draw_compare`]: force and β* of several runs overlaid (Fig. 7).
+//! * [`draw_landscape`]: the force of every candidate band of one increment.
 //!
 //! Lengths are drawn divided by the blade depth d (the case's length unit
 //! is not stored with a run), so every axis is dimensionless.
@@ -20,12 +21,14 @@ mod animation;
 mod blade;
 mod curves;
 mod deformation;
+mod landscape;
 mod render;
 mod style;
 
 pub use animation::draw_animation;
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
+pub use landscape::{draw_landscape, Landscape};
 pub use render::{Format, PlotError};
 
 use std::path::{Path, PathBuf};

@@ -1,0 +1,36 @@
+//! `landscape.csv`: every candidate mechanism of one increment.
+
+use soilcut_model::Candidate;
+use std::fmt::Write as _;
+
+/// Columns of `landscape.csv`, in order.
+pub const LANDSCAPE_HEADER: &str = "x_emergence,distance_over_d,y_emergence,beta_deg,force,force_norm,force_over_least,friction_deg,dilation_deg";
+
+/// One row per candidate, nearest the blade first; `u` is the face's
+/// position and `depth` the case's d (distance_over_d = (x − u) / d).
+pub fn landscape_csv(candidates: &[Candidate], u: f64, depth: f64) -> String {
+    let least = candidates
+        .iter()
+        .map(|c| c.force)
+        .fold(f64::INFINITY, f64::min);
+    let mut out = String::with_capacity(160 * (candidates.len() + 1));
+    out.push_str(LANDSCAPE_HEADER);
+    out.push('\n');
+    for c in candidates {
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{}",
+            c.x_emergence,
+            (c.x_emergence - u) / depth,
+            c.y_emergence,
+            c.beta_deg,
+            c.force,
+            c.force_norm,
+            c.force / least,
+            c.friction_deg,
+            c.dilation_deg
+        )
+        .expect("writing to a String");
+    }
+    out
+}

@@ -1,0 +1,103 @@
+//! The landscape of minimum effort: the force of every candidate band of
+//! one increment against how far ahead of the blade it emerges.
+
+use crate::render::{save, text, DrawResult, Picture};
+use crate::style::{self, axes, dots, round_up, titled, Legend, Mark, PAPER};
+use crate::PlotError;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// The candidates of one increment, for [`draw_landscape`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Landscape {
+    pub title: String,
+    /// (distance of the emergence point ahead of the face / d, P/(γ0 d²)),
+    /// one point per candidate.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// The force axis spans these multiples of the least force: near
+/// β + φ + φw = 90° forces grow without bound and would flatten the rest,
+/// and the interest is in how many candidates come near the least.
+const SHOWN: (f64, f64) = (0.9, 2.0);
+/// The band drawn above the least force: candidates inside it are nearly as
+/// good as the chosen one.
+const NEAR: f64 = 0.01;
+
+/// Draws every candidate's force against where it emerges (dots), the least
+/// one (red) and the level 1 % above it (dashed), 1200 × 800 px, PNG or SVG
+/// by `path`'s extension.
+pub fn draw_landscape(landscape: &Landscape, path: &Path) -> Result<(), PlotError> {
+    if landscape.points.is_empty() {
+        return Err(PlotError::new(path, "no candidate to draw"));
+    }
+    save(landscape, path)
+}
+
+impl Landscape {
+    fn least(&self) -> (f64, f64) {
+        self.points
+            .iter()
+            .copied()
+            .fold((0.0, f64::INFINITY), |a, p| if p.1 < a.1 { p } else { a })
+    }
+}
+
+impl Picture for Landscape {
+    fn size(&self) -> (u32, u32) {
+        (1200, 800)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
+        root.fill(&WHITE).map_err(text)?;
+        let area = titled(root, &self.title, PAPER.title)?;
+        let legend = Legend::new(
+            vec![
+                ("candidate".into(), Mark::Dot(style::CURVE)),
+                ("least force (chosen)".into(), Mark::Dot(RED)),
+                ("1 % above the least".into(), Mark::Dashed(BLACK)),
+            ],
+            1120,
+            PAPER,
+        );
+        let (legend_area, plot_area) = area.split_vertically(legend.height());
+        legend.draw(&legend_area)?;
+        let least = self.least();
+        let (y_min, y_max) = (least.1 * SHOWN.0, least.1 * SHOWN.1);
+        let shown: Vec<(f64, f64)> = self
+            .points
+            .iter()
+            .copied()
+            .filter(|p| p.1 <= y_max)
+            .collect();
+        let x_max = round_up(shown.iter().map(|p| p.0).fold(0.0, f64::max));
+        let mut chart = ChartBuilder::on(&plot_area)
+            .margin(20)
+            .margin_right(45)
+            .x_label_area_size(PAPER.desc * 3)
+            .y_label_area_size(PAPER.desc * 4)
+            .build_cartesian_2d(0.0..x_max, y_min..y_max)
+            .map_err(text)?;
+        axes(
+            &mut chart,
+            "distance ahead of the face / d (–)",
+            "P/(γ₀d²) (–)",
+            PAPER,
+        )?;
+        dots(&mut chart, &shown, style::CURVE, 2)?;
+        let level = least.1 * (1.0 + NEAR);
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(0.0, level), (x_max, level)],
+                10,
+                6,
+                BLACK.stroke_width(1),
+            ))
+            .map_err(text)?;
+        chart
+            .draw_series([Circle::new(least, 6, RED.filled())])
+            .map_err(text)?;
+        Ok(())
+    }
+}
