@@ -18,8 +18,9 @@ Examples:
 pub struct LandscapeArgs {
     /// The case file (TOML).
     case: PathBuf,
-    /// Blade displacement u/d at which to take the landscape: the case runs
-    /// to the first increment at or beyond it (0 to run.travel / blade.depth).
+    /// Blade displacement u/d at which to take the landscape: that of the
+    /// first increment at or beyond it, or of the last increment (0 to
+    /// run.travel / blade.depth).
     #[arg(long, value_name = "U_OVER_D", allow_negative_numbers = true)]
     at: f64,
     /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
