@@ -57,7 +57,7 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     while sim.steps_done() < before.min(case.steps() - 1) {
         sim.step().map_err(|e| Failure::input(path, e))?;
     }
-    let candidates = sim.landscape();
+    let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
     let u = sim.blade_position();
     let picture = Landscape {
         title: format!("{}: every candidate band at u/d = {:.3}", case.title, u / d),

@@ -364,16 +364,22 @@ impl Simulation {
     /// Every admissible candidate of the next increment with its force,
     /// nearest the blade first, up to where the stopping bound proves that
     /// none further can beat the least (`search`); nothing is advanced, and
-    /// the next `step` is the one it would have been.
-    pub fn landscape(&mut self) -> Vec<Candidate> {
+    /// the next `step` is the one it would have been. Fails as `step`
+    /// would if no candidate is admissible.
+    pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
         self.search.begin_landscape();
-        // The minimum itself is among the candidates recorded.
-        let _ = self.find_mechanism();
+        let found = self.find_mechanism();
         let choices = self.search.end_landscape();
+        if found.is_none() {
+            return Err(StepError::NoAdmissibleMechanism {
+                step: self.done + 1,
+                u: self.blade_position(),
+            });
+        }
         let depth = self.tip_depth();
         let c = &self.case;
         let scale = c.soil.unit_weight * c.blade.depth * c.blade.depth;
-        choices
+        Ok(choices
             .iter()
             .map(|choice| {
                 // Far-field candidates may lie beyond the nodes held: flat ground.
@@ -388,7 +394,7 @@ impl Simulation {
                     dilation_deg: choice.dilation.to_degrees(),
                 }
             })
-            .collect()
+            .collect())
     }
 
     /// Advances the blade by one increment.

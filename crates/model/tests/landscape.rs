@@ -14,7 +14,7 @@ fn flat_ground_is_eq_1_on_the_coulomb_wedge_at_every_angle() {
     let case = common::original(1.0, 200.0);
     let (phi, phi_w) = (35f64.to_radians(), 10f64.to_radians());
     let mut sim = Simulation::new(&case).unwrap();
-    let candidates = sim.landscape();
+    let candidates = sim.landscape().unwrap();
     assert!(candidates.len() > 100, "{} candidates", candidates.len());
     for c in &candidates {
         let beta = c.beta_deg.to_radians();
@@ -51,7 +51,7 @@ fn taking_a_landscape_leaves_the_run_unchanged() {
     let mut watched = Vec::new();
     while !sim.is_done() {
         let least = sim.steps_done().is_multiple_of(10).then(|| {
-            let candidates = sim.landscape();
+            let candidates = sim.landscape().unwrap();
             assert!(near_minimum(&candidates, 0.0) >= 1);
             candidates
                 .iter()
@@ -80,7 +80,7 @@ fn hardening_soil_has_many_near_minimal_bands_far_apart() {
         let (mut most, mut widest) = (0, 0.0f64);
         while !sim.is_done() {
             if sim.steps_done().is_multiple_of(per_depth as usize / 2) {
-                let candidates = sim.landscape();
+                let candidates = sim.landscape().unwrap();
                 let least = candidates
                     .iter()
                     .map(|c| c.force)
