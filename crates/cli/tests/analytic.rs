@@ -165,8 +165,8 @@ fn summary_carries_the_baselines_beside_the_first_force() {
 fn bad_depth_paths_are_refused() {
     let (dir, _) = sandbox();
     for (path, says) in [
-        ("[[0, 10], [20, 5]]", "not decrease"),
         ("[[0, 10], [0, 15]]", "u must increase"),
+        ("[[0, 10], [20, 15], [15, 5]]", "u must increase"),
         ("[[0, -1]]", "depth > 0"),
         ("[[0, 10], [20, nan]]", "finite"),
     ] {

@@ -64,8 +64,9 @@ pub struct Blade {
     /// a: blade-soil adhesion (stress), on the face contact.
     pub adhesion: f64,
     /// The tip depth as a piecewise-linear function of blade travel,
-    /// [u, d] points (constant beyond the ends); empty: always `depth`,
-    /// which is also the reference depth of normalised forces.
+    /// [u, d] points (constant beyond the ends): the blade may deepen and
+    /// rise. Empty: always `depth`, which is also the reference depth of
+    /// normalised forces.
     pub depth_path: Vec<[f64; 2]>,
 }
 
@@ -410,11 +411,11 @@ impl Case {
                     format!("point {k}: needs u ≥ 0 and depth > 0 (got [{u}, {d}])"),
                 ));
             }
-            if k > 0 && (u <= path[k - 1][0] || d < path[k - 1][1]) {
+            if k > 0 && u <= path[k - 1][0] {
                 return Err(CaseError::new(
                     key,
                     format!(
-                        "point {k}: u must increase and the depth must not decrease (the blade may deepen, not rise) (got [{u}, {d}] after {:?})",
+                        "point {k}: u must increase from point to point (got [{u}, {d}] after {:?})",
                         path[k - 1]
                     ),
                 ));

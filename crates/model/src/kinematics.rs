@@ -75,7 +75,8 @@ impl Kinematics {
         // The strip the blade moves through: soil below the tip's path
         // (from depth d to d + Δd) stays behind; what lies between that path
         // and the slip line is pushed up the face (`deepening` adds to the
-        // face's lift).
+        // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
+        // the face less).
         let trench_area = surface.spacing * (-surface.floor - band.depth - 0.5 * deepening);
         let trench_mass = surface.unit_weight[band.blade] * trench_area;
         let mass_before =

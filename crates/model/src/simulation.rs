@@ -99,8 +99,9 @@ struct Laws {
     fresh_sinking: ForceFactor,
     /// Lower bound of P/W over every admissible mechanism.
     min_factor: f64,
-    /// tan β below which some band may sink (β + ψ ≤ 0).
-    sinking_below: f64,
+    /// The least dilation angle of the law (radians): how far a band may
+    /// sink.
+    least_dilation: f64,
     /// (sin, cos) of the two walls.
     wall_sin_cos: ((f64, f64), (f64, f64)),
     /// Eq. (1) on a grid of friction angles, for the search's bounds.
@@ -117,9 +118,11 @@ impl Laws {
         let walls = (wall_friction + offset, -wall_friction + offset);
         let phi0 = material.friction.at(0.0);
         // Friction on the face opposes the block's motion relative to it:
-        // where the block does not rise (β + ψ ≤ 0, compaction) it acts
-        // upward on the block, the least-force choice at β + ψ = 0.
-        let can_sink = case.soil.dilation.min() < 0.0;
+        // where the block does not rise along the face (β + ψ ≤ 0 in
+        // compaction, or a blade climbing faster than the block) it acts
+        // upward on the block, the least-force choice at the threshold.
+        let climbs = case.blade.depth_path.windows(2).any(|w| w[1][1] < w[0][1]);
+        let can_sink = case.soil.dilation.min() < 0.0 || climbs;
         // The infimum of P/W (β → 0, least φ) over the face frictions the
         // block may have: which one is least depends on the rake.
         let at_zero = |wall: f64| ForceFactor::new(material.friction.min(), wall).at_zero_angle();
@@ -132,7 +135,7 @@ impl Laws {
             fresh_rising: ForceFactor::new(phi0, walls.0),
             fresh_sinking: ForceFactor::new(phi0, walls.1),
             min_factor,
-            sinking_below: (-case.soil.dilation.min().to_radians()).tan().max(0.0),
+            least_dilation: case.soil.dilation.min().to_radians(),
             wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
             table: FactorTable::new(walls),
             fresh: BandAngles {
@@ -146,19 +149,41 @@ impl Laws {
         }
     }
 
+    /// The face of an increment in which the tip climbs by `climb` per
+    /// unit of travel (negative while the blade deepens).
+    fn face(&self, climb: f64) -> Face {
+        // Some band sinks relative to the face where tan(β + ψ) ≤ climb for
+        // some ψ of the law: β ≤ atan(climb) − ψ_min.
+        let angle = climb.atan() - self.least_dilation;
+        let sinking_below = if angle <= 0.0 {
+            0.0
+        } else if angle >= std::f64::consts::FRAC_PI_2 {
+            f64::INFINITY
+        } else {
+            angle.tan()
+        };
+        Face {
+            climb,
+            sinking_below,
+        }
+    }
+
     /// Whether a block on a band at tan β with dilation ψ rises along the
-    /// face (β + ψ > 0), which sets the sign of the face friction.
-    fn rises(&self, tan_beta: f64, dilation: f64) -> bool {
-        tan_beta > self.sinking_below || {
-            // tan β + tan ψ > 0, multiplied by cos ψ > 0.
+    /// face: its direction β + ψ climbs faster than the tip,
+    /// tan(β + ψ) > climb, which sets the sign of the face friction.
+    fn rises(&self, tan_beta: f64, dilation: f64, face: Face) -> bool {
+        tan_beta > face.sinking_below || {
+            // Both sides of tan(β + ψ) > climb times
+            // cos ψ − tan β sin ψ, which is positive below β + ψ = 90°.
             let (sin_psi, cos_psi) = trig::sin_cos(dilation);
-            tan_beta * cos_psi + sin_psi > 0.0
+            let run = cos_psi - tan_beta * sin_psi;
+            run <= 0.0 || tan_beta * cos_psi + sin_psi > face.climb * run
         }
     }
 
     /// Eq. (1) coefficients for a candidate band at tan β.
-    fn factor(&self, angles: BandAngles, tan_beta: f64) -> ForceFactor {
-        let rising = self.rises(tan_beta, angles.dilation);
+    fn factor(&self, angles: BandAngles, tan_beta: f64, face: Face) -> ForceFactor {
+        let rising = self.rises(tan_beta, angles.dilation, face);
         match (angles.fresh, rising) {
             (true, true) => self.fresh_rising,
             (true, false) => self.fresh_sinking,
@@ -194,6 +219,15 @@ impl Laws {
             surface.dilation[i] = self.material.dilation.at(ut);
         }
     }
+}
+
+/// How the face moves in one increment, for the sign of its friction.
+#[derive(Clone, Copy, Debug)]
+struct Face {
+    /// Rise of the tip per unit of travel: −Δd / v0 (0 at constant depth).
+    climb: f64,
+    /// tan β below which some band may sink relative to the face.
+    sinking_below: f64,
 }
 
 /// A running simulation of one case.
@@ -324,6 +358,13 @@ impl Simulation {
         }
     }
 
+    /// Rise of the tip per unit of travel over the next increment.
+    fn climb(&self) -> f64 {
+        let u = self.blade_position();
+        (self.case.tip_depth(u) - self.case.tip_depth(u + self.surface.spacing))
+            / self.surface.spacing
+    }
+
     /// Depth of the blade tip now.
     pub fn tip_depth(&self) -> f64 {
         self.case.tip_depth(self.blade_position())
@@ -335,7 +376,8 @@ impl Simulation {
         let laws = &self.laws;
         let rule = self.case.choices.band_angles;
         let angles = |means: BandAngles| laws.band_angles(rule, means);
-        let factor = |angles: BandAngles, t: f64| laws.factor(angles, t);
+        let face = laws.face(self.climb());
+        let factor = |angles: BandAngles, t: f64| laws.factor(angles, t, face);
         let input = SearchInput {
             angles: &angles,
             blade: self.done,
@@ -343,7 +385,7 @@ impl Simulation {
             band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
             walls: laws.walls,
-            sinking_below: laws.sinking_below,
+            sinking_below: face.sinking_below,
             rake: self.rake,
             fresh: laws.fresh,
             table: &laws.table,
@@ -405,6 +447,7 @@ impl Simulation {
             .find_mechanism()
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
         let (b, j) = (self.done, choice.node);
+        let face = self.laws.face(self.climb());
         let c = &self.case;
         let depth = self.tip_depth();
         let deepening = c.tip_depth(u + self.surface.spacing) - depth;
@@ -433,13 +476,13 @@ impl Simulation {
         self.surface.disturb(j + 1);
         self.done += 1;
         // Slopes changed only at the face and around the band.
-        let face = self.done..self.done + 3;
+        let at_face = self.done..self.done + 3;
         let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
         let moved = self.avalanche.relax(
             &mut self.surface,
             self.done,
             self.repose_slopes,
-            &[face, band_nodes],
+            &[at_face, band_nodes],
         );
         self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
@@ -447,7 +490,7 @@ impl Simulation {
         // Face friction opposes the block's motion along the face. The
         // reaction is at φw (with its sign) from the face normal, which is
         // α − 90° from the horizontal: ω = ±φw + α − 90°.
-        let omega = if self.laws.rises(choice.tan_beta, choice.dilation) {
+        let omega = if self.laws.rises(choice.tan_beta, choice.dilation, face) {
             self.laws.walls.0
         } else {
             self.laws.walls.1

@@ -34,7 +34,7 @@ pub struct Surface {
     /// Nodes from here on are undisturbed flat ground (y = 0, ut = 0, γ0).
     pub pristine_from: usize,
     /// Weight of the soil left below the tip's path behind the blade (a
-    /// deepening blade passes over it).
+    /// blade on a depth path passes over it).
     pub trench_mass: f64,
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
@@ -120,7 +120,7 @@ impl Surface {
     }
 
     /// Weight of soil in front of the blade at node `first` and of the soil
-    /// left below a deepening tip's path, counting only the ground that
+    /// left below the tip's path, counting only the ground that
     /// existed at the start.
     pub fn mass(&self, first: usize) -> f64 {
         let undisturbed = self.pristine_from.clamp(first, self.len());

@@ -1,4 +1,4 @@
-//! A blade that deepens while it cuts (`blade.depth_path`).
+//! A blade that deepens, or rises, while it cuts (`blade.depth_path`).
 
 mod common;
 
@@ -43,4 +43,89 @@ fn force_grows_with_depth_as_its_square() {
     let (a, b) = (deepening[0], deepening[deepening.len() - 1]);
     let slope = (b.force / a.force).ln() / (b.depth / a.depth).ln();
     assert!((2.0..3.5).contains(&slope), "log-log slope {slope}");
+}
+
+/// A scoop: in from 5 to 20 over the first 30 of travel, along at 20, out
+/// to 4 between 60 and 90.
+fn scoop(model: &str, per_depth: f64) -> soilcut_model::Case {
+    let mut case = if model == "original" {
+        common::original(5.0, per_depth)
+    } else {
+        common::refined("table1-hs", 5.0, per_depth)
+    };
+    case.blade.depth_path = vec![[0.0, 5.0], [30.0, 20.0], [60.0, 20.0], [90.0, 4.0]];
+    case
+}
+
+#[test]
+fn a_scoop_conserves_soil_in_both_models() {
+    for model in ["original", "refined"] {
+        let (history, sim) = common::run(&scoop(model, 100.0));
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-12, "{model}: drift {drift:e}");
+        let depth_at = |u: f64| history.iter().find(|r| r.u >= u).unwrap().depth;
+        assert_eq!((depth_at(45.0), depth_at(95.0)), (20.0, 4.0), "{model}");
+        assert!(depth_at(75.0) < depth_at(60.0), "{model}: rises");
+    }
+}
+
+#[test]
+fn the_force_falls_while_the_blade_rises() {
+    for model in ["original", "refined"] {
+        let (history, _) = common::run(&scoop(model, 100.0));
+        let force_at = |u: f64| history.iter().find(|r| r.u >= u).unwrap().force;
+        let (before, after) = (force_at(60.0), force_at(90.0));
+        assert!(
+            after < 0.8 * before,
+            "{model}: {before} at d = 20, {after} at d = 4"
+        );
+    }
+}
+
+/// On flat ground, with the blade climbing at tan θ per unit of travel, a
+/// block on a slip line at β rises along the face only if tan β > tan θ;
+/// otherwise the face friction acts upward on it (−φw). The first force is
+/// the least over β of ½ γ d² cot β sin(β + φ) / cos(β + φ ± φw), the sign
+/// set by that rule (−φw at the switch, the least-force choice), and the
+/// soil's force on the blade points down where the block sinks.
+#[test]
+fn a_climbing_blade_turns_the_face_friction_where_it_outruns_the_block() {
+    let (phi, phi_w) = (35f64.to_radians(), 10f64.to_radians());
+    // Least force: rising at β = 21.35° (+φw), at the switch tan β = 0.45,
+    // and sinking at β = 35.4° (−φw, its own minimum below 45°).
+    for climb in [0.1, 0.45, 1.0] {
+        let mut case = common::original(1.0, 2000.0);
+        case.blade.depth_path = vec![[0.0, 20.0], [10.0, 20.0 - 10.0 * climb]];
+        case.run.travel = 2.0 * case.run.increment;
+        let record = Simulation::new(&case).unwrap().step().unwrap();
+        let force = |beta: f64| {
+            let wall = if beta.tan() > climb { phi_w } else { -phi_w };
+            let denominator = (beta + phi + wall).cos();
+            (denominator > 0.0).then(|| 0.5 * 400.0 / beta.tan() * (beta + phi).sin() / denominator)
+        };
+        let (least, at) = (1..89_000)
+            .map(|k| f64::from(k) * 1e-3_f64.to_radians())
+            .filter_map(|beta| force(beta).map(|p| (p, beta)))
+            .fold((f64::INFINITY, 0.0), |a, b| if b.0 < a.0 { b } else { a });
+        let rel = (record.force - least) / least;
+        assert!(
+            rel.abs() < 1e-3,
+            "climb {climb}: {} vs {least} at β = {}°",
+            record.force,
+            at.to_degrees()
+        );
+        let sinks = record.beta_deg.to_radians().tan() <= climb;
+        assert_eq!(
+            sinks,
+            climb > 0.3,
+            "climb {climb}: β* = {}°",
+            record.beta_deg
+        );
+        assert_eq!(
+            record.force_v < 0.0,
+            sinks,
+            "climb {climb}: force_v {}",
+            record.force_v
+        );
+    }
 }
