@@ -4,6 +4,7 @@
 mod common;
 
 use soilcut_model::landscape::near_minimum;
+use soilcut_model::search::TIE_TOLERANCE;
 use soilcut_model::Simulation;
 
 /// On flat ground the block above the slip line at β is the triangle of
@@ -60,7 +61,9 @@ fn taking_a_landscape_leaves_the_run_unchanged() {
         });
         let record = sim.step().unwrap();
         if let Some(least) = least {
-            assert_eq!(least, record.force, "step {}", record.step);
+            // The least, or a near-tie nearer the blade (`search`).
+            let tied = record.force >= least && record.force <= least * (1.0 + TIE_TOLERANCE);
+            assert!(tied, "step {}: {} vs {least}", record.step, record.force);
         }
         watched.push(record);
     }
