@@ -12,7 +12,7 @@ use std::path::Path;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Landscape {
     pub title: String,
-    /// (distance of the emergence point ahead of the face / d, P/(γ0 d²)),
+    /// (distance of the emergence point ahead of the blade tip / d, P/(γ0 d²)),
     /// one point per candidate.
     pub points: Vec<(f64, f64)>,
 }
@@ -81,7 +81,7 @@ impl Picture for Landscape {
             .map_err(text)?;
         axes(
             &mut chart,
-            "distance ahead of the face / d (–)",
+            "distance ahead of the blade tip / d (–)",
             "P/(γ₀d²) (–)",
             PAPER,
         )?;
