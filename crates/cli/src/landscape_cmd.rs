@@ -1,20 +1,29 @@
 //! `soilcut landscape`: the force of every candidate band at one moment of
-//! a run (the landscape of minimum effort).
+//! a run (the landscape of minimum effort), or a map of such landscapes
+//! through the run.
 
 use crate::{load, Failure};
-use soilcut_io::{landscape_csv, write_output_dir_then, OutputError};
-use soilcut_model::landscape::near_minimum;
+use soilcut_io::{
+    landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
+};
+use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
-use soilcut_plot::{draw_landscape, Landscape};
+use soilcut_plot::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap, PlotError};
 use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "\
 Examples:
   soilcut landscape cases/paper/table1-hs.toml --at 4
       writes out/table1-hs-landscape/{landscape.csv,landscape.png,case.resolved.toml}
+  soilcut landscape cases/paper/table1-hs.toml --every 0.05
+      writes out/table1-hs-landscape/{landscape_map.csv,landscape_map.png,case.resolved.toml}
   soilcut landscape cases/paper/fig5.toml --at 2.5 --set run.increment=0.02 --out out/fig5-fine-ls";
 
+/// Width of the distance bins of a map, in d.
+const MAP_BIN: f64 = 0.05;
+
 #[derive(clap::Args)]
+#[command(group(clap::ArgGroup::new("when").required(true).args(["at", "every"])))]
 pub struct LandscapeArgs {
     /// The case file (TOML).
     case: PathBuf,
@@ -22,7 +31,11 @@ pub struct LandscapeArgs {
     /// first increment at or beyond it, or of the last increment (0 to
     /// run.travel / blade.depth).
     #[arg(long, value_name = "U_OVER_D", allow_negative_numbers = true)]
-    at: f64,
+    at: Option<f64>,
+    /// Instead of one landscape, take one at u/d = 0, E, 2E, … through the
+    /// whole run and map them (E in (0, run.travel / blade.depth]).
+    #[arg(long, value_name = "E", allow_negative_numbers = true)]
+    every: Option<f64>,
     /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     set: Vec<String>,
@@ -38,12 +51,20 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     let path = args.case.as_path();
     let loaded = load(path, &args.set)?;
     let case = &loaded.case;
-    let d = case.blade.depth;
-    let last = case.run.travel / d;
-    if !(args.at.is_finite() && (0.0..=last).contains(&args.at)) {
+    let last = case.run.travel / case.blade.depth;
+    let (flag, value, allowed) = match (args.at, args.every) {
+        (Some(at), _) => ("--at", at, (0.0..=last).contains(&at)),
+        (None, Some(every)) => ("--every", every, every > 0.0 && every <= last),
+        (None, None) => return Err(Failure::input(path, "give --at or --every")),
+    };
+    if !(value.is_finite() && allowed) {
+        let range = if flag == "--at" {
+            "from 0 to"
+        } else {
+            "above 0, at most"
+        };
         let message = format!(
-            "--at must be a number from 0 to run.travel / blade.depth = {last} (got {})",
-            args.at
+            "{flag} must be a number {range} run.travel / blade.depth = {last} (got {value})"
         );
         return Err(Failure::input(path, message));
     }
@@ -52,8 +73,57 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
         .unwrap_or_else(|| Path::new("out").join(format!("{}-landscape", case.name)));
     soilcut_io::check_output_dir(&out, args.force).map_err(Failure::output)?;
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
+    let taken = match args.at {
+        Some(at) => one(&mut sim, &loaded, at, path)?,
+        None => map(&mut sim, &loaded, value, path)?,
+    };
+    write_output_dir_then(&out, &taken.files, args.force, |staged| {
+        let file = staged.join(taken.picture.name());
+        taken.picture.draw(&file).map_err(|e| OutputError::Io {
+            path: file,
+            source: std::io::Error::other(e.message),
+        })
+    })
+    .map_err(Failure::output)?;
+    println!("{}; outputs in {}", taken.summary, out.display());
+    Ok(())
+}
+
+/// What a landscape command writes and prints.
+struct Taken {
+    /// (name, contents) of the data files.
+    files: Vec<(&'static str, String)>,
+    picture: Picture,
+    summary: String,
+}
+
+enum Picture {
+    One(Landscape),
+    Map(LandscapeMap),
+}
+
+impl Picture {
+    fn name(&self) -> &'static str {
+        match self {
+            Picture::One(_) => "landscape.png",
+            Picture::Map(_) => "landscape_map.png",
+        }
+    }
+
+    fn draw(&self, file: &Path) -> Result<(), PlotError> {
+        match self {
+            Picture::One(p) => draw_landscape(p, file),
+            Picture::Map(p) => draw_landscape_map(p, file),
+        }
+    }
+}
+
+/// One landscape, at the first increment at or beyond u/d = `at`.
+fn one(sim: &mut Simulation, loaded: &LoadedCase, at: f64, path: &Path) -> Result<Taken, Failure> {
+    let case = &loaded.case;
+    let d = case.blade.depth;
     // Increments before the one evaluated at u ≥ at d (u = steps × v0).
-    let before = ((args.at * d / case.run.increment) - 1e-9).ceil().max(0.0) as usize;
+    let before = ((at * d / case.run.increment) - 1e-9).ceil().max(0.0) as usize;
     while sim.steps_done() < before.min(case.steps() - 1) {
         sim.step().map_err(|e| Failure::input(path, e))?;
     }
@@ -66,26 +136,79 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
             .map(|c| ((c.x_emergence - u) / d, c.force_norm))
             .collect(),
     };
-    let files = [
+    let files = vec![
         ("landscape.csv", landscape_csv(&candidates, u, d)),
         ("case.resolved.toml", loaded.resolved_toml()),
     ];
-    write_output_dir_then(&out, &files, args.force, |staged| {
-        let png = staged.join("landscape.png");
-        draw_landscape(&picture, &png).map_err(|e| OutputError::Io {
-            path: png,
-            source: std::io::Error::other(e.message),
-        })
+    Ok(Taken {
+        files,
+        picture: Picture::One(picture),
+        summary: describe(&candidates, u, d),
     })
-    .map_err(Failure::output)?;
-    println!("{}", describe(&candidates, u, d, &out));
-    Ok(())
+}
+
+/// Landscapes at u/d = 0, `every`, 2 `every`, … (each at the first
+/// increment at or beyond), binned by distance ahead of the tip.
+fn map(
+    sim: &mut Simulation,
+    loaded: &LoadedCase,
+    every: f64,
+    path: &Path,
+) -> Result<Taken, Failure> {
+    let case = &loaded.case;
+    let d = case.blade.depth;
+    let mut columns: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
+    loop {
+        let u = sim.blade_position();
+        if u / d >= columns.len() as f64 * every - 1e-9 {
+            let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
+            let bins = least_by_distance(&candidates, u, MAP_BIN * d);
+            columns.push((u / d, bins.iter().map(|&(s, r)| (s / d, r)).collect()));
+        }
+        if sim.is_done() {
+            break;
+        }
+        sim.step().map_err(|e| Failure::input(path, e))?;
+    }
+    let far_ties = columns.iter().filter(|c| has_far_tie(&c.1)).count();
+    let summary = format!(
+        "{} landscapes from u/d = 0 to {:.3}; in {far_ties} of them a band more than 1 d from the least came within 1 % of it",
+        columns.len(),
+        columns.last().map_or(0.0, |c| c.0)
+    );
+    let files = vec![
+        ("landscape_map.csv", landscape_map_csv(&columns)),
+        ("case.resolved.toml", loaded.resolved_toml()),
+    ];
+    let picture = LandscapeMap {
+        title: format!(
+            "{}: how near each band comes to the least force",
+            case.title
+        ),
+        bin: MAP_BIN,
+        columns,
+    };
+    Ok(Taken {
+        files,
+        picture: Picture::Map(picture),
+        summary,
+    })
+}
+
+/// Whether a bin (start in d) more than 1 d from the least one comes
+/// within 1 % of it.
+fn has_far_tie(bins: &[(f64, f64)]) -> bool {
+    let Some(least) = bins.iter().find(|b| b.1 == 1.0) else {
+        return false;
+    };
+    bins.iter()
+        .any(|b| b.1 <= 1.01 && (b.0 - least.0).abs() > 1.0)
 }
 
 /// One line: the least candidate and how many others come near it.
-fn describe(candidates: &[Candidate], u: f64, d: f64, out: &Path) -> String {
+fn describe(candidates: &[Candidate], u: f64, d: f64) -> String {
     let Some(least) = candidates.iter().min_by(|a, b| a.force.total_cmp(&b.force)) else {
-        return format!("no admissible candidate; outputs in {}", out.display());
+        return "no admissible candidate".into();
     };
     let near: Vec<f64> = candidates
         .iter()
@@ -95,7 +218,7 @@ fn describe(candidates: &[Candidate], u: f64, d: f64, out: &Path) -> String {
     let span =
         near.iter().fold(f64::MIN, |a, &x| a.max(x)) - near.iter().fold(f64::MAX, |a, &x| a.min(x));
     format!(
-        "u/d = {:.3}: {} candidates; least force_norm {:.4} at {:.2} d ahead (β = {:.2}°); {} within 0.1 %, {} within 1 % over {:.2} d; outputs in {}",
+        "u/d = {:.3}: {} candidates; least force_norm {:.4} at {:.2} d ahead (β = {:.2}°); {} within 0.1 %, {} within 1 % over {:.2} d",
         u / d,
         candidates.len(),
         least.force_norm,
@@ -103,7 +226,6 @@ fn describe(candidates: &[Candidate], u: f64, d: f64, out: &Path) -> String {
         least.beta_deg,
         near_minimum(candidates, 0.001),
         near.len(),
-        span / d,
-        out.display()
+        span / d
     )
 }

@@ -583,3 +583,70 @@ fn landscape_outside_the_travel_is_refused() {
         assert_eq!(sandbox.entries(), ["case.toml"], "no output folder");
     }
 }
+
+/// A map of landscapes: one column per u/d = 0, E, 2E, …, each holding the
+/// least force (ratio exactly 1) and no ratio below it.
+#[test]
+fn landscape_map_has_the_least_force_in_every_column() {
+    let sandbox = Sandbox::new(REFINED);
+    let o = sandbox.soilcut(&["landscape", "case.toml", "--every", "0.25", "--out", "map"]);
+    assert_ok(&o);
+    assert!(
+        stdout(&o).starts_with("5 landscapes from u/d = 0 to 1.000"),
+        "{}",
+        stdout(&o)
+    );
+    assert!(sandbox.path("map/landscape_map.png").is_file());
+    let text = fs::read_to_string(sandbox.path("map/landscape_map.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("u_over_d,distance_over_d,force_over_least")
+    );
+    let mut columns: Vec<(String, Vec<f64>)> = Vec::new();
+    for line in lines {
+        let (u, rest) = line.split_once(',').unwrap();
+        let ratio: f64 = rest.split(',').nth(1).unwrap().parse().unwrap();
+        match columns.last_mut() {
+            Some((last, ratios)) if last == u => ratios.push(ratio),
+            _ => columns.push((u.to_string(), vec![ratio])),
+        }
+    }
+    let us: Vec<&str> = columns.iter().map(|c| c.0.as_str()).collect();
+    assert_eq!(us, ["0", "0.25", "0.5", "0.75", "1"]);
+    for (u, ratios) in &columns {
+        assert!(ratios.contains(&1.0), "u/d {u}");
+        assert!(ratios.iter().all(|&r| r >= 1.0), "u/d {u}");
+    }
+}
+
+#[test]
+fn landscape_needs_one_valid_moment() {
+    let sandbox = Sandbox::new(REFINED);
+    for (args, says) in [
+        (
+            vec!["--every", "0"],
+            "--every must be a number above 0, at most run.travel / blade.depth = 1 ",
+        ),
+        (vec!["--every", "2"], "--every must be"),
+        (vec!["--every", "inf"], "--every must be"),
+    ] {
+        let mut all = vec!["landscape", "case.toml"];
+        all.extend(&args);
+        let o = sandbox.soilcut(&all);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.starts_with(&format!("error: case.toml: {says}")),
+            "{err}"
+        );
+    }
+    for args in [vec![], vec!["--at", "0.5", "--every", "0.25"]] {
+        let mut all = vec!["landscape", "case.toml"];
+        all.extend(&args);
+        let o = sandbox.soilcut(&all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).matches("error:").count(), 1, "{}", stderr(&o));
+    }
+    assert_eq!(sandbox.entries(), ["case.toml"], "no output folder");
+}

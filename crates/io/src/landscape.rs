@@ -34,3 +34,19 @@ pub fn landscape_csv(candidates: &[Candidate], u: f64, depth: f64) -> String {
     }
     out
 }
+
+/// Columns of `landscape_map.csv`, in order.
+pub const LANDSCAPE_MAP_HEADER: &str = "u_over_d,distance_over_d,force_over_least";
+
+/// One row per landscape and distance bin: u/d of the landscape, the bin's
+/// start / d, and the least P / P* of its candidates.
+pub fn landscape_map_csv(columns: &[(f64, Vec<(f64, f64)>)]) -> String {
+    let mut out = String::from(LANDSCAPE_MAP_HEADER);
+    out.push('\n');
+    for (u, bins) in columns {
+        for (start, ratio) in bins {
+            writeln!(out, "{u},{start},{ratio}").expect("writing to a String");
+        }
+    }
+    out
+}

@@ -5,7 +5,8 @@
 //!   validated [`LoadedCase`] (and its `case.resolved.toml`).
 //! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
 //!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
-//! * [`landscape_csv`]: every candidate mechanism of one increment.
+//! * [`landscape_csv`]: every candidate mechanism of one increment;
+//!   [`landscape_map_csv`]: landscapes through a run, binned by distance.
 //! * [`read_measured`]: a measured force-displacement curve (`u,force`).
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
 //!   reads a finished run's files back for drawing.
@@ -24,7 +25,7 @@ pub use finished::{
     frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
     FRAME_ROWS,
 };
-pub use landscape::{landscape_csv, LANDSCAPE_HEADER};
+pub use landscape::{landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER};
 pub use measured::{parse_measured, read_measured};
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,

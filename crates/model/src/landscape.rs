@@ -40,3 +40,55 @@ pub fn near_minimum(candidates: &[Candidate], fraction: f64) -> usize {
         .filter(|c| c.force <= least * (1.0 + fraction))
         .count()
 }
+
+/// The least P / P* in each bin of `bin` (a length) of distance ahead of
+/// the blade tip at x = `u`, P* the least force of all: (bin start, least
+/// ratio) for every bin that holds a candidate. `candidates` must come
+/// nearest first, as `Simulation::landscape` gives them. A map of the
+/// landscape over a run stacks these (`soilcut landscape --every`).
+pub fn least_by_distance(candidates: &[Candidate], u: f64, bin: f64) -> Vec<(f64, f64)> {
+    let least = candidates
+        .iter()
+        .map(|c| c.force)
+        .fold(f64::INFINITY, f64::min);
+    let mut bins: Vec<(f64, f64)> = Vec::new();
+    for c in candidates {
+        let start = ((c.x_emergence - u) / bin).floor() * bin;
+        let ratio = c.force / least;
+        match bins.last_mut() {
+            Some(last) if last.0 == start => last.1 = last.1.min(ratio),
+            _ => bins.push((start, ratio)),
+        }
+    }
+    bins
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn candidate(x: f64, force: f64) -> Candidate {
+        Candidate {
+            x_emergence: x,
+            y_emergence: 0.0,
+            beta_deg: 10.0,
+            force,
+            force_norm: force,
+            friction_deg: 30.0,
+            dilation_deg: 0.0,
+        }
+    }
+
+    #[test]
+    fn bins_keep_their_least_ratio() {
+        let all = [
+            candidate(10.2, 4.0),
+            candidate(10.7, 2.0),
+            candidate(11.1, 3.0),
+            candidate(13.0, 2.2),
+        ];
+        let bins = least_by_distance(&all, 10.0, 1.0);
+        assert_eq!(bins, vec![(0.0, 1.0), (1.0, 1.5), (3.0, 1.1)]);
+        assert_eq!(near_minimum(&all, 0.1), 2);
+    }
+}

@@ -101,3 +101,101 @@ impl Picture for Landscape {
         Ok(())
     }
 }
+
+/// Landscapes taken through a run, for [`draw_landscape_map`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct LandscapeMap {
+    pub title: String,
+    /// Width of the distance bins, in d.
+    pub bin: f64,
+    /// One column per landscape: u/d, and for each distance bin (start / d)
+    /// the least P/P* of its candidates.
+    pub columns: Vec<(f64, Vec<(f64, f64)>)>,
+}
+
+/// Levels of P/P* − 1 that set a cell's colour, with their legend labels.
+const LEVELS: [(f64, &str); 3] = [
+    (0.001, "within 0.1 %"),
+    (0.01, "within 1 %"),
+    (0.05, "within 5 %"),
+];
+
+/// Draws, against u/d (across) and the distance ahead of the blade tip
+/// (up), how near each place comes to the least force of its increment:
+/// red where the band emerges, then within 0.1 %, 1 % and 5 % of it, grey
+/// beyond. 1200 × 800 px, PNG or SVG by `path`'s extension.
+pub fn draw_landscape_map(map: &LandscapeMap, path: &Path) -> Result<(), PlotError> {
+    if map.columns.is_empty() {
+        return Err(PlotError::new(path, "no landscape to draw"));
+    }
+    save(map, path)
+}
+
+fn level_colour(k: usize) -> RGBColor {
+    style::viridis(k as f64 / LEVELS.len() as f64)
+}
+
+impl Picture for LandscapeMap {
+    fn size(&self) -> (u32, u32) {
+        (1200, 800)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
+        root.fill(&WHITE).map_err(text)?;
+        let area = titled(root, &self.title, PAPER.title)?;
+        let mut entries = vec![("least force".to_string(), Mark::Block(RED))];
+        for (k, (_, label)) in LEVELS.iter().enumerate() {
+            entries.push((label.to_string(), Mark::Block(level_colour(k))));
+        }
+        entries.push(("beyond".into(), Mark::Block(style::GRID)));
+        let legend = Legend::new(entries, 1120, PAPER);
+        let (legend_area, plot_area) = area.split_vertically(legend.height());
+        legend.draw(&legend_area)?;
+        let u_max = self.columns.iter().map(|c| c.0).fold(0.0, f64::max);
+        let width = self.column_width();
+        let reach = self.columns.iter().flat_map(|c| c.1.iter().map(|b| b.0));
+        let y_max = round_up(reach.fold(0.0, f64::max) + self.bin);
+        let mut chart = ChartBuilder::on(&plot_area)
+            .margin(20)
+            .margin_right(45)
+            .x_label_area_size(PAPER.desc * 3)
+            .y_label_area_size(PAPER.desc * 4)
+            .build_cartesian_2d(0.0..u_max + width, 0.0..y_max)
+            .map_err(text)?;
+        axes(
+            &mut chart,
+            "u/d (–)",
+            "distance ahead of the blade tip / d (–)",
+            PAPER,
+        )?;
+        let cells = self.columns.iter().flat_map(|(u, bins)| {
+            bins.iter().map(move |&(start, ratio)| {
+                let colour = if ratio == 1.0 {
+                    RED
+                } else {
+                    LEVELS
+                        .iter()
+                        .position(|l| ratio - 1.0 <= l.0)
+                        .map_or(style::GRID, level_colour)
+                };
+                Rectangle::new(
+                    [(*u, start), (u + width, start + self.bin)],
+                    colour.filled(),
+                )
+            })
+        });
+        chart.draw_series(cells).map_err(text)?;
+        Ok(())
+    }
+}
+
+impl LandscapeMap {
+    /// The smallest spacing of the columns in u/d (1 for a single one).
+    fn column_width(&self) -> f64 {
+        self.columns
+            .windows(2)
+            .map(|w| w[1].0 - w[0].0)
+            .fold(f64::INFINITY, f64::min)
+            .min(1.0)
+    }
+}

@@ -10,6 +10,8 @@
 //! * [`draw_animation`]: an animated GIF of the cutting process.
 //! * [`draw_compare`]: force and β* of several runs overlaid (Fig. 7).
 //! * [`draw_landscape`]: the force of every candidate band of one increment.
+//! * [`draw_landscape_map`]: how near each place comes to the least force,
+//!   increment after increment.
 //!
 //! Lengths are drawn divided by the blade depth d (the case's length unit
 //! is not stored with a run), so every axis is dimensionless.
@@ -28,7 +30,7 @@ mod style;
 pub use animation::draw_animation;
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
-pub use landscape::{draw_landscape, Landscape};
+pub use landscape::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap};
 pub use render::{Format, PlotError};
 
 use std::path::{Path, PathBuf};
