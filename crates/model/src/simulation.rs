@@ -358,6 +358,12 @@ impl Simulation {
         }
     }
 
+    /// P / (γ0 d²), d the reference depth `blade.depth`.
+    fn normalised(&self, force: f64) -> f64 {
+        let c = &self.case;
+        force / (c.soil.unit_weight * c.blade.depth * c.blade.depth)
+    }
+
     /// Rise of the tip per unit of travel over the next increment.
     fn climb(&self) -> f64 {
         let u = self.blade_position();
@@ -370,13 +376,12 @@ impl Simulation {
         self.case.tip_depth(self.blade_position())
     }
 
-    fn find_mechanism(&mut self) -> Option<Choice> {
+    fn find_mechanism(&mut self, face: Face) -> Option<Choice> {
         let d = self.tip_depth();
         let dx = self.surface.spacing;
         let laws = &self.laws;
         let rule = self.case.choices.band_angles;
         let angles = |means: BandAngles| laws.band_angles(rule, means);
-        let face = laws.face(self.climb());
         let factor = |angles: BandAngles, t: f64| laws.factor(angles, t, face);
         let input = SearchInput {
             angles: &angles,
@@ -410,7 +415,7 @@ impl Simulation {
     /// would if no candidate is admissible.
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
         self.search.begin_landscape();
-        let found = self.find_mechanism();
+        let found = self.find_mechanism(self.laws.face(self.climb()));
         let choices = self.search.end_landscape();
         if found.is_none() {
             return Err(StepError::NoAdmissibleMechanism {
@@ -419,8 +424,6 @@ impl Simulation {
             });
         }
         let depth = self.tip_depth();
-        let c = &self.case;
-        let scale = c.soil.unit_weight * c.blade.depth * c.blade.depth;
         Ok(choices
             .iter()
             .map(|choice| {
@@ -431,7 +434,7 @@ impl Simulation {
                     y_emergence: y,
                     beta_deg: choice.tan_beta.atan().to_degrees(),
                     force: choice.force,
-                    force_norm: choice.force / scale,
+                    force_norm: self.normalised(choice.force),
                     friction_deg: choice.friction.to_degrees(),
                     dilation_deg: choice.dilation.to_degrees(),
                 }
@@ -443,11 +446,11 @@ impl Simulation {
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
         let u = self.blade_position();
         let step = self.done + 1;
+        let face = self.laws.face(self.climb());
         let choice = self
-            .find_mechanism()
+            .find_mechanism(face)
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
         let (b, j) = (self.done, choice.node);
-        let face = self.laws.face(self.climb());
         let c = &self.case;
         let depth = self.tip_depth();
         let deepening = c.tip_depth(u + self.surface.spacing) - depth;
@@ -486,7 +489,6 @@ impl Simulation {
         );
         self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
-        let c = &self.case;
         // Face friction opposes the block's motion along the face. The
         // reaction is at φw (with its sign) from the face normal, which is
         // α − 90° from the horizontal: ω = ±φw + α − 90°.
@@ -500,7 +502,7 @@ impl Simulation {
             step,
             u,
             force: choice.force,
-            force_norm: choice.force / (c.soil.unit_weight * c.blade.depth * c.blade.depth),
+            force_norm: self.normalised(choice.force),
             force_h: choice.force * cos_w,
             force_v: choice.force * sin_w,
             beta_deg: choice.tan_beta.atan().to_degrees(),
