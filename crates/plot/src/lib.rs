@@ -12,6 +12,7 @@
 //! * [`draw_landscape`]: the force of every candidate band of one increment.
 //! * [`draw_landscape_map`]: how near each place comes to the least force,
 //!   increment after increment.
+//! * [`draw_panels`]: panels of points and lines (parameter studies).
 //!
 //! Lengths are drawn divided by the blade depth d (the case's length unit
 //! is not stored with a run), so every axis is dimensionless.
@@ -24,6 +25,7 @@ mod blade;
 mod curves;
 mod deformation;
 mod landscape;
+mod panels;
 mod render;
 mod style;
 
@@ -31,6 +33,7 @@ pub use animation::draw_animation;
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
 pub use landscape::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap};
+pub use panels::{draw_panels, Panel, Series, SeriesMark};
 pub use render::{Format, PlotError};
 
 use std::path::{Path, PathBuf};

@@ -463,7 +463,7 @@ impl ConvergeResult {
     /// `converge.png`: window means and envelope against u/d, the final
     /// surfaces, and the relative changes against the level.
     pub fn draw(&self, path: &Path) -> Result<(), StudyError> {
-        use crate::plot::{draw_panels, Panel, Series};
+        use soilcut_plot::{draw_panels, Panel, Series};
         let label = |l: &Level| format!("level {} (v0 = {})", l.level, l.increment);
         let per_window = |values: PerWindow| {
             self.levels
@@ -531,6 +531,7 @@ impl ConvergeResult {
             &panels,
             2,
             path,
-        )
+        )?;
+        Ok(())
     }
 }

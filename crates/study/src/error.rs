@@ -25,6 +25,12 @@ impl From<InputError> for StudyError {
     }
 }
 
+impl From<soilcut_plot::PlotError> for StudyError {
+    fn from(e: soilcut_plot::PlotError) -> Self {
+        StudyError::Plot(e.to_string())
+    }
+}
+
 impl From<OutputError> for StudyError {
     fn from(e: OutputError) -> Self {
         StudyError::Output(e)

@@ -566,7 +566,7 @@ impl FitResult {
     /// `fit.png`: the measured points and the simulated force curves at
     /// the start and at the best values.
     pub fn draw(&self, path: &Path) -> Result<(), StudyError> {
-        use crate::plot::{draw_panels, Panel, Series};
+        use soilcut_plot::{draw_panels, Panel, Series};
         let curve = |run: &RunResult| run.history.iter().map(|r| (r.u, r.force)).collect();
         let u_max = self.measured.iter().map(|p| p.0).fold(0.0, f64::max);
         let clip = |points: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
@@ -587,7 +587,8 @@ impl FitResult {
                 ),
             ],
         };
-        draw_panels("Fit: measured and simulated force", &[panel], 1, path)
+        draw_panels("Fit: measured and simulated force", &[panel], 1, path)?;
+        Ok(())
     }
 }
 

@@ -22,7 +22,6 @@ pub mod csv;
 mod error;
 pub mod figures;
 pub mod fit;
-pub mod plot;
 pub mod run;
 pub mod sample;
 pub mod sweep;

@@ -161,13 +161,13 @@ impl SweepResult {
             if xs.iter().any(Option::is_none) {
                 continue;
             }
-            let panels: Vec<crate::plot::Panel> = NAMES
+            let panels: Vec<soilcut_plot::Panel> = NAMES
                 .iter()
                 .enumerate()
-                .map(|(f, name)| crate::plot::Panel {
+                .map(|(f, name)| soilcut_plot::Panel {
                     x_label: key.clone(),
                     y_label: name.to_string(),
-                    series: vec![crate::plot::Series::points(
+                    series: vec![soilcut_plot::Series::points(
                         "",
                         self.rows
                             .iter()
@@ -180,7 +180,7 @@ impl SweepResult {
                 })
                 .collect();
             let path = dir.join(format!("sweep-{key}.png"));
-            crate::plot::draw_panels(
+            soilcut_plot::draw_panels(
                 &format!("Sweep: summary figures against {key}"),
                 &panels,
                 3,

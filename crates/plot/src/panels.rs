@@ -1,52 +1,22 @@
-//! Small PNG charts of studies: panels of points and lines.
-//!
-//! Text uses a subset of DejaVu Sans compiled into the crate
-//! (`fonts/README.md`), registered with plotters' ab_glyph renderer under
-//! a family name of its own, never system fonts. The same data give
-//! byte-identical files.
+//! Panels of points and lines in a grid under one title: the pictures of
+//! parameter studies (sweep, fit, convergence), which plot any quantity
+//! against any other.
 
-use crate::error::StudyError;
+use crate::render::{save, text, DrawResult, Picture};
+use crate::style::{FAMILY, SERIES};
+use crate::PlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
-use std::sync::Once;
-
-/// The family name the bundled font is registered under (its own, so that
-/// it never replaces another crate's fonts in the same process).
-const FAMILY: &str = "soilcut-study-sans";
-
-static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans-subset.ttf");
-
-fn register_font() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        if plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).is_err() {
-            panic!("the bundled DejaVu Sans subset is a valid font");
-        }
-    });
-}
 
 /// Panel size in pixels.
 const PANEL: (u32, u32) = (600, 420);
 /// Height of the title band.
 const TITLE_HEIGHT: u32 = 50;
 
-/// Series colours: the Okabe-Ito palette (told apart with colour-vision
-/// deficiencies), black last.
-const COLOURS: [RGBColor; 8] = [
-    RGBColor(0, 114, 178),
-    RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
-    RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
-    RGBColor(240, 228, 66),
-    RGBColor(0, 0, 0),
-];
-
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Mark {
+pub enum SeriesMark {
     Points,
     Line,
 }
@@ -57,7 +27,7 @@ pub struct Series {
     /// Legend entry (none if empty).
     pub label: String,
     pub points: Vec<(f64, f64)>,
-    pub mark: Mark,
+    pub mark: SeriesMark,
 }
 
 impl Series {
@@ -65,7 +35,7 @@ impl Series {
         Series {
             label: label.to_string(),
             points,
-            mark: Mark::Points,
+            mark: SeriesMark::Points,
         }
     }
 
@@ -73,7 +43,7 @@ impl Series {
         Series {
             label: label.to_string(),
             points,
-            mark: Mark::Line,
+            mark: SeriesMark::Line,
         }
     }
 }
@@ -86,37 +56,51 @@ pub struct Panel {
     pub series: Vec<Series>,
 }
 
-/// Draws `panels`, `columns` to a row under `title`, into the PNG `path`.
+/// Draws `panels`, `columns` to a row under `title`, into `path` (PNG or
+/// SVG by its extension), each panel 600 × 420 px.
 pub fn draw_panels(
     title: &str,
     panels: &[Panel],
     columns: usize,
     path: &Path,
-) -> Result<(), StudyError> {
-    register_font();
+) -> Result<(), PlotError> {
     let columns = columns.clamp(1, panels.len().max(1));
-    let rows = panels.len().div_ceil(columns).max(1);
-    let size = (
-        PANEL.0 * columns as u32,
-        PANEL.1 * rows as u32 + TITLE_HEIGHT,
-    );
-    let fail = |e: String| StudyError::Plot(format!("{}: {e}", path.display()));
-    let mut buffer = vec![255u8; (size.0 * size.1 * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, size).into_drawing_area();
-        let text = |e: &dyn std::fmt::Display| e.to_string();
-        root.fill(&WHITE).map_err(|e| fail(text(&e)))?;
-        let (top, body) = root.split_vertically(TITLE_HEIGHT);
-        top.titled(title, (FAMILY, 26))
-            .map_err(|e| fail(text(&e)))?;
-        let areas = body.split_evenly((rows, columns));
-        for (panel, area) in panels.iter().zip(&areas) {
-            draw_panel(panel, area).map_err(fail)?;
-        }
-        root.present().map_err(|e| fail(text(&e)))?;
+    save(
+        &Panels {
+            title,
+            panels,
+            columns,
+            rows: panels.len().div_ceil(columns).max(1),
+        },
+        path,
+    )
+}
+
+struct Panels<'a> {
+    title: &'a str,
+    panels: &'a [Panel],
+    columns: usize,
+    rows: usize,
+}
+
+impl Picture for Panels<'_> {
+    fn size(&self) -> (u32, u32) {
+        (
+            PANEL.0 * self.columns as u32,
+            PANEL.1 * self.rows as u32 + TITLE_HEIGHT,
+        )
     }
-    let bytes = png_bytes(size, &buffer).map_err(fail)?;
-    std::fs::write(path, bytes).map_err(|e| fail(e.to_string()))
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
+        root.fill(&WHITE).map_err(text)?;
+        let (top, body) = root.split_vertically(TITLE_HEIGHT);
+        top.titled(self.title, (FAMILY, 26)).map_err(text)?;
+        let areas = body.split_evenly((self.rows, self.columns));
+        for (panel, area) in self.panels.iter().zip(&areas) {
+            draw_panel(panel, area)?;
+        }
+        Ok(())
+    }
 }
 
 /// (lo, hi) of `values` with a 5 % margin; a single value gets ±1 (or ±5 %).
@@ -140,11 +124,7 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
-fn draw_panel<DB: DrawingBackend>(
-    panel: &Panel,
-    area: &DrawingArea<DB, Shift>,
-) -> Result<(), String> {
-    let text = |e: &dyn std::fmt::Display| e.to_string();
+fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) -> DrawResult {
     let all = || panel.series.iter().flat_map(|s| s.points.iter());
     let (x0, x1) = range(all().map(|p| p.0));
     let (y0, y1) = range(all().map(|p| p.1));
@@ -153,7 +133,7 @@ fn draw_panel<DB: DrawingBackend>(
         .x_label_area_size(48)
         .y_label_area_size(78)
         .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| text(&e))?;
+        .map_err(text)?;
     chart
         .configure_mesh()
         .x_desc(panel.x_label.as_str())
@@ -163,21 +143,21 @@ fn draw_panel<DB: DrawingBackend>(
         .light_line_style(RGBColor(235, 235, 235))
         .x_labels(6)
         .y_labels(6)
-        .x_label_formatter(&|x| tick(*x, x1 - x0))
-        .y_label_formatter(&|y| tick(*y, y1 - y0))
+        .x_label_formatter(&|x| span_tick(*x, x1 - x0))
+        .y_label_formatter(&|y| span_tick(*y, y1 - y0))
         .draw()
-        .map_err(|e| text(&e))?;
+        .map_err(text)?;
     let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
     for (i, s) in panel.series.iter().enumerate() {
-        let colour = COLOURS[i % COLOURS.len()];
+        let colour = SERIES[i % SERIES.len()];
         let points: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
         let drawn = match s.mark {
-            Mark::Points => chart
+            SeriesMark::Points => chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
-                .map_err(|e| text(&e))?,
-            Mark::Line => chart
+                .map_err(text)?,
+            SeriesMark::Line => chart
                 .draw_series(LineSeries::new(points, colour.stroke_width(2)))
-                .map_err(|e| text(&e))?,
+                .map_err(text)?,
         };
         if !s.label.is_empty() {
             drawn.label(s.label.as_str()).legend(move |(x, y)| {
@@ -193,14 +173,14 @@ fn draw_panel<DB: DrawingBackend>(
             .border_style(RGBColor(180, 180, 180))
             .position(SeriesLabelPosition::UpperLeft)
             .draw()
-            .map_err(|e| text(&e))?;
+            .map_err(text)?;
     }
     Ok(())
 }
 
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
 /// apart, or scientific notation for very small or large spans.
-fn tick(value: f64, span: f64) -> String {
+fn span_tick(value: f64, span: f64) -> String {
     if value.abs() < 1e-9 * span {
         "0".to_string()
     } else if !(1e-3..1e5).contains(&span) {
@@ -211,29 +191,17 @@ fn tick(value: f64, span: f64) -> String {
     }
 }
 
-/// Encodes RGB pixels as PNG.
-fn png_bytes((w, h): (u32, u32), rgb: &[u8]) -> Result<Vec<u8>, String> {
-    let mut out = Vec::new();
-    let mut encoder = png::Encoder::new(&mut out, w, h);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
-    writer.write_image_data(rgb).map_err(|e| e.to_string())?;
-    writer.finish().map_err(|e| e.to_string())?;
-    Ok(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn ticks_fit_the_span() {
-        assert_eq!(tick(32.5, 10.0), "32.5");
-        assert_eq!(tick(1.25, 0.5), "1.250");
-        assert_eq!(tick(2e-15, 4e-15), "2.00e-15");
-        assert_eq!(tick(1500.0, 2000.0), "1500");
-        assert_eq!(tick(-1.26e-29, 1e-13), "0");
+        assert_eq!(span_tick(32.5, 10.0), "32.5");
+        assert_eq!(span_tick(1.25, 0.5), "1.250");
+        assert_eq!(span_tick(2e-15, 4e-15), "2.00e-15");
+        assert_eq!(span_tick(1500.0, 2000.0), "1500");
+        assert_eq!(span_tick(-1.26e-29, 1e-13), "0");
     }
 
     #[test]
