@@ -2,14 +2,14 @@
 //! a run (the landscape of minimum effort), or a map of such landscapes
 //! through the run.
 
-use crate::{load, Failure};
+use crate::{load, CaseOutput, Failure};
 use soilcut_io::{
     landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
 };
 use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
 use soilcut_plot::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap, PlotError};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -25,8 +25,8 @@ const MAP_BIN: f64 = 0.05;
 #[derive(clap::Args)]
 #[command(group(clap::ArgGroup::new("when").required(true).args(["at", "every"])))]
 pub struct LandscapeArgs {
-    /// The case file (TOML).
-    case: PathBuf,
+    #[command(flatten)]
+    target: CaseOutput,
     /// Blade displacement u/d at which to take the landscape: that of the
     /// first increment at or beyond it, or of the last increment (0 to
     /// run.travel / blade.depth).
@@ -36,20 +36,12 @@ pub struct LandscapeArgs {
     /// whole run and map them (E in (0, run.travel / blade.depth]).
     #[arg(long, value_name = "E", allow_negative_numbers = true)]
     every: Option<f64>,
-    /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    set: Vec<String>,
-    /// Output folder [default: out/<name>-landscape].
-    #[arg(long, value_name = "DIR")]
-    out: Option<PathBuf>,
-    /// Replace the output folder if it exists and is not empty.
-    #[arg(long)]
-    force: bool,
 }
 
 pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
-    let path = args.case.as_path();
-    let loaded = load(path, &args.set)?;
+    let target = &args.target;
+    let path = target.case.as_path();
+    let loaded = load(path, &target.set)?;
     let case = &loaded.case;
     let last = case.run.travel / case.blade.depth;
     let (flag, value, allowed) = match (args.at, args.every) {
@@ -68,16 +60,14 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
         );
         return Err(Failure::input(path, message));
     }
-    let out = args
-        .out
-        .unwrap_or_else(|| Path::new("out").join(format!("{}-landscape", case.name)));
-    soilcut_io::check_output_dir(&out, args.force).map_err(Failure::output)?;
+    let out = target.out_or(&format!("{}-landscape", case.name));
+    soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let taken = match args.at {
         Some(at) => one(&mut sim, &loaded, at, path)?,
         None => map(&mut sim, &loaded, value, path)?,
     };
-    write_output_dir_then(&out, &taken.files, args.force, |staged| {
+    write_output_dir_then(&out, &taken.files, target.force, |staged| {
         let file = staged.join(taken.picture.name());
         taken.picture.draw(&file).map_err(|e| OutputError::Io {
             path: file,

@@ -68,17 +68,8 @@ enum Command {
     /// Run a case and write its outputs into a new folder.
     #[command(after_help = RUN_EXAMPLES)]
     Run {
-        /// The case file (TOML).
-        case: PathBuf,
-        /// Output folder [default: out/<name>].
-        #[arg(long, value_name = "DIR")]
-        out: Option<PathBuf>,
-        /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
-        #[arg(long = "set", value_name = "KEY=VALUE")]
-        set: Vec<String>,
-        /// Replace the output folder if it exists and is not empty.
-        #[arg(long)]
-        force: bool,
+        #[command(flatten)]
+        target: CaseOutput,
         /// Do not draw the pictures (plots/ and animation.gif); `soilcut plot` can draw them later.
         #[arg(long)]
         no_plots: bool,
@@ -139,6 +130,32 @@ enum Command {
     Converge(study_cmd::ConvergeArgs),
 }
 
+/// The case and the folder its outputs go to: the options of every command
+/// that runs a case into a new folder.
+#[derive(clap::Args)]
+struct CaseOutput {
+    /// The case file (TOML).
+    case: PathBuf,
+    /// Override a key of the case file, e.g. run.increment=0.02 (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<String>,
+    /// Output folder [default: out/<name>, or out/<name>-<command> for landscape and the studies].
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Replace the output folder if it exists and is not empty.
+    #[arg(long)]
+    force: bool,
+}
+
+impl CaseOutput {
+    /// `--out`, or out/`name`.
+    fn out_or(&self, name: &str) -> PathBuf {
+        self.out
+            .clone()
+            .unwrap_or_else(|| Path::new("out").join(name))
+    }
+}
+
 /// An error to print as `error: <path>: <message>` with its exit code.
 struct Failure {
     code: u8,
@@ -183,13 +200,10 @@ impl Failure {
 fn main() -> ExitCode {
     let result = match Cli::parse().command {
         Command::Run {
-            case,
-            out,
-            set,
-            force,
+            target,
             no_plots,
             quiet,
-        } => run(&case, out, &set, force, !no_plots, quiet),
+        } => run(target, !no_plots, quiet),
         Command::Check { case, set } => check(&case, &set),
         Command::Analytic { case, set } => load(&case, &set).map(|loaded| {
             print!("{}", analytic_cmd::report(&loaded.case));
@@ -237,17 +251,12 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     Ok(())
 }
 
-fn run(
-    path: &Path,
-    out: Option<PathBuf>,
-    set: &[String],
-    force: bool,
-    plots: bool,
-    quiet: bool,
-) -> Result<(), Failure> {
-    let loaded = load(path, set)?;
+fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
+    let path = target.case.as_path();
+    let loaded = load(path, &target.set)?;
     let case = &loaded.case;
-    let out = out.unwrap_or_else(|| Path::new("out").join(&case.name));
+    let out = target.out_or(&case.name);
+    let force = target.force;
     soilcut_io::check_output_dir(&out, force).map_err(Failure::output)?;
 
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;

@@ -3,7 +3,7 @@
 //! at all: they are written into a hidden sibling folder renamed into
 //! place when complete.
 
-use super::Failure;
+use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{check_output_dir, read_measured, OutputError, Override};
@@ -41,17 +41,8 @@ Examples:
 /// Options every study takes.
 #[derive(Args)]
 pub struct Common {
-    /// The case file (TOML).
-    case: PathBuf,
-    /// Override a key of the case file for every run, e.g. run.increment=0.08 (repeatable).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    set: Vec<String>,
-    /// Output folder [default: out/<name>-<study>].
-    #[arg(long, value_name = "DIR")]
-    out: Option<PathBuf>,
-    /// Replace the output folder if it exists and is not empty.
-    #[arg(long)]
-    force: bool,
+    #[command(flatten)]
+    target: CaseOutput,
     /// Worker threads [default: one per core]. Results do not depend on it.
     #[arg(long, value_name = "N", default_value_t = 0)]
     jobs: usize,
@@ -132,8 +123,9 @@ fn study_failure(path: &Path, e: StudyError) -> Failure {
 impl Common {
     /// The base case, the output folder (checked to be free) and the case name.
     fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
-        let path = &self.case;
+        let path = &self.target.case;
         let overrides = self
+            .target
             .set
             .iter()
             .map(|s| s.parse::<Override>())
@@ -145,11 +137,8 @@ impl Common {
             .map_err(|e| Failure::input(path, e))?
             .case
             .name;
-        let out = self
-            .out
-            .clone()
-            .unwrap_or_else(|| Path::new("out").join(format!("{name}-{study}")));
-        check_output_dir(&out, self.force).map_err(Failure::output)?;
+        let out = self.target.out_or(&format!("{name}-{study}"));
+        check_output_dir(&out, self.target.force).map_err(Failure::output)?;
         Ok((base, out))
     }
 
@@ -227,7 +216,7 @@ fn text_files(dir: &Path, files: &[(&str, String)]) -> Result<(), StudyError> {
 
 pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
     let c = &args.common;
-    let path = &c.case;
+    let path = &c.target.case;
     let fail = |e| study_failure(path, e);
     let (base, out) = c.start("sweep")?;
     let varies = args
@@ -246,7 +235,7 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
     };
     let runs = sweep.points().map_err(fail)?.len();
     let mut result = None;
-    write_study(&out, c.force, |dir| {
+    write_study(&out, c.target.force, |dir| {
         if args.keep_runs {
             sweep.keep_runs = Some(dir.join("runs"));
         }
@@ -270,7 +259,7 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
 
 pub fn fit(args: FitArgs) -> Result<(), Failure> {
     let c = &args.common;
-    let path = &c.case;
+    let path = &c.target.case;
     let fail = |e| study_failure(path, e);
     let (base, out) = c.start("fit")?;
     let bounds = args
@@ -306,7 +295,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         jobs: c.jobs,
     };
     let mut summary = String::new();
-    write_study(&out, c.force, |dir| {
+    write_study(&out, c.target.force, |dir| {
         let r = fit.run(&c.progress("Nelder-Mead runs"))?;
         text_files(
             dir,
@@ -339,7 +328,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
 
 pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     let c = &args.common;
-    let path = &c.case;
+    let path = &c.target.case;
     let fail = |e| study_failure(path, e);
     let (base, out) = c.start("converge")?;
     let study = Converge {
@@ -349,7 +338,7 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
         jobs: c.jobs,
     };
     let mut verdicts = String::new();
-    write_study(&out, c.force, |dir| {
+    write_study(&out, c.target.force, |dir| {
         let r = study.run(&c.progress("levels"))?;
         text_files(
             dir,
