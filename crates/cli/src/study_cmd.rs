@@ -6,7 +6,7 @@
 use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use soilcut_io::{check_output_dir, read_measured, OutputError, Override};
+use soilcut_io::{check_output_dir, read_measured, write_output_dir_then, OutputError, Override};
 use soilcut_study::converge::Converge;
 use soilcut_study::fit::{parse_bounds, Fit};
 use soilcut_study::sample::{Sample, Vary};
@@ -166,43 +166,28 @@ impl Common {
 }
 
 /// Writes a study's outputs: `write` fills a hidden sibling folder, which
-/// then replaces `out` (with `--force`) or becomes it.
+/// then replaces `out` (with `--force`) or becomes it
+/// (`write_output_dir_then`); a failure of `write` is returned as it is.
 fn write_study(
     out: &Path,
     force: bool,
     write: impl FnOnce(&Path) -> Result<(), StudyError>,
 ) -> Result<(), StudyError> {
-    check_output_dir(out, force)?;
-    let parent = match out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = out
-        .file_name()
-        .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    let pid = std::process::id();
-    let staging = parent.join(format!(".{name}.study-{pid}"));
-    let old = parent.join(format!(".{name}.old-{pid}"));
-    let io = |path: &Path| {
-        let path = path.to_path_buf();
-        move |source| StudyError::Output(OutputError::Io { path, source })
-    };
-    std::fs::create_dir_all(&staging).map_err(io(&staging))?;
-    let placed = write(&staging).and_then(|()| {
-        let replacing = out.symlink_metadata().is_ok();
-        if replacing {
-            std::fs::rename(out, &old).map_err(io(out))?;
-        }
-        std::fs::rename(&staging, out).map_err(io(out))?;
-        if replacing {
-            let _ = std::fs::remove_dir_all(&old);
-        }
-        Ok(())
+    let mut failed = None;
+    let placed = write_output_dir_then(out, &[], force, |dir| {
+        write(dir).map_err(|e| {
+            let source = std::io::Error::other(e.to_string());
+            failed = Some(e);
+            OutputError::Io {
+                path: dir.to_path_buf(),
+                source,
+            }
+        })
     });
-    if placed.is_err() {
-        let _ = std::fs::remove_dir_all(&staging);
+    match failed {
+        Some(e) => Err(e),
+        None => placed.map_err(StudyError::Output),
     }
-    placed
 }
 
 fn text_files(dir: &Path, files: &[(&str, String)]) -> Result<(), StudyError> {
