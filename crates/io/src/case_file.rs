@@ -161,10 +161,15 @@ struct AngleFile {
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, expecting = "a table { travel, increment }")]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table { travel, increment, node_spacing }"
+)]
 struct RunFile {
     travel: f64,
     increment: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    node_spacing: Option<f64>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -327,6 +332,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     let repose = *soil.repose.get_or_insert(soil.friction.residual);
     let cohesion = *soil.cohesion.get_or_insert(0.0);
     let surcharge = *soil.surcharge.get_or_insert(0.0);
+    let node_spacing = *file.run.node_spacing.get_or_insert(file.run.increment);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
@@ -380,6 +386,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         run: Run {
             travel: file.run.travel,
             increment: file.run.increment,
+            node_spacing,
         },
         choices,
     };

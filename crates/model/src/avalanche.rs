@@ -152,7 +152,7 @@ impl Avalanche {
         let tolerance = SLOPE_TOLERANCE * s;
         for i in window {
             let w = surface.node_weight(i, first);
-            let g = sign * surface.height[i] + s * (i - first) as f64;
+            let g = sign * surface.height[i] + s * surface.spacings_from(i, first);
             self.pools.push(Pool {
                 start: i,
                 len: 1,
@@ -208,7 +208,7 @@ impl Avalanche {
             .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
-            let new = sign * (pool.mean() - s * (i - first) as f64);
+            let new = sign * (pool.mean() - s * surface.spacings_from(i, first));
             let w = surface.node_weight(i, first) * surface.spacing;
             let delta = (new - surface.height[i]) * w;
             if delta < 0.0 {

@@ -27,20 +27,22 @@ pub struct Band {
     pub depth: f64,
     /// Node spacing Δx.
     pub spacing: f64,
+    /// δ / Δx: the face's offset from the grid point of node `blade`.
+    pub face_offset: f64,
 }
 
 impl Band {
-    /// The band of width dB whose lower boundary has slope `grid_slope` on
-    /// the grid and `tan_beta` physically (equal for a vertical blade; the
-    /// grid's vertical thickness is dB / cos β times their ratio).
+    /// The band of width dB whose lower boundary has slope (`grid_slope`,
+    /// `tan_beta`) = (on the grid, physically) (equal for a vertical blade;
+    /// the grid's vertical thickness is dB / cos β times their ratio).
     pub fn new(
         blade: usize,
         emergence: usize,
-        grid_slope: f64,
-        tan_beta: f64,
+        (grid_slope, tan_beta): (f64, f64),
         band_width: f64,
         depth: f64,
         spacing: f64,
+        face_offset: f64,
     ) -> Self {
         let stretch = grid_slope / tan_beta;
         Band {
@@ -51,12 +53,22 @@ impl Band {
             width: band_width,
             depth,
             spacing,
+            face_offset,
+        }
+    }
+
+    /// (x_i − x_face) / Δx for the face or a node ahead of it.
+    fn spacings(&self, i: usize) -> f64 {
+        if i == self.blade {
+            0.0
+        } else {
+            (i - self.blade) as f64 - self.face_offset
         }
     }
 
     /// Height of the lower boundary at node i.
     pub fn lower(&self, i: usize) -> f64 {
-        -self.depth + (i - self.blade) as f64 * self.spacing * self.tan_beta
+        -self.depth + self.spacings(i) * self.spacing * self.tan_beta
     }
 
     /// Relative position g_i of surface node i above the lower boundary
@@ -86,7 +98,13 @@ impl Band {
         let nodes = height.iter().enumerate();
         for (i, &y) in nodes.take(self.emergence + 1).skip(self.blade + 1) {
             let g1 = self.position(y, i);
-            area += e * dx * clipped_mean(g0, g1);
+            // The face's segment is (1 − δ/Δx) Δx long.
+            let width = if i == self.blade + 1 {
+                dx * (1.0 - self.face_offset)
+            } else {
+                dx
+            };
+            area += e * width * clipped_mean(g0, g1);
             g0 = g1;
         }
         area
@@ -158,7 +176,7 @@ mod tests {
         let dx = 1.0 / (n - 1) as f64;
         let height = vec![0.0; n + 5];
         let dband = 0.1;
-        let band = Band::new(0, n - 1, 1.0, 1.0, dband, 1.0, dx);
+        let band = Band::new(0, n - 1, (1.0, 1.0), dband, 1.0, dx, 0.0);
         let e = band.thickness;
         // Strip between y = x − 1 and y = x − 1 + e, below y = 0, x ∈ [0, 1]:
         // e·1 minus the triangle above y = 0 (legs e, e).
@@ -171,7 +189,7 @@ mod tests {
     #[test]
     fn slip_line_has_no_area_and_no_footprint() {
         let height = vec![0.0; 50];
-        let band = Band::new(0, 40, 0.5, 0.5, 0.0, 1.0, 0.05);
+        let band = Band::new(0, 40, (0.5, 0.5), 0.0, 1.0, 0.05, 0.0);
         assert_eq!(band.area_below(&height), 0.0);
         assert_eq!(band.footprint(&height), 0);
         assert_eq!(band.position(0.0, 40), 0.0);

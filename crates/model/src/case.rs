@@ -96,8 +96,11 @@ pub struct Soil {
 pub struct Run {
     /// Total blade displacement.
     pub travel: f64,
-    /// v0: blade displacement per increment (also the node spacing).
+    /// v0: blade displacement per increment.
     pub increment: f64,
+    /// h: spacing of the surface nodes, a whole multiple k = h / v0 of the
+    /// increment (k = 1 is the reference scheme; see `surface`).
+    pub node_spacing: f64,
 }
 
 /// How a candidate band takes its angles from the nodes it touches.
@@ -455,22 +458,54 @@ impl Case {
                 ),
             ));
         }
+        self.validate_node_spacing()?;
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
             return Err(CaseError::new(
-                "run.increment",
+                "run.node_spacing",
                 format!(
-                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / run.increment must be <= {MAX_NODES:e} nodes (got {nodes:.3e})"
+                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / run.node_spacing must be <= {MAX_NODES:e} nodes (got {nodes:.3e})"
                 ),
             ));
         }
         Ok(())
     }
 
+    fn validate_node_spacing(&self) -> Result<(), CaseError> {
+        let (h, v0) = (self.run.node_spacing, self.run.increment);
+        positive("run.node_spacing", h)?;
+        if h >= self.blade.depth {
+            return Err(CaseError::new(
+                "run.node_spacing",
+                format!(
+                    "must be in (0, blade.depth = {}) (got {h})",
+                    self.blade.depth
+                ),
+            ));
+        }
+        let ratio = h / v0;
+        if ratio < 1.0 - 1e-9 || (ratio - ratio.round()).abs() > 1e-9 * ratio {
+            return Err(CaseError::new(
+                "run.node_spacing",
+                format!(
+                    "must be a whole multiple (1, 2, 3, ...) of run.increment = {v0} (got {h}, {ratio} increments)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// k = h / v0: increments per node spacing (1: the reference scheme).
+    pub fn increments_per_node(&self) -> usize {
+        (self.run.node_spacing / self.run.increment)
+            .round()
+            .max(1.0) as usize
+    }
+
     /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
     pub fn initial_nodes(&self) -> f64 {
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
-        (reach / self.run.increment).ceil() + 2.0
+        (reach / self.run.node_spacing).ceil() + 2.0
     }
 
     /// The tip depth at blade displacement u (`blade.depth_path`, linear

@@ -9,12 +9,14 @@ use crate::search::{BandAngles, Scan, SearchInput, Slope};
 use crate::surface::Surface;
 
 /// Candidates on undisturbed flat ground (y = 0, unit weight γ0) from
-/// n_s = j0 − b on: with the running sums S over the nodes before j0,
-/// W(n) = Δx [½ γ_b (y_b + d) + S_gh + γ0 d (n − n_s)
-///            − (d/n) (S_gk + γ0 Σ_{k=n_s}^{n−1} k)].
+/// n_s = j0 − b on: with the running sums S over the nodes before j0 and
+/// the face's offset δ' = δ/Δx (node b + k is k − δ' spacings ahead),
+/// W(n) = Δx [base + S_gh + γ0 d (n − n_s)
+///            − (d/(n − δ')) (S_gk + γ0 Σ_{k=n_s}^{n−1} (k − δ'))].
 pub(crate) struct FarField {
     d: f64,
     dx: f64,
+    offset: f64,
     base: f64,
     sum_gh: f64,
     sum_gk: f64,
@@ -27,6 +29,7 @@ impl FarField {
         FarField {
             d: scan.d,
             dx: scan.dx,
+            offset: scan.offset,
             base: scan.base,
             sum_gh: scan.sum_gh,
             sum_gk: scan.sum_gk,
@@ -38,15 +41,20 @@ impl FarField {
     pub(crate) fn weight(&self, n: usize) -> f64 {
         let s = self.start;
         let ahead = (n - s) as f64;
-        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64;
-        let r = self.d / n as f64;
+        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64 - self.offset * ahead;
+        let r = self.d / self.spacings(n);
         self.dx
             * (self.base + self.sum_gh + self.gamma * self.d * ahead
                 - r * (self.sum_gk + self.gamma * triangle))
     }
 
+    /// Spacings from the face to node b + n.
+    pub(crate) fn spacings(&self, n: usize) -> f64 {
+        n as f64 - self.offset
+    }
+
     pub(crate) fn slope(&self, n: usize, rake: &Rake) -> Option<Slope> {
-        let grid = (self.d / n as f64) / self.dx;
+        let grid = (self.d / self.spacings(n)) / self.dx;
         Some(Slope {
             grid,
             tan_beta: rake.physical(grid)?,
@@ -55,9 +63,9 @@ impl FarField {
 
     /// First n ≥ n_s whose line passes below every node before it.
     pub(crate) fn first_admissible(&self, r_min: f64) -> usize {
-        let admissible = |n: usize| self.d <= r_min * n as f64;
+        let admissible = |n: usize| self.d <= r_min * self.spacings(n);
         let mut n = if r_min.is_finite() {
-            ((self.d / r_min).ceil() as usize).max(self.start)
+            ((self.d / r_min + self.offset).ceil() as usize).max(self.start)
         } else {
             self.start
         };
@@ -84,7 +92,8 @@ where
         return false;
     }
     let dx = surface.spacing;
-    let grid = (input.depth / (j - input.blade) as f64) / dx;
+    let spacings = (j - input.blade) as f64 - surface.offset_of(input.blade);
+    let grid = (input.depth / spacings) / dx;
     let Some(tan_beta) = input.rake.physical(grid) else {
         return false;
     };

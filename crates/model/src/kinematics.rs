@@ -24,7 +24,10 @@
 //! the old area plus the dilation. Block nodes carry their state, band nodes
 //! keep theirs (the band is part of the ground) and all accumulate Δut.
 //!
-//! **Mass** (both): the band's nodes, from the first one the band reaches to
+//! **Coarse node grid** (h = k v0, k > 1): the same motion on nodes that the
+//! face passes only every k increments (`coarse`).
+//!
+//! **Mass** (all): the band's nodes, from the first one the band reaches to
 //! the emergence node, take one uniform unit weight chosen so that the weight
 //! of the soil in front of the blade is unchanged (paper: γ = Wb / Anew for
 //! the band as a whole).
@@ -34,6 +37,19 @@ use crate::case::{BandShearRule, Choices, UnitWeightRule};
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
+
+mod coarse;
+
+/// How the face moves in an increment: v0, how much deeper the tip goes
+/// (Δd, negative while it rises), and the face node and its offset δ/h
+/// afterwards (node b + 1 and 0 on the reference grid h = v0).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Advance {
+    pub increment: f64,
+    pub deepening: f64,
+    pub face: usize,
+    pub face_offset: f64,
+}
 
 /// What an update did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,6 +63,9 @@ pub struct Update {
     pub first_band_node: usize,
     /// Weight of the soil the tip passed over, left behind in the trench.
     pub trench_mass: f64,
+    /// First node whose accumulated shear changed (the band's first node,
+    /// or the face on a coarse grid, where the block's state is remapped).
+    pub state_from: usize,
 }
 
 /// Reusable scratch for the band update.
@@ -59,6 +78,10 @@ pub struct Kinematics {
     position: Vec<f64>,
     /// γ of nodes b..=j before the update.
     old_unit_weight: Vec<f64>,
+    /// Heights and accumulated shear of nodes b..=j before the update
+    /// (coarse grid only).
+    old_height: Vec<f64>,
+    old_shear: Vec<f64>,
 }
 
 impl Kinematics {
@@ -70,8 +93,13 @@ impl Kinematics {
         choice: &Choice,
         choices: Choices,
         rake: &Rake,
-        deepening: f64,
+        advance: Advance,
     ) -> Update {
+        if advance.increment != surface.spacing {
+            return self.coarse(surface, band, choice, choices, rake, advance);
+        }
+        surface.face = advance.face;
+        let deepening = advance.deepening;
         // The strip the blade moves through: soil below the tip's path
         // (from depth d to d + Δd) stays behind; what lies between that path
         // and the slip line is pushed up the face (`deepening` adds to the
@@ -96,20 +124,7 @@ impl Kinematics {
             ..update
         };
         self.mix_block_columns(surface, band, update.first_band_node);
-        match choices.unit_weight {
-            UnitWeightRule::BandUniform => {
-                conserve_mass(surface, band, update.first_band_node, mass_before)
-            }
-            UnitWeightRule::PerNodeFormula => {
-                let band_width = band.width;
-                let strain = update.slip * choice.dilation.tan() / band_width;
-                if band_width > 0.0 && update.dilation_area != 0.0 {
-                    for g in &mut surface.unit_weight[update.first_band_node..=band.emergence] {
-                        *g /= 1.0 + strain;
-                    }
-                }
-            }
-        }
+        band_unit_weight(surface, band, choice, choices, &update, mass_before);
         update
     }
 
@@ -127,7 +142,7 @@ impl Kinematics {
         if e == 0.0 || e + rise - dx * t < 0.0 {
             return None;
         }
-        let last_block_x = self.trace_image(surface, band, rise)?;
+        let last_block_x = self.trace_image(surface, band, rise, dx)?;
         let first_band_node = (b + 2..j).find(|&i| surface.x(i) > last_block_x)?;
         let area_before = region_area(surface, b, j);
         let dilation_area = band.area_below(&surface.height) * slip * motion.tan_psi / band.width;
@@ -155,39 +170,52 @@ impl Kinematics {
             dilation_area,
             first_band_node,
             trench_mass: 0.0,
+            state_from: first_band_node,
         })
     }
 
-    /// Images of the surface nodes b..=j and of upper-boundary crossings;
-    /// returns the x of the last image still in the rigid block, or `None` if
-    /// the images fold over (band narrower than the grid resolves).
-    fn trace_image(&mut self, surface: &Surface, band: &Band, rise: f64) -> Option<f64> {
-        let (b, j, dx) = (band.blade, band.emergence, surface.spacing);
+    /// Images of the surface nodes b..=j under the motion (block moved by
+    /// (v0, rise), band soil by its fraction f of that) and of the
+    /// crossings of the band's upper boundary; returns the x of the last
+    /// image still in the rigid block, or `None` if the face lies in the
+    /// band or the images fold over (a band narrower than the grid resolves).
+    /// A slip line (no thickness) moves every node before j with the block.
+    fn trace_image(&mut self, surface: &Surface, band: &Band, rise: f64, v0: f64) -> Option<f64> {
+        let (b, j) = (band.blade, band.emergence);
         let h = &surface.height;
+        let banded = band.thickness > 0.0;
         self.image.clear();
         self.position.clear();
         let mut g_prev = band.position(h[b], b);
         self.position.push(g_prev.clamp(0.0, 1.0));
-        if g_prev < 1.0 {
+        if banded && g_prev < 1.0 {
             return None;
         }
-        let mut last_block_x = surface.x(b) + dx;
+        let mut last_block_x = surface.x(b) + v0;
         self.image.push((last_block_x, h[b] + rise));
         for i in b + 1..=j {
             let g = band.position(h[i], i);
-            if (g_prev - 1.0) * (g - 1.0) < 0.0 {
+            if banded && (g_prev - 1.0) * (g - 1.0) < 0.0 {
                 let lambda = (g_prev - 1.0) / (g_prev - g);
-                let x = surface.x(i - 1) + lambda * dx;
+                let x = surface.x(i - 1) + lambda * surface.segment(i - 1);
                 let y = h[i - 1] + lambda * (h[i] - h[i - 1]);
-                self.image.push((x + dx, y + rise));
+                self.image.push((x + v0, y + rise));
                 if g < 1.0 {
-                    last_block_x = x + dx;
+                    last_block_x = x + v0;
                 }
             }
-            let f = g.clamp(0.0, 1.0);
+            let f = match (banded, i == j) {
+                (true, _) => g.clamp(0.0, 1.0),
+                (false, false) => 1.0,
+                (false, true) => 0.0,
+            };
             self.position.push(f);
-            let point = (surface.x(i) + f * dx, h[i] + f * rise);
+            let point = (surface.x(i) + f * v0, h[i] + f * rise);
             if point.0 <= self.image.last().expect("face image").0 {
+                if i == j && !banded {
+                    // The slip line's block reaches the emergence node.
+                    break;
+                }
                 return None;
             }
             if f == 1.0 {
@@ -199,12 +227,13 @@ impl Kinematics {
         Some(last_block_x)
     }
 
-    /// Heights of nodes b+1..j from the image polyline (linear interpolation).
-    fn resample(&self, surface: &mut Surface, b: usize, j: usize) {
+    /// Heights of nodes after the face `first` and before j from the image
+    /// polyline (linear interpolation).
+    fn resample(&self, surface: &mut Surface, first: usize, j: usize) {
         let mut k = 0;
-        for i in b + 1..j {
+        for i in first + 1..j {
             let x = surface.x(i);
-            while self.image[k + 1].0 < x {
+            while k + 2 < self.image.len() && self.image[k + 1].0 < x {
                 k += 1;
             }
             let ((x0, y0), (x1, y1)) = (self.image[k], self.image[k + 1]);
@@ -258,6 +287,7 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &
         dilation_area: 0.0,
         first_band_node: j,
         trench_mass: 0.0,
+        state_from: j,
     }
 }
 
@@ -272,11 +302,14 @@ fn shift_block_state(surface: &mut Surface, blade: usize, end: usize) {
     surface.dilation.copy_within(range, blade + 1);
 }
 
-/// Trapezoid area between the floor and the surface over nodes a..=z.
+/// Trapezoid area between the floor and the surface over nodes a..=z
+/// (a the face: its segment is 1 − δ/h of a spacing).
 fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
     let (h, floor) = (&surface.height, surface.floor);
     let inner: f64 = h[a + 1..z].iter().map(|y| y - floor).sum();
+    let face_segment = 0.5 * (h[a] - floor + h[a + 1] - floor) * surface.offset_of(a);
     surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
+        - surface.spacing * face_segment
 }
 
 /// Weight of the columns of `nodes` as counted by `Surface::mass` with the
@@ -305,10 +338,36 @@ impl Kinematics {
     }
 }
 
+/// The band's unit weight after the update (the `choices.unit_weight` rule).
+fn band_unit_weight(
+    surface: &mut Surface,
+    band: &Band,
+    choice: &Choice,
+    choices: Choices,
+    update: &Update,
+    mass_before: f64,
+) {
+    match choices.unit_weight {
+        UnitWeightRule::BandUniform => {
+            conserve_mass(surface, band, update.first_band_node, mass_before)
+        }
+        UnitWeightRule::PerNodeFormula => {
+            let band_width = band.width;
+            let strain = update.slip * choice.dilation.tan() / band_width;
+            if band_width > 0.0 && update.dilation_area != 0.0 {
+                for g in &mut surface.unit_weight[update.first_band_node..=band.emergence] {
+                    *g /= 1.0 + strain;
+                }
+            }
+        }
+    }
+}
+
 /// Gives the band's nodes (first..=j) the one unit weight that makes the
-/// weight of nodes b+1..=j (face now at b+1) equal `mass_before`.
+/// weight of the nodes from the face (now `surface.face`) to j equal
+/// `mass_before`.
 fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
-    let (b, j) = (band.blade + 1, band.emergence);
+    let (b, j) = (surface.face, band.emergence);
     let outside = region_mass(surface, b, b..first);
     let band_area: f64 = (first..=j).map(|i| surface.column_area(i, b)).sum();
     let gamma = (mass_before - outside) / band_area;

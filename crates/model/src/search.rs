@@ -148,7 +148,9 @@ pub(crate) struct Scan {
     pub(crate) b: usize,
     pub(crate) d: f64,
     pub(crate) dx: f64,
-    /// ½ γ_b (y_b + d): the face node's trapezoid share.
+    /// δ / Δx: the face's offset from node b's grid point (0 on the grid).
+    pub(crate) offset: f64,
+    /// ½ γ_b (y_b + d) (1 − δ/Δx): the face node's trapezoid share.
     pub(crate) base: f64,
     /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
     pub(crate) sum_gh: f64,
@@ -162,6 +164,21 @@ pub(crate) struct Scan {
 }
 
 impl Scan {
+    /// (x_j − x_b) / Δx for a node j ahead of the face.
+    pub(crate) fn spacings(&self, j: usize) -> f64 {
+        (j - self.b) as f64 - self.offset
+    }
+
+    /// Trapezoid weight of node i between the face and a candidate beyond
+    /// it: the face's segment is 1 − δ/Δx long.
+    pub(crate) fn node_weight(&self, i: usize) -> f64 {
+        if i == self.b + 1 {
+            1.0 - 0.5 * self.offset
+        } else {
+            1.0
+        }
+    }
+
     fn improve(&mut self, force: f64) {
         self.bar = self.bar.min(force * (1.0 + TIE_TOLERANCE));
     }
@@ -213,11 +230,13 @@ impl Search {
         self.prefix.clear();
         self.prefix.push([0.0; 3]);
         let (b, d, dx) = (input.blade, input.depth, surface.spacing);
+        let offset = surface.offset_of(b);
         let mut scan = Scan {
             b,
             d,
             dx,
-            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d),
+            offset,
+            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * (1.0 - offset),
             sum_gh: 0.0,
             sum_gk: 0.0,
             r_min: f64::INFINITY,
@@ -248,7 +267,7 @@ impl Search {
                 phi_lo = phi_lo.min(surface.friction[j]).min(surface.friction[j - 1]);
                 lower = Lower::new(phi_lo, input);
             }
-            let k = (j - b) as f64;
+            let k = scan.spacings(j);
             let rise = surface.height[j] + d;
             if rise <= scan.r_min * k {
                 let r = rise / k;
@@ -265,7 +284,7 @@ impl Search {
                     break;
                 }
             }
-            let g = surface.unit_weight[j];
+            let g = surface.unit_weight[j] * scan.node_weight(j);
             scan.sum_gh += g * rise;
             scan.sum_gk += g * k;
             j += 1;
@@ -324,7 +343,7 @@ impl Search {
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         let factor = (input.factor)(angles, slope.tan_beta);
-        let length = slope.length(j - scan.b, scan.dx);
+        let length = slope.length(scan.spacings(j), scan.dx);
         if let Some(force) = input.loads.force(&factor, weight, length, slope.tan_beta) {
             let candidate = Choice {
                 node: j,
@@ -419,16 +438,16 @@ impl Search {
         // scan would reject must not lower the bar.
         let (mut sum_gh, mut sum_gk, mut r_min) = (0.0, 0.0, f64::INFINITY);
         for i in b + 1..j {
-            let k = (i - b) as f64;
+            let k = scan.spacings(i);
             let rise = surface.height[i] + d;
             if rise <= r_min * k {
                 r_min = rise / k;
             }
-            let g = surface.unit_weight[i];
+            let g = surface.unit_weight[i] * scan.node_weight(i);
             sum_gh += g * rise;
             sum_gk += g * k;
         }
-        let (k, rise) = ((j - b) as f64, surface.height[j] + d);
+        let (k, rise) = (scan.spacings(j), surface.height[j] + d);
         if rise > r_min * k {
             return None;
         }
@@ -453,7 +472,7 @@ impl Search {
             .fold([0.0; 3], |a, v| [a[0] + v[0], a[1] + v[1], a[2] + v[2]]);
         let angles = (input.angles)(window_angles(total, [0.0; 3], m));
         let factor = (input.factor)(angles, slope.tan_beta);
-        let length = slope.length(j - b, scan.dx);
+        let length = slope.length(scan.spacings(j), scan.dx);
         let force = input.loads.force(&factor, weight, length, slope.tan_beta)?;
         Some(force)
     }
@@ -483,7 +502,7 @@ impl Search {
             // with tan β: (n₁, β(n₂)) bounds the block from below.
             let slopes = (far.slope(n1, &input.rake), far.slope(n2, &input.rake));
             if let (Some(first), Some(last)) = slopes {
-                let length = first.length(n1, scan.dx);
+                let length = first.length(far.spacings(n1), scan.dx);
                 let t2 = last.tan_beta;
                 let bound =
                     |factor: &ForceFactor| input.loads.force(factor, far.weight(n1), length, t2);
@@ -518,21 +537,21 @@ pub(crate) struct Slope {
 }
 
 impl Slope {
-    /// Physical horizontal length of the slip line reaching `nodes` nodes
-    /// ahead of the tip on the grid.
-    pub(crate) fn length(&self, nodes: usize, dx: f64) -> f64 {
-        nodes as f64 * dx * (self.grid / self.tan_beta)
+    /// Physical horizontal length of the slip line reaching `spacings`
+    /// node spacings ahead of the tip on the grid.
+    pub(crate) fn length(&self, spacings: f64, dx: f64) -> f64 {
+        spacings * dx * (self.grid / self.tan_beta)
     }
 
     fn band(&self, scan: &Scan, j: usize, band_width: f64) -> Band {
         Band::new(
             scan.b,
             j,
-            self.grid,
-            self.tan_beta,
+            (self.grid, self.tan_beta),
             band_width,
             scan.d,
             scan.dx,
+            scan.offset,
         )
     }
 }

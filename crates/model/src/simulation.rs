@@ -8,7 +8,7 @@
 use crate::avalanche::Avalanche;
 use crate::band::Band;
 use crate::case::{BandAngleRule, Case, CaseError};
-use crate::kinematics::Kinematics;
+use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
 use crate::material::Material;
 use crate::mechanism::Loads;
@@ -244,8 +244,10 @@ pub struct Simulation {
     search: Search,
     kinematics: Kinematics,
     avalanche: Avalanche,
-    /// Increments done; the blade is at node `done`.
+    /// Increments done.
     done: usize,
+    /// k = h / v0: increments per node spacing (1: the reference scheme).
+    increments_per_node: usize,
     initial_mass: f64,
 }
 
@@ -253,7 +255,7 @@ impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
         case.validate_simulation()?;
-        let (d, dx) = (case.deepest(), case.run.increment);
+        let (d, dx) = (case.deepest(), case.run.node_spacing);
         let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
         let fresh = (
@@ -276,6 +278,7 @@ impl Simulation {
             kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
             done: 0,
+            increments_per_node: case.increments_per_node(),
             initial_mass,
             case: case.clone(),
         })
@@ -297,7 +300,7 @@ impl Simulation {
 
     /// Blade displacement u (the face is at x = u).
     pub fn blade_position(&self) -> f64 {
-        self.surface.x(self.done)
+        self.surface.x(self.surface.face)
     }
 
     /// The nodes as the model holds them: on the grid, whose x is the
@@ -308,7 +311,7 @@ impl Simulation {
 
     /// Current weight of soil (ground that existed at the start).
     pub fn mass(&self) -> f64 {
-        self.surface.mass(self.done)
+        self.surface.mass(self.surface.face)
     }
 
     pub fn initial_mass(&self) -> f64 {
@@ -324,7 +327,7 @@ impl Simulation {
     pub fn profile(&self) -> Vec<ProfilePoint> {
         let s = &self.surface;
         let d = self.case.blade.depth;
-        (self.done..s.len())
+        (s.face..s.len())
             .map(|i| ProfilePoint {
                 x: self.rake.x(s.x(i), s.height[i], d),
                 y: s.height[i],
@@ -338,7 +341,7 @@ impl Simulation {
     fn loads(&self) -> Loads {
         let c = &self.case;
         // The face from the tip to the surface: y_b + d high, Lb long.
-        let rise = self.surface.height[self.done] + self.tip_depth();
+        let rise = self.surface.height[self.surface.face] + self.tip_depth();
         let sin_alpha = if c.blade.rake == 90.0 {
             1.0
         } else {
@@ -367,8 +370,8 @@ impl Simulation {
     /// Rise of the tip per unit of travel over the next increment.
     fn climb(&self) -> f64 {
         let u = self.blade_position();
-        (self.case.tip_depth(u) - self.case.tip_depth(u + self.surface.spacing))
-            / self.surface.spacing
+        let v0 = self.case.run.increment;
+        (self.case.tip_depth(u) - self.case.tip_depth(u + v0)) / v0
     }
 
     /// Depth of the blade tip now.
@@ -385,7 +388,7 @@ impl Simulation {
         let factor = |angles: BandAngles, t: f64| laws.factor(angles, t, face);
         let input = SearchInput {
             angles: &angles,
-            blade: self.done,
+            blade: self.surface.face,
             depth: d,
             band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
@@ -398,7 +401,7 @@ impl Simulation {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
         };
-        let max_nodes = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        let max_nodes = self.surface.face + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
         // A band far out on undisturbed ground needs its nodes (and one more).
         let missing = (choice.node + 2).saturating_sub(self.surface.len());
@@ -442,6 +445,20 @@ impl Simulation {
             .collect())
     }
 
+    /// Where the face goes in the next increment: one node every k
+    /// increments, in between offset by a whole number of increments.
+    fn advance(&self) -> Advance {
+        let k = self.increments_per_node;
+        let sub = (self.done + 1) % k;
+        let face = self.surface.face;
+        Advance {
+            increment: self.case.run.increment,
+            deepening: 0.0,
+            face: if sub == 0 { face + 1 } else { face },
+            face_offset: sub as f64 / k as f64,
+        }
+    }
+
     /// Advances the blade by one increment.
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
         let u = self.blade_position();
@@ -450,40 +467,45 @@ impl Simulation {
         let choice = self
             .find_mechanism(face)
             .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
-        let (b, j) = (self.done, choice.node);
+        let (b, j) = (self.surface.face, choice.node);
         let c = &self.case;
         let depth = self.tip_depth();
-        let deepening = c.tip_depth(u + self.surface.spacing) - depth;
+        let deepening = c.tip_depth(u + c.run.increment) - depth;
         let y_emergence = self.surface.height[j];
         let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
         let band = Band::new(
             b,
             j,
-            choice.grid_slope,
-            choice.tan_beta,
+            (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
             depth,
             self.surface.spacing,
+            self.surface.offset_of(b),
         );
+        let advance = Advance {
+            deepening,
+            ..self.advance()
+        };
         let update = self.kinematics.apply(
             &mut self.surface,
             &band,
             &choice,
             c.choices,
             &self.rake,
-            deepening,
+            advance,
         );
         self.surface.trench_mass += update.trench_mass;
         self.laws
-            .refresh_angles(&mut self.surface, update.first_band_node..j + 1);
+            .refresh_angles(&mut self.surface, update.state_from..j + 1);
         self.surface.disturb(j + 1);
         self.done += 1;
         // Slopes changed only at the face and around the band.
-        let at_face = self.done..self.done + 3;
+        let first = self.surface.face;
+        let at_face = first..first + 3;
         let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
         let moved = self.avalanche.relax(
             &mut self.surface,
-            self.done,
+            first,
             self.repose_slopes,
             &[at_face, band_nodes],
         );

@@ -3,12 +3,18 @@
 //! soil there (with the friction and dilation angles it implies) and the unit
 //! weight γ of its column.
 //!
-//! The grid spacing equals the blade increment v0, so the blade sits on node
-//! `blade` = (steps done) and a block translating by v0 moves exactly one node.
+//! The grid spacing h is a whole multiple k of the blade increment v0. With
+//! k = 1 (the reference scheme) the blade sits on node `face` = (steps done)
+//! and a block translating by v0 moves exactly one node. With k > 1 the face
+//! lies between nodes: node `face` holds the soil column at the blade, at
+//! x = face·h + δ with δ = `face_offset`·h (a whole number of increments),
+//! and the nodes ahead stay on the grid x_i = i h.
+//!
 //! The soil of node i is its column from the fixed floor y = −d up to the
 //! surface, integrated with the trapezoid rule over the nodes in front of the
-//! blade (half weight at both ends): the weight of soil is
-//! M = Δx Σ w_i γ_i (h_i + d).
+//! blade: the weight of soil is M = h Σ w_i γ_i (y_i + d), w_i = 1 inside,
+//! ½ at the far end, ½ (1 − δ/h) at the face and 1 − ½ δ/h next to it (the
+//! face's segment is h − δ long).
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
@@ -17,6 +23,10 @@ pub struct Surface {
     pub spacing: f64,
     /// y of the floor below which soil never moves (−d).
     pub floor: f64,
+    /// Node of the soil column at the blade face.
+    pub face: usize,
+    /// δ / h: the face's offset from its grid point, in [0, 1).
+    pub face_offset: f64,
     /// Unit weight of the ground appended when the domain grows.
     pub ground_unit_weight: f64,
     /// y_i: surface height at x_i = i Δx.
@@ -53,6 +63,8 @@ impl Surface {
     ) -> Self {
         Surface {
             spacing,
+            face: 0,
+            face_offset: 0.0,
             floor: -depth,
             ground_unit_weight: unit_weight,
             height: vec![0.0; nodes],
@@ -75,8 +87,32 @@ impl Surface {
         self.height.is_empty()
     }
 
+    /// x of node i (the face node is offset from the grid).
     pub fn x(&self, i: usize) -> f64 {
-        i as f64 * self.spacing
+        i as f64 * self.spacing + self.offset_of(i) * self.spacing
+    }
+
+    /// δ / h if node i is the face node, else 0.
+    pub fn offset_of(&self, i: usize) -> f64 {
+        if i == self.face {
+            self.face_offset
+        } else {
+            0.0
+        }
+    }
+
+    /// Length of the segment from node i to node i + 1.
+    pub fn segment(&self, i: usize) -> f64 {
+        self.spacing * (1.0 - self.offset_of(i))
+    }
+
+    /// (x_i − x_first) / h: node i's distance from node `first` in spacings.
+    pub fn spacings_from(&self, i: usize, first: usize) -> f64 {
+        if i == first {
+            0.0
+        } else {
+            (i - first) as f64 - self.offset_of(first)
+        }
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.
@@ -100,8 +136,12 @@ impl Surface {
 
     /// Trapezoid weight of node i among the nodes from `first` to the end.
     pub fn node_weight(&self, i: usize, first: usize) -> f64 {
-        if i == first || i + 1 == self.len() {
+        if i + 1 == self.len() {
             0.5
+        } else if i == first {
+            0.5 * (1.0 - self.offset_of(first))
+        } else if i == first + 1 {
+            1.0 - 0.5 * self.offset_of(first)
         } else {
             1.0
         }
@@ -123,7 +163,13 @@ impl Surface {
     /// left below the tip's path, counting only the ground that
     /// existed at the start.
     pub fn mass(&self, first: usize) -> f64 {
-        let undisturbed = self.pristine_from.clamp(first, self.len());
+        // The closed form below knows the face's half weight only on the grid.
+        let near = if self.offset_of(first) == 0.0 {
+            first
+        } else {
+            first + 2
+        };
+        let undisturbed = self.pristine_from.max(near).clamp(first, self.len());
         let disturbed =
             (first..undisturbed).map(|i| self.unit_weight[i] * self.column_area(i, first));
         // Undisturbed columns, γ0 d Δx each (half at the ends), in closed form.

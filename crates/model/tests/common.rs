@@ -36,6 +36,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
         run: Run {
             travel: travel_depths * d,
             increment: d / per_depth,
+            node_spacing: d / per_depth,
         },
         choices: Default::default(),
     }
@@ -77,4 +78,18 @@ pub fn run(case: &Case) -> (Vec<soilcut_model::StepRecord>, soilcut_model::Simul
     let mut sim = soilcut_model::Simulation::new(case).expect("valid case");
     let history = sim.run_to_end(|_| {}).expect("admissible mechanism");
     (history, sim)
+}
+
+/// Mean P/(γ0 d²) over each unit of u/d, for the first `windows` units.
+pub fn window_means(history: &[soilcut_model::StepRecord], d: f64, windows: usize) -> Vec<f64> {
+    (0..windows)
+        .map(|k| {
+            let window: Vec<f64> = history
+                .iter()
+                .filter(|r| (r.u / d).floor() as usize == k)
+                .map(|r| r.force_norm)
+                .collect();
+            window.iter().sum::<f64>() / window.len() as f64
+        })
+        .collect()
 }

@@ -105,17 +105,7 @@ fn window_averaged_force_converges_when_the_increment_is_halved() {
     let mean_per_depth = |per_depth: f64| -> Vec<f64> {
         let case = common::refined("table1-hs", 2.0, per_depth);
         let (history, _) = common::run(&case);
-        let d = case.blade.depth;
-        (0..2)
-            .map(|k| {
-                let window: Vec<f64> = history
-                    .iter()
-                    .filter(|r| (r.u / d).floor() as usize == k)
-                    .map(|r| r.force_norm)
-                    .collect();
-                window.iter().sum::<f64>() / window.len() as f64
-            })
-            .collect()
+        common::window_means(&history, case.blade.depth, 2)
     };
     let coarse = mean_per_depth(250.0);
     let fine = mean_per_depth(500.0);
