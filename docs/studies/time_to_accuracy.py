@@ -12,8 +12,8 @@ with a converged run: the reference grid at d/2000 (`--converged`).
 writes runs.csv (one row per run: case, scheme, d/v0, d/h, wall_time_s, the
 largest window deviation in %) and table.md (for each case and scheme, the
 fastest run within 5, 2, 1 and 0.5 % of every converged window mean). Runs
-are kept under OUT/runs/ unless --clean; an existing run is reused. Standard
-library only.
+are kept under OUT/runs/ (or --runs) unless --clean; an existing run is
+reused. Standard library only.
 """
 
 import argparse
@@ -94,11 +94,13 @@ def main():
     p.add_argument("--out", default="docs/studies/time-to-accuracy")
     p.add_argument("--cases", default=",".join(CASES))
     p.add_argument("--converged", type=int, default=2000, help="d/v0 of the converged run")
+    p.add_argument("--runs", help="folder for the runs (default OUT/runs)")
     p.add_argument("--clean", action="store_true", help="delete the runs afterwards")
     a = p.parse_args()
     out = Path(a.out)
-    runs = out / "runs"
+    runs = Path(a.runs) if a.runs else out / "runs"
     runs.mkdir(parents=True, exist_ok=True)
+    out.mkdir(parents=True, exist_ok=True)
     rows = []
     for name in a.cases.split(","):
         case = Path("cases/paper") / f"{name}.toml"

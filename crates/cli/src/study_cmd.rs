@@ -7,7 +7,7 @@ use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{check_output_dir, read_measured, write_output_dir_then, OutputError, Override};
-use soilcut_study::converge::Converge;
+use soilcut_study::converge::{Converge, Refine};
 use soilcut_study::fit::{parse_bounds, Fit};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::Sweep;
@@ -100,12 +100,33 @@ pub struct FitArgs {
 pub struct ConvergeArgs {
     #[command(flatten)]
     common: Common,
-    /// Levels: level k runs at the case's increment / 2^k.
+    /// Levels: level k halves the resolution k times (see --refine).
     #[arg(long, value_name = "N", default_value_t = 4)]
     levels: usize,
+    /// What each level halves: both the increment and the node spacing, the increment alone, or the node spacing alone (which must stay a whole multiple of the increment).
+    #[arg(long, value_enum, default_value_t = RefineArg::Both)]
+    refine: RefineArg,
     /// Relative change between the two finest levels under which a quantity counts as converged.
     #[arg(long, default_value_t = 0.02)]
     tolerance: f64,
+}
+
+/// `--refine` of `soilcut converge`.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum RefineArg {
+    Both,
+    Increment,
+    NodeSpacing,
+}
+
+impl From<RefineArg> for Refine {
+    fn from(r: RefineArg) -> Self {
+        match r {
+            RefineArg::Both => Refine::Both,
+            RefineArg::Increment => Refine::Increment,
+            RefineArg::NodeSpacing => Refine::NodeSpacing,
+        }
+    }
 }
 
 fn study_failure(path: &Path, e: StudyError) -> Failure {
@@ -319,6 +340,7 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     let study = Converge {
         base,
         levels: args.levels,
+        refine: args.refine.into(),
         tolerance: args.tolerance,
         jobs: c.jobs,
     };

@@ -49,8 +49,9 @@ pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
     p.cos().powi(2) / (w.cos() * (1.0 - root).powi(2))
 }
 
-/// The paper's refined cases (MODEL.md section 6): "fig5", "table1-hs",
-/// "table1-s", shortened to `travel_depths` at increment d / `per_depth`.
+/// The paper's refined cases (docs/model.md §13): "fig5", "table1-hs",
+/// "table1-s" and, scaled to d = 20, "fig8b" (hardening only), shortened
+/// to `travel_depths` at increment d / `per_depth`.
 pub fn refined(which: &str, travel_depths: f64, per_depth: f64) -> Case {
     let law = |initial, peak, residual| AngleLaw {
         initial,
@@ -63,6 +64,13 @@ pub fn refined(which: &str, travel_depths: f64, per_depth: f64) -> Case {
         "fig5" => (law(20.0, 40.0, 30.0), law(-5.0, 10.0, 0.0), 2.0, 15.0),
         "table1-hs" => (law(20.0, 35.0, 30.0), law(-5.0, 5.0, 0.0), 2.0, 7.0),
         "table1-s" => (law(35.0, 35.0, 30.0), law(0.0, 5.0, 0.0), 0.0, 7.0),
+        // d = 25.4, up = 0.6, dB = 20 d50 = 3.0 in the paper: here × 20/25.4.
+        "fig8b" => (
+            law(20.0, 33.0, 33.0),
+            law(-5.0, 0.0, 0.0),
+            0.6 * 20.0 / 25.4,
+            5.0 * 20.0 / 25.4,
+        ),
         other => panic!("no case {other}"),
     };
     case.name = which.into();

@@ -94,17 +94,20 @@ fn first_increment_is_coulomb_on_a_coarse_grid() {
 }
 
 #[test]
-fn coarse_grids_approach_the_reference_grid() {
-    // Softening sand converges smoothly (docs/model.md, "Convergence").
-    let case = common::refined("table1-s", 2.0, 100.0);
-    let reference = window_means(&with_grid(case.clone(), 800.0, 800.0));
-    let coarse = largest_deviation(
-        &window_means(&with_grid(case.clone(), 800.0, 50.0)),
-        &reference,
-    );
-    let finer = largest_deviation(&window_means(&with_grid(case, 800.0, 200.0)), &reference);
-    assert!(finer < coarse, "h = d/200: {finer}, h = d/50: {coarse}");
-    assert!(finer < 0.01, "h = d/200 within 1 % of h = v0: {finer}");
+fn coarse_grids_approach_the_reference_grid_in_hardening_sand() {
+    // Fig. 8b's loose sand hardens and never softens: there the coarse
+    // grid converges to the reference grid's limit (docs/model.md §9).
+    let case = common::refined("fig8b", 2.0, 100.0);
+    let reference = window_means(&with_grid(case.clone(), 1000.0, 1000.0));
+    let deviation = |per_h| {
+        largest_deviation(
+            &window_means(&with_grid(case.clone(), 1000.0, per_h)),
+            &reference,
+        )
+    };
+    let (coarse, finer) = (deviation(25.0), deviation(100.0));
+    assert!(coarse < 0.01, "h = d/25 within 1 % of h = v0: {coarse}");
+    assert!(finer < coarse, "h = d/100: {finer}, h = d/25: {coarse}");
 }
 
 #[test]

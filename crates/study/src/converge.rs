@@ -1,5 +1,6 @@
-//! Convergence with the increment (MODEL.md section 7): one case run with
-//! the increment v0 (also the node spacing) halved level after level.
+//! Convergence with the resolution (docs/model.md, "Convergence"): one case
+//! run with the increment v0 and the node spacing h halved level after
+//! level, together or one of them alone (`Refine`).
 //!
 //! Sequential limit analysis of frictional wedges can be chaotic: the
 //! sequence of individual bands need not converge, while averaged
@@ -32,12 +33,46 @@ pub const PROFILE_REACH_DEPTHS: f64 = 5.0;
 /// Points of the common grid the surfaces are compared on.
 pub const PROFILE_POINTS: usize = 501;
 
+/// What a level refines.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Refine {
+    /// v0 / 2^k and h / 2^k.
+    #[default]
+    Both,
+    /// v0 / 2^k at the case's h.
+    Increment,
+    /// h / 2^k at the case's v0 (h must stay a whole multiple of v0).
+    NodeSpacing,
+}
+
+impl Refine {
+    /// (v0, h) of level k from the case's (v0, h).
+    fn level(self, level: usize, (v0, h): (f64, f64)) -> (f64, f64) {
+        let f = 2f64.powi(level as i32);
+        match self {
+            Refine::Both => (v0 / f, h / f),
+            Refine::Increment => (v0 / f, h),
+            Refine::NodeSpacing => (v0, h / f),
+        }
+    }
+
+    fn describe(self) -> &'static str {
+        match self {
+            Refine::Both => "increment v0/2^k and node spacing h/2^k",
+            Refine::Increment => "increment v0/2^k at the case's node spacing h",
+            Refine::NodeSpacing => "node spacing h/2^k at the case's increment v0",
+        }
+    }
+}
+
 /// A convergence study to run.
 #[derive(Clone, Debug)]
 pub struct Converge {
     pub base: BaseCase,
-    /// Number of levels; level k runs at v0 / 2^k.
+    /// Number of levels; level k halves the resolution k times (`refine`).
     pub levels: usize,
+    /// What each level halves.
+    pub refine: Refine,
     /// Relative change between the two finest levels below which a
     /// quantity counts as converged.
     pub tolerance: f64,
@@ -50,6 +85,7 @@ pub struct Converge {
 pub struct Level {
     pub level: usize,
     pub increment: f64,
+    pub node_spacing: f64,
     pub steps: usize,
     /// Mean P/(γ0 d²) over the whole run.
     pub mean_force_norm: f64,
@@ -136,6 +172,7 @@ pub struct ConvergeResult {
     pub title: String,
     pub depth: f64,
     pub tolerance: f64,
+    pub refine: Refine,
     /// Coarsest first.
     pub levels: Vec<Level>,
 }
@@ -175,6 +212,7 @@ fn level_of(level: usize, run: &RunResult, depth: f64, windows: usize) -> Level 
     Level {
         level,
         increment: run.loaded.case.run.increment,
+        node_spacing: run.loaded.case.run.node_spacing,
         steps: s.steps,
         mean_force_norm: mean(&force.iter().map(|p| p.1).collect::<Vec<_>>()),
         envelope_mean: mean(&window_max),
@@ -210,7 +248,8 @@ impl Converge {
         }
         let loaded = self.base.load(&[])?;
         let case = &loaded.case;
-        let (depth, v0) = (case.blade.depth, case.run.increment);
+        let depth = case.blade.depth;
+        let grid = (case.run.increment, case.run.node_spacing);
         let windows = ((case.run.travel / depth) * (1.0 + 1e-9)).floor().max(1.0) as usize;
         let finished = AtomicUsize::new(0);
         progress(0, self.levels);
@@ -221,11 +260,18 @@ impl Converge {
                 .collect::<Vec<_>>()
                 .into_par_iter()
                 .map(|level| {
-                    let increment = v0 / 2f64.powi(level as i32);
-                    let o = override_of("run.increment", &toml::Value::Float(increment))
-                        .map_err(StudyError::Spec)?;
-                    let run = self.base.run(&[o]).map_err(|e| {
-                        StudyError::Case(format!("level {level} (increment {increment}): {e}"))
+                    let (increment, spacing) = self.refine.level(level, grid);
+                    let set = |key, value| {
+                        override_of(key, &toml::Value::Float(value)).map_err(StudyError::Spec)
+                    };
+                    let o = [
+                        set("run.increment", increment)?,
+                        set("run.node_spacing", spacing)?,
+                    ];
+                    let run = self.base.run(&o).map_err(|e| {
+                        StudyError::Case(format!(
+                            "level {level} (increment {increment}, node spacing {spacing}): {e}"
+                        ))
                     })?;
                     let l = level_of(level, &run, depth, windows);
                     progress(finished.fetch_add(1, Ordering::Relaxed) + 1, self.levels);
@@ -249,6 +295,7 @@ impl Converge {
             title: case.title.clone(),
             depth,
             tolerance: self.tolerance,
+            refine: self.refine,
             levels,
         })
     }
@@ -261,7 +308,7 @@ impl ConvergeResult {
 
     /// `converge.csv`: one row per level, coarsest first.
     pub fn csv(&self) -> String {
-        let mut header: Vec<String> = ["level", "increment", "steps", "band_jumps"]
+        let mut header: Vec<String> = ["level", "increment", "node_spacing", "steps", "band_jumps"]
             .iter()
             .map(|s| s.to_string())
             .collect();
@@ -277,6 +324,7 @@ impl ConvergeResult {
             let mut row = vec![
                 l.level.to_string(),
                 l.increment.to_string(),
+                l.node_spacing.to_string(),
                 l.steps.to_string(),
                 l.band_jumps.to_string(),
             ];
@@ -288,13 +336,14 @@ impl ConvergeResult {
         out
     }
 
-    /// `timing.csv`: `level,increment,wall_time_s`.
+    /// `timing.csv`: `level,increment,node_spacing,wall_time_s`.
     pub fn timing_csv(&self) -> String {
-        let mut out = String::from("level,increment,wall_time_s\n");
+        let mut out = String::from("level,increment,node_spacing,wall_time_s\n");
         for l in &self.levels {
             out.push_str(&csv::line(&[
                 l.level.to_string(),
                 l.increment.to_string(),
+                l.node_spacing.to_string(),
                 l.wall_time_s.to_string(),
             ]));
         }
@@ -369,26 +418,28 @@ impl ConvergeResult {
                 format!("{x:.4}")
             }
         };
-        let _ = writeln!(w, "# Convergence with the increment: {}\n", self.title);
+        let _ = writeln!(w, "# Convergence with the resolution: {}\n", self.title);
         let _ = writeln!(
             w,
-            "Level k runs at increment v0/2^k (the increment is also the node spacing). Averaged quantities should converge; individual peaks need not (MODEL.md section 7). Converged: relative change < {} % between the two finest levels.\n",
+            "Level k runs at {}. Averaged quantities should converge; individual peaks need not (docs/model.md, \"Convergence\"). Converged: relative change < {} % between the two finest levels.\n",
+            self.refine.describe(),
             self.tolerance * 100.0
         );
         let _ = writeln!(w, "## Per level\n");
         let _ = writeln!(
             w,
-            "| level | increment | steps | band jumps | {} |",
+            "| level | increment | node spacing | steps | band jumps | {} |",
             QUANTITIES.map(|q| q.0).join(" | ")
         );
-        let _ = writeln!(w, "|{}", "---|".repeat(4 + QUANTITIES.len()));
+        let _ = writeln!(w, "|{}", "---|".repeat(5 + QUANTITIES.len()));
         for l in &self.levels {
             let values: Vec<String> = QUANTITIES.iter().map(|q| f(q.1(l))).collect();
             let _ = writeln!(
                 w,
-                "| {} | {} | {} | {} | {} |",
+                "| {} | {} | {} | {} | {} | {} |",
                 l.level,
                 l.increment,
+                l.node_spacing,
                 l.steps,
                 l.band_jumps,
                 values.join(" | ")
@@ -464,7 +515,12 @@ impl ConvergeResult {
     /// surfaces, and the relative changes against the level.
     pub fn draw(&self, path: &Path) -> Result<(), StudyError> {
         use soilcut_plot::{draw_panels, Panel, Series};
-        let label = |l: &Level| format!("level {} (v0 = {})", l.level, l.increment);
+        let label = |l: &Level| {
+            format!(
+                "level {} (v0 = {}, h = {})",
+                l.level, l.increment, l.node_spacing
+            )
+        };
         let per_window = |values: PerWindow| {
             self.levels
                 .iter()
@@ -527,7 +583,7 @@ impl ConvergeResult {
             },
         ];
         draw_panels(
-            &format!("Convergence with the increment: {}", self.title),
+            &format!("Convergence with the resolution: {}", self.title),
             &panels,
             2,
             path,

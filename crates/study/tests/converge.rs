@@ -1,6 +1,6 @@
 //! Convergence studies on a short, coarse case.
 
-use soilcut_study::converge::{Converge, QUANTITIES};
+use soilcut_study::converge::{Converge, Refine, QUANTITIES};
 use soilcut_study::{no_progress, BaseCase};
 
 const REFINED: &str = include_str!("../../io/testdata/refined.toml");
@@ -13,6 +13,7 @@ fn converge(jobs: usize) -> Converge {
     Converge {
         base: BaseCase::new(REFINED.to_string(), set).unwrap(),
         levels: 3,
+        refine: Refine::Both,
         tolerance: 0.02,
         jobs,
     }
@@ -24,7 +25,7 @@ fn one_row_per_level_with_halved_increments() {
     let csv = result.csv();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 1 + 3);
-    assert!(lines[0].starts_with("level,increment,steps,band_jumps,mean_force_norm,"));
+    assert!(lines[0].starts_with("level,increment,node_spacing,steps,band_jumps,mean_force_norm,"));
     assert!(
         lines[0].ends_with(",window_max_0_1,window_max_1_2"),
         "{}",
@@ -32,6 +33,8 @@ fn one_row_per_level_with_halved_increments() {
     );
     let increments: Vec<f64> = result.levels.iter().map(|l| l.increment).collect();
     assert_eq!(increments, [1.0, 0.5, 0.25]);
+    let spacings: Vec<f64> = result.levels.iter().map(|l| l.node_spacing).collect();
+    assert_eq!(spacings, increments);
     let steps: Vec<usize> = result.levels.iter().map(|l| l.steps).collect();
     assert_eq!(steps, [40, 80, 160]);
     for l in &result.levels {
@@ -67,4 +70,41 @@ fn same_table_on_any_number_of_threads() {
     let two = converge(2).run(&no_progress).unwrap();
     assert_eq!(one.csv(), two.csv());
     assert_eq!(one.markdown(), two.markdown());
+}
+
+#[test]
+fn the_increment_or_the_node_spacing_alone() {
+    let mut study = converge(2);
+    study.base = BaseCase::new(
+        REFINED.to_string(),
+        ["run.travel=40", "run.increment=0.25", "run.node_spacing=1"]
+            .iter()
+            .map(|s| s.parse().unwrap())
+            .collect(),
+    )
+    .unwrap();
+    study.refine = Refine::NodeSpacing;
+    let r = study.run(&no_progress).unwrap();
+    let grid: Vec<(f64, f64)> = r
+        .levels
+        .iter()
+        .map(|l| (l.increment, l.node_spacing))
+        .collect();
+    assert_eq!(grid, [(0.25, 1.0), (0.25, 0.5), (0.25, 0.25)]);
+    assert!(r
+        .markdown()
+        .contains("node spacing h/2^k at the case's increment v0"));
+    study.refine = Refine::Increment;
+    let r = study.run(&no_progress).unwrap();
+    let grid: Vec<(f64, f64)> = r
+        .levels
+        .iter()
+        .map(|l| (l.increment, l.node_spacing))
+        .collect();
+    assert_eq!(grid, [(0.25, 1.0), (0.125, 1.0), (0.0625, 1.0)]);
+    // h / 8 is below v0: no longer a whole multiple of it.
+    study.refine = Refine::NodeSpacing;
+    study.levels = 4;
+    let e = study.run(&no_progress).unwrap_err().to_string();
+    assert!(e.contains("run.node_spacing"), "{e}");
 }

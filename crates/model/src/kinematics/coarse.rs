@@ -4,18 +4,18 @@
 //! The motion is that of the reference scheme: the block above the band
 //! translates by v0 (1, tan(β* + ψ)), band soil by the fraction f of it at
 //! relative position f, soil below stays. The face moves by v0, a fraction
-//! 1/k of a node spacing, so the block no longer lands on nodes: the image
-//! of the old surface (the polyline through the images of its nodes and of
-//! its crossings of the band's upper boundary, exact for this piecewise
-//! affine map) is sampled at the grid nodes between the new face and the
-//! emergence node, and the block's accumulated shear and unit weight are
-//! taken from where its soil came from, x − v0 (linear between the old
-//! nodes). The face node carries the face's own soil; the soil the face
-//! sweeps over (below the block, ½ v0 (e + v0 tan(β* + ψ) + Δd)) is put on
-//! the face node's half segment. What sampling gains or loses in area is
-//! spread over the band's nodes (the nodes past the block's image) so that
-//! the area is exactly the old area plus the dilation, and the band's unit
-//! weight keeps the weight of soil exact, as on the reference grid.
+//! 1/k of a node spacing, so the soil no longer lands on nodes. The image
+//! of the old surface (`trace_image`) tells where the block ends and
+//! whether the band folds; the nodes' new heights, and the block's
+//! accumulated shear and unit weight, are the old surface's at x − f v0, by
+//! a second-order upwind remap (`remap`): linear interpolation instead
+//! smears the pile by about √(h u) after a travel u, which moved the band
+//! jumps by several per cent of the force. The face node carries the face's
+//! own soil; the soil the face sweeps over (below the block,
+//! ½ v0 (e + v0 tan(β* + ψ) + Δd)) is put on the face node's half segment.
+//! What the remap gains or loses in area is spread over the band's nodes so
+//! that the area is exactly the old area plus the dilation, and the band's
+//! unit weight keeps the weight of soil exact, as on the reference grid.
 
 use super::{band_unit_weight, region_area, region_mass, Advance, BandMotion, Kinematics, Update};
 use crate::band::Band;
@@ -40,8 +40,8 @@ impl Kinematics {
         let trench_mass = surface.unit_weight[b] * trench_area;
         let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
         let area_before = region_area(surface, b, j + 1);
-        let old_x: Vec<f64> = (b..=j).map(|i| surface.x(i)).collect();
         self.save(surface, b, j);
+        let old_face = (surface.x(b), surface.segment(b));
         let band_motion = BandMotion::new(choice, rake, v0).filter(|_| band.thickness > 0.0);
         let traced =
             band_motion.and_then(|m| self.trace_image(surface, band, m.rise, v0).map(|x| (m, x)));
@@ -67,11 +67,17 @@ impl Kinematics {
         surface.face = advance.face;
         surface.face_offset = advance.face_offset;
         let face = advance.face;
-        self.resample(surface, face, j);
         let first_band = (face + 1..=j)
             .find(|&i| surface.x(i) > last_block_x)
             .unwrap_or(j);
-        self.carry_block_state(surface, band, &old_x, face, first_band, v0);
+        self.carry_block(
+            surface,
+            band,
+            (face, first_band),
+            old_face,
+            (v0, motion.rise),
+        );
+        self.carry_band(surface, band, first_band, v0 / surface.spacing, motion.rise);
         // The face node: the face's own soil, risen with the block, and the
         // soil the face swept over on its half segment.
         let swept = 0.5 * v0 * (thickness + motion.rise + deepening);
@@ -82,9 +88,14 @@ impl Kinematics {
         let left_behind = v0 * (-surface.floor - band.depth);
         let residual =
             area_before - left_behind + dilation_area - region_area(surface, face, j + 1);
-        let weights: f64 = (first_band..=j).map(|i| surface.node_weight(i, face)).sum();
+        let spread = if first_band < j {
+            first_band..j
+        } else {
+            j..j + 1
+        };
+        let weights: f64 = spread.clone().map(|i| surface.node_weight(i, face)).sum();
         let correction = residual / (weights * surface.spacing);
-        for y in &mut surface.height[first_band..=j] {
+        for y in &mut surface.height[spread] {
             *y += correction;
         }
         self.accumulate_shear(surface, band, first_band, motion.slip, choices.band_shear);
@@ -110,33 +121,55 @@ impl Kinematics {
             .extend_from_slice(&surface.unit_weight[b..=j]);
     }
 
-    /// The block's nodes take the accumulated shear of the soil that
-    /// arrived (from x − v0) and the unit weight of their column mixed by
-    /// area: below the band's lower boundary the soil stayed, above it came
-    /// from x − v0.
-    fn carry_block_state(
+    /// The block's nodes after its translation by (v0, rise): height,
+    /// accumulated shear and arriving unit weight are those of the old
+    /// surface at x − v0, by a second-order upwind remap (cell averages of
+    /// a linear reconstruction limited by the monotonized central slope:
+    /// conservative, no new extrema, and little of the smearing that linear
+    /// interpolation would add every increment); next to the face, linear
+    /// interpolation. Each column's unit weight mixes the soil that stayed
+    /// below the band's lower boundary with the soil that arrived above it.
+    fn carry_block(
         &self,
         surface: &mut Surface,
         band: &Band,
-        old_x: &[f64],
-        face: usize,
-        first_band: usize,
-        v0: f64,
+        (face, first_band): (usize, usize),
+        (old_face_x, old_segment): (f64, f64),
+        (v0, rise): (f64, f64),
     ) {
-        let mut p = 0;
+        let b = band.blade;
+        let c = v0 / surface.spacing;
         for i in face + 1..first_band {
-            let source = surface.x(i) - v0;
-            while p + 2 < old_x.len() && old_x[p + 1] < source {
-                p += 1;
-            }
-            let t = ((source - old_x[p]) / (old_x[p + 1] - old_x[p])).clamp(0.0, 1.0);
-            let lerp = |v: &[f64]| v[p] + t * (v[p + 1] - v[p]);
-            surface.accumulated_shear[i] = lerp(&self.old_shear);
-            let arriving = lerp(&self.old_unit_weight);
-            let staying = self.old_unit_weight[i - band.blade];
+            let q = i - b;
+            // Next to the face the source x − v0 lies between the old face
+            // and node b + 1.
+            let t = ((surface.x(i) - v0 - old_face_x) / old_segment).clamp(0.0, 1.0);
+            let carried = |v: &[f64]| {
+                if q == 1 {
+                    v[0] + t * (v[1] - v[0])
+                } else {
+                    remap(v, q, c)
+                }
+            };
+            surface.height[i] = carried(&self.old_height) + rise;
+            surface.accumulated_shear[i] = carried(&self.old_shear);
+            let arriving = carried(&self.old_unit_weight);
+            let staying = self.old_unit_weight[q];
             let total = surface.height[i] - surface.floor;
             let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
             surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+        }
+    }
+
+    /// Heights of the band's nodes before j: the surface soil at relative
+    /// position f moved by f (v0, rise), remapped as the block's with the
+    /// fraction f of its Courant number. The band's nodes keep their state.
+    fn carry_band(&self, surface: &mut Surface, band: &Band, first_band: usize, c: f64, rise: f64) {
+        let b = band.blade;
+        for i in first_band.max(b + 2)..band.emergence {
+            let q = i - b;
+            let f = self.position[q];
+            surface.height[i] = remap(&self.old_height, q, f * c) + f * rise;
         }
     }
 
@@ -169,4 +202,24 @@ fn slip_motion(choice: &Choice, rake: &Rake, v0: f64) -> BandMotion {
         slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
         tan_psi: 0.0,
     }
+}
+
+/// Cell average over [x_q − h/2 − v0, x_q + h/2 − v0] (c = v0/h) of the
+/// limited linear reconstruction of the values `v` on a uniform grid.
+fn remap(v: &[f64], q: usize, c: f64) -> f64 {
+    let p = q - 1;
+    (1.0 - c) * (v[q] - 0.5 * c * slope(v, q)) + c * (v[p] + 0.5 * (1.0 - c) * slope(v, p))
+}
+
+/// Monotonized central difference at q (0 at the ends and at extrema).
+fn slope(v: &[f64], q: usize) -> f64 {
+    if q == 0 || q + 1 >= v.len() {
+        return 0.0;
+    }
+    let (back, ahead) = (v[q] - v[q - 1], v[q + 1] - v[q]);
+    if back * ahead <= 0.0 {
+        return 0.0;
+    }
+    let central = 0.5 * (back + ahead);
+    central.signum() * central.abs().min(2.0 * back.abs()).min(2.0 * ahead.abs())
 }
