@@ -39,7 +39,7 @@ struct CaseFile {
     choices: Option<ChoicesFile>,
 }
 
-/// `[choices]`: variants of the refined model's open choices (MODEL.md).
+/// `[choices]`: variants of the refined model's open choices (docs/model.md §14).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,

@@ -103,7 +103,8 @@ pub struct Run {
 /// How a candidate band takes its angles from the nodes it touches.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BandAngleRule {
-    /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (MODEL.md default).
+    /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (the default,
+    /// docs/model.md §2.7).
     #[default]
     MeanOfAngles,
     /// φ and ψ of the mean ut over the band's nodes.
@@ -113,7 +114,7 @@ pub enum BandAngleRule {
 /// How much of Δut the band's nodes accumulate.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BandShearRule {
-    /// Every node in the band the full Δut (MODEL.md default).
+    /// Every node in the band the full Δut (the default, docs/model.md §3.6).
     #[default]
     Full,
     /// A node at relative position f in the band (0 at the lower boundary,
@@ -126,7 +127,7 @@ pub enum BandShearRule {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum UnitWeightRule {
     /// One uniform γ over the band's nodes, chosen so that the weight of
-    /// soil is unchanged (MODEL.md section 4: the band as a whole).
+    /// soil is unchanged (docs/model.md §5.3: the band as a whole).
     #[default]
     BandUniform,
     /// The paper's A_new = A0 (1 + Δut tan ψ / dB) applied to each band
@@ -134,7 +135,8 @@ pub enum UnitWeightRule {
     PerNodeFormula,
 }
 
-/// The choices MODEL.md leaves open, for studying their effect.
+/// The choices the paper leaves open (docs/model.md §14), for studying
+/// their effect.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Choices {
     pub band_angles: BandAngleRule,
@@ -150,7 +152,7 @@ pub struct Case {
     pub blade: Blade,
     pub soil: Soil,
     pub run: Run,
-    /// Variants of the refined model's open choices (defaults: MODEL.md).
+    /// Variants of the refined model's open choices (defaults: docs/model.md §14).
     pub choices: Choices,
 }
 

@@ -1,13 +1,13 @@
 //! The landscape of minimum effort: the force of every admissible candidate
 //! mechanism of one increment, not just the least (paper, "Numerical
-//! formulation"; MODEL.md section 2).
+//! formulation"; docs/model.md §2.8).
 //!
 //! The principle of minimum effort picks the least P over the candidates;
 //! how flat P is around that minimum says how firmly the band's position is
 //! determined. Where many candidates, far apart, lie within a small fraction
 //! of the minimum, a small change of the soil moves the band far: the origin
-//! of the band jumps and of the sensitivity to the increment that MODEL.md
-//! section 7 describes, and the reason an exact search must evaluate them
+//! of the band jumps and of the sensitivity to the increment that docs/model.md
+//! §12 describes, and the reason an exact search must evaluate them
 //! all (docs/performance.md).
 
 /// One candidate mechanism: the band whose lower boundary runs from the

@@ -1,6 +1,6 @@
 //! The principle of minimum effort: the grid search over candidate emergence
 //! nodes for the admissible mechanism of least force (paper, "Numerical
-//! formulation"; MODEL.md section 2).
+//! formulation"; docs/model.md §2).
 //!
 //! Candidate j is the straight line from the blade tip A = (x_b, −d) to
 //! surface node j. With r_j = (y_j + d) / (j − b) (rise per node, so that

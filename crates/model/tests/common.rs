@@ -3,7 +3,7 @@
 
 use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil};
 
-/// The paper's original-model case (MODEL.md section 6), shortened to
+/// The paper's original-model case (docs/model.md §13), shortened to
 /// `travel_depths` depths at increment d / `per_depth`.
 pub fn original(travel_depths: f64, per_depth: f64) -> Case {
     let d = 20.0;
@@ -48,7 +48,7 @@ pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
     p.cos().powi(2) / (w.cos() * (1.0 - root).powi(2))
 }
 
-/// The paper's refined cases (MODEL.md section 6): "fig5", "table1-hs",
+/// The paper's refined cases (docs/model.md §13): "fig5", "table1-hs",
 /// "table1-s", shortened to `travel_depths` at increment d / `per_depth`.
 pub fn refined(which: &str, travel_depths: f64, per_depth: f64) -> Case {
     let law = |initial, peak, residual| AngleLaw {

@@ -1,4 +1,4 @@
-//! Convergence with the increment (MODEL.md section 7): one case run with
+//! Convergence with the increment (docs/model.md §12): one case run with
 //! the increment v0 (also the node spacing) halved level after level.
 //!
 //! Sequential limit analysis of frictional wedges can be chaotic: the
@@ -372,7 +372,7 @@ impl ConvergeResult {
         let _ = writeln!(w, "# Convergence with the increment: {}\n", self.title);
         let _ = writeln!(
             w,
-            "Level k runs at increment v0/2^k (the increment is also the node spacing). Averaged quantities should converge; individual peaks need not (MODEL.md section 7). Converged: relative change < {} % between the two finest levels.\n",
+            "Level k runs at increment v0/2^k (the increment is also the node spacing). Averaged quantities should converge; individual peaks need not (docs/model.md §12). Converged: relative change < {} % between the two finest levels.\n",
             self.tolerance * 100.0
         );
         let _ = writeln!(w, "## Per level\n");
