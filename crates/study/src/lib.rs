@@ -5,7 +5,7 @@
 //! * [`fit`]: the free case keys that best match a measured
 //!   force-displacement curve (Nelder-Mead from several seeded starts).
 //! * [`converge`]: one case with the increment halved level after level,
-//!   and which averaged quantities converge (MODEL.md section 7).
+//!   and which averaged quantities converge (docs/model.md §12).
 //!
 //! A library: no terminal output. Progress is reported through a
 //! [`Progress`] callback; results come back as data with methods that
