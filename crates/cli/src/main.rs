@@ -5,6 +5,10 @@
 //! output folder, a case without an admissible mechanism), 1 anything else
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
+// The doc comments of the argument structs are clap's help texts, shown as
+// they are written (`out/<name>`), not rustdoc markup.
+#![allow(rustdoc::invalid_html_tags)]
+
 mod analytic_cmd;
 mod landscape_cmd;
 mod pictures;

@@ -170,6 +170,7 @@ struct RunFile {
 /// A case read from a file: the model's [`Case`] and its resolved file form.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoadedCase {
+    /// The case as the model takes it, every default filled in.
     pub case: Case,
     resolved: CaseFile,
 }

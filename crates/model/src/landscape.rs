@@ -16,6 +16,7 @@
 pub struct Candidate {
     /// Emergence point (physical coordinates, case length unit).
     pub x_emergence: f64,
+    /// y of the emergence point (0: undisturbed surface).
     pub y_emergence: f64,
     /// β, degrees.
     pub beta_deg: f64,
@@ -25,6 +26,7 @@ pub struct Candidate {
     pub force_norm: f64,
     /// The band's friction and dilation angles, degrees.
     pub friction_deg: f64,
+    /// The band's dilation angle ψ, degrees.
     pub dilation_deg: f64,
 }
 

@@ -67,14 +67,17 @@ impl Surface {
         }
     }
 
+    /// Number of nodes.
     pub fn len(&self) -> usize {
         self.height.len()
     }
 
+    /// Whether the surface has no nodes.
     pub fn is_empty(&self) -> bool {
         self.height.is_empty()
     }
 
+    /// x_i = i Δx of node i (on the grid; physical for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
         i as f64 * self.spacing
     }

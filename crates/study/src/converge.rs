@@ -35,6 +35,7 @@ pub const PROFILE_POINTS: usize = 501;
 /// A convergence study to run.
 #[derive(Clone, Debug)]
 pub struct Converge {
+    /// The case and its `--set` overrides.
     pub base: BaseCase,
     /// Number of levels; level k runs at v0 / 2^k.
     pub levels: usize,
@@ -48,8 +49,11 @@ pub struct Converge {
 /// The figures of one level.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Level {
+    /// Level k, from 0 (the case's own increment).
     pub level: usize,
+    /// v0 / 2^k, the case's length unit.
     pub increment: f64,
+    /// Increments run.
     pub steps: usize,
     /// Mean P/(γ0 d²) over the whole run.
     pub mean_force_norm: f64,
@@ -59,6 +63,7 @@ pub struct Level {
     pub window_max: Vec<f64>,
     /// Mean of `window_max`.
     pub envelope_mean: f64,
+    /// Increments whose emergence point jumped (`summary.json`'s rule).
     pub band_jumps: usize,
     /// Mean distance between successive band-jump locations, / d (NaN
     /// with fewer than two jumps).
@@ -67,8 +72,11 @@ pub struct Level {
     pub pile_height_d: f64,
     /// RMS difference of the final surface from the finest level's, / d.
     pub profile_rms_d: f64,
+    /// Largest P/(γ0 d²) of the run.
     pub max_force_norm: f64,
+    /// u/d where it occurs.
     pub u_over_d_at_max: f64,
+    /// Number of distinct force peaks (`summary.json`'s rule).
     pub peaks: usize,
     /// The final surface relative to the blade face, ((x − u)/d, y/d), on
     /// the common grid.
@@ -133,8 +141,11 @@ type PerWindow = fn(&Level) -> &Vec<f64>;
 /// A finished convergence study.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConvergeResult {
+    /// The case's title.
     pub title: String,
+    /// d, the reference depth (case length unit).
     pub depth: f64,
+    /// The relative change below which a quantity counts as converged.
     pub tolerance: f64,
     /// Coarsest first.
     pub levels: Vec<Level>,

@@ -17,6 +17,8 @@
 //! as `--set`, applied to the case file's table before it is resolved, so
 //! every key of a case file can be varied or fitted.
 
+#![warn(missing_docs)]
+
 pub mod converge;
 pub mod csv;
 mod error;
