@@ -15,7 +15,7 @@ for case in original fig5 table1-hs table1-s fig8b; do
   run "cases/paper/$case.toml" --out "$out/$case"
 done
 
-# MODEL.md's open choices, one at a time, on the three Table 1 / Fig 5 cases.
+# The open choices of docs/model.md §14, one at a time, on the three Table 1 / Fig 5 cases.
 for case in fig5 table1-hs table1-s; do
   run "cases/paper/$case.toml" --out "$out/$case-angle-of-mean-shear" --set choices.band_angles=angle-of-mean-shear
   run "cases/paper/$case.toml" --out "$out/$case-by-position" --set choices.band_shear=by-position

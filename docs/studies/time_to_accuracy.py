@@ -6,8 +6,7 @@ to the increment v0) and on coarse grids (h a whole multiple of v0), and
 compares every unit-window mean of P/(γ0 d²) (u/d in [0, 1), [1, 2), ...)
 with a converged run: the reference grid at d/2000 (`--converged`).
 
-    python3 docs/studies/time_to_accuracy.py --soilcut target/release/soilcut \
-        --out docs/studies/time-to-accuracy
+    python3 docs/studies/time_to_accuracy.py --soilcut target/release/soilcut --out DIR
 
 writes runs.csv (one row per run: case, scheme, d/v0, d/h, wall_time_s, the
 largest window deviation in %) and table.md (for each case and scheme, the
@@ -91,7 +90,7 @@ def deviation(means, converged):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--soilcut", default="target/release/soilcut")
-    p.add_argument("--out", default="docs/studies/time-to-accuracy")
+    p.add_argument("--out", default="out/time-to-accuracy")
     p.add_argument("--cases", default=",".join(CASES))
     p.add_argument("--converged", type=int, default=2000, help="d/v0 of the converged run")
     p.add_argument("--runs", help="folder for the runs (default OUT/runs)")

@@ -5,6 +5,10 @@
 //! output folder, a case without an admissible mechanism), 1 anything else
 //! (I/O). Every error is one line on stderr: `error: <path>: <message>`.
 
+// The doc comments of the argument structs are clap's help texts, shown as
+// they are written (`out/<name>`), not rustdoc markup.
+#![allow(rustdoc::invalid_html_tags)]
+
 mod analytic_cmd;
 mod landscape_cmd;
 mod pictures;
@@ -55,9 +59,18 @@ Examples:
   soilcut compare out/original out/fine
   soilcut compare out/original out/fine --measured tests.csv --out fig7.svg";
 
+/// `soilcut --version`: the crate version and the commit it was built from
+/// (`build.rs`; `unknown` when built without git).
+const VERSION: &str = concat!(
+    env!("CARGO_PKG_VERSION"),
+    " (commit ",
+    env!("SOILCUT_COMMIT"),
+    ")"
+);
+
 /// Soil cutting by sequential limit analysis (Jin & Hambleton).
 #[derive(Parser)]
-#[command(name = "soilcut", version, after_help = EXAMPLES)]
+#[command(name = "soilcut", version = VERSION, after_help = EXAMPLES)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -502,6 +502,41 @@ fn help_shows_examples() {
     assert!(text.contains("soilcut run cases/paper/original.toml --set run.increment=0.02"));
 }
 
+/// `soilcut --version` names the version and the commit the binary was
+/// built from: HEAD of this work tree when git can tell (`build.rs`).
+#[test]
+fn version_names_the_commit() {
+    let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+        .arg("--version")
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let text = stdout(&o);
+    let prefix = concat!("soilcut ", env!("CARGO_PKG_VERSION"), " (commit ");
+    let commit = text
+        .trim_end()
+        .strip_prefix(prefix)
+        .and_then(|rest| rest.strip_suffix(')'))
+        .unwrap_or_else(|| panic!("{text}"));
+    let head = Command::new("git")
+        .args(["rev-parse", "--verify", "HEAD"])
+        .current_dir(workspace())
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
+    match head {
+        Some(head) => {
+            assert_eq!(commit.len(), 12, "{text}");
+            assert!(head.starts_with(commit), "{text} is not HEAD {head}");
+        }
+        None => assert!(
+            commit == "unknown" || commit.chars().all(|c| c.is_ascii_hexdigit()),
+            "{text}"
+        ),
+    }
+}
+
 /// Every example command in the help texts names a valid case and valid
 /// `--set`s (checked with `check`, from the workspace root).
 #[test]

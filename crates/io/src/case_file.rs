@@ -39,7 +39,7 @@ struct CaseFile {
     choices: Option<ChoicesFile>,
 }
 
-/// `[choices]`: variants of the refined model's open choices (MODEL.md).
+/// `[choices]`: variants of the refined model's open choices (docs/model.md §14).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
@@ -175,6 +175,7 @@ struct RunFile {
 /// A case read from a file: the model's [`Case`] and its resolved file form.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoadedCase {
+    /// The case as the model takes it, every default filled in.
     pub case: Case,
     resolved: CaseFile,
 }

@@ -10,11 +10,21 @@ pub enum InputError {
     /// The case file could not be read at all.
     Read(std::io::Error),
     /// The file is not valid TOML.
-    Syntax { line: usize, message: String },
+    Syntax {
+        /// Line of the error, from 1.
+        line: usize,
+        /// The parser's message.
+        message: String,
+    },
     /// A key is missing, unknown, of the wrong type or out of range.
     Key(CaseError),
     /// A `--set` argument is not `key.path=value`.
-    Override { text: String, message: String },
+    Override {
+        /// The argument as given.
+        text: String,
+        /// What is wrong with it.
+        message: String,
+    },
 }
 
 impl InputError {
@@ -53,7 +63,9 @@ pub enum OutputError {
     Unnamed(PathBuf),
     /// A file system operation failed.
     Io {
+        /// The path the operation was on.
         path: PathBuf,
+        /// The operating system's error.
         source: std::io::Error,
     },
 }

@@ -16,6 +16,7 @@ pub const FRAME_ROWS: usize = 400;
 /// The ground surface after `step` increments (0: before the first).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceFrame {
+    /// Increments done.
     pub step: usize,
     /// Blade position: the tip is at (u, −t), t the tip's depth there
     /// (`blade.depth` but on a depth path; the face, at x = u for a
@@ -58,7 +59,9 @@ pub fn frames_csv(frames: &[SurfaceFrame], depth: f64) -> String {
 /// Why the files of a run could not be read.
 #[derive(Debug)]
 pub struct RunFilesError {
+    /// The file that could not be read.
     pub path: PathBuf,
+    /// What is wrong with it.
     pub message: String,
 }
 
@@ -132,10 +135,12 @@ impl Table {
         })
     }
 
+    /// Number of rows.
     pub fn len(&self) -> usize {
         self.rows.len()
     }
 
+    /// Whether the table has no rows.
     pub fn is_empty(&self) -> bool {
         self.rows.is_empty()
     }
@@ -162,10 +167,15 @@ impl Table {
 /// `profile.csv` and, if present, `frames.csv`.
 #[derive(Clone, Debug)]
 pub struct FinishedRun {
+    /// The run's folder.
     pub dir: PathBuf,
+    /// The case, from `case.resolved.toml`.
     pub case: Case,
+    /// `history.csv`, one row per increment.
     pub history: Table,
+    /// `profile.csv`, the final surface.
     pub profile: Table,
+    /// `frames.csv`, if the run wrote it (`None` for older runs).
     pub frames: Option<Table>,
 }
 

@@ -11,6 +11,8 @@
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
 //!   reads a finished run's files back for drawing.
 
+#![warn(missing_docs)]
+
 mod case_file;
 mod error;
 mod finished;

@@ -23,11 +23,17 @@ pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight";
 
 /// Everything a finished run writes.
 pub struct RunOutput<'a> {
+    /// The case as read, for `case.resolved.toml` and the summary.
     pub loaded: &'a LoadedCase,
+    /// One record per increment.
     pub history: &'a [StepRecord],
+    /// The final surface, from the face on.
     pub profile: &'a [ProfilePoint],
+    /// Figures of the run.
     pub summary: &'a Summary,
+    /// Candidate mechanisms evaluated (cost measure).
     pub candidate_evaluations: u64,
+    /// Time spent in the simulation, seconds.
     pub wall_time_s: f64,
 }
 
@@ -42,6 +48,8 @@ impl RunOutput<'_> {
         ]
     }
 
+    /// `history.csv`: one row per increment, columns `HISTORY_HEADER` (units
+    /// in the README).
     pub fn history_csv(&self) -> String {
         let d = self.loaded.case.blade.depth;
         let mut out = String::with_capacity(200 * (self.history.len() + 1));
@@ -73,6 +81,7 @@ impl RunOutput<'_> {
         out
     }
 
+    /// `profile.csv`: the final surface, one row per node from the face on.
     pub fn profile_csv(&self) -> String {
         let mut out = String::with_capacity(80 * (self.profile.len() + 1));
         out.push_str(PROFILE_HEADER);
@@ -88,6 +97,8 @@ impl RunOutput<'_> {
         out
     }
 
+    /// `summary.json`: the run's figures, the analytical baselines, cost and
+    /// wall time.
     pub fn summary_json(&self) -> String {
         let case = &self.loaded.case;
         let s = self.summary;

@@ -38,22 +38,35 @@
 /// A wedge problem on flat ground; angles in radians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wedge {
+    /// γ: unit weight (force per length³).
     pub unit_weight: f64,
+    /// d: depth of the blade tip below the flat ground.
     pub depth: f64,
+    /// φ: soil friction angle, radians.
     pub friction: f64,
+    /// φw: blade-soil friction angle, radians.
     pub wall_friction: f64,
+    /// α: rake, the face's angle from the horizontal on the soil side, radians
+    /// (π/2: vertical).
     pub rake: f64,
+    /// c: cohesion on the failure surface (stress).
     pub cohesion: f64,
+    /// a: adhesion on the face contact (stress).
     pub adhesion: f64,
+    /// q: surcharge pressure on the ground surface (stress).
     pub surcharge: f64,
 }
 
 /// McKyes' dimensionless factors at one failure angle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Factors {
+    /// Nγ = (cot α + cot β) sin(β + φ) / (2 sin(α + β + φ + φw)).
     pub n_gamma: f64,
+    /// Nc = cos φ / (sin β sin(α + β + φ + φw)).
     pub n_c: f64,
+    /// Na = −cos(α + β + φ) / (sin α sin(α + β + φ + φw)).
     pub n_a: f64,
+    /// Nq = (cot α + cot β) sin(β + φ) / sin(α + β + φ + φw) = 2 Nγ.
     pub n_q: f64,
 }
 

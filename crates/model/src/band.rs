@@ -1,5 +1,5 @@
 //! Geometry of the shear band of the refined model (paper Fig. 3a;
-//! MODEL.md section 3).
+//! docs/model.md §3.2).
 //!
 //! The band's lower boundary is the line A→j from the blade tip to the
 //! emergence node; its upper boundary is parallel, dB above it (normal

@@ -16,6 +16,7 @@ pub enum Model {
 }
 
 impl Model {
+    /// The case file's word for the model: `original` or `refined`.
     pub fn name(self) -> &'static str {
         match self {
             Model::Original => "original",
@@ -28,8 +29,11 @@ impl Model {
 /// `peak` at ut = up, `residual` from ut = ur on (degrees).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AngleLaw {
+    /// At ut = 0 (φc, ψc), degrees.
     pub initial: f64,
+    /// At ut = up (φp, ψp), degrees.
     pub peak: f64,
+    /// From ut = ur on (φr, ψr), degrees.
     pub residual: f64,
 }
 
@@ -47,11 +51,14 @@ impl AngleLaw {
         [self.initial, self.peak, self.residual]
     }
 
+    /// The least of the three angles, degrees: the law's minimum, as it is
+    /// piecewise linear between them.
     pub fn min(&self) -> f64 {
         self.values().into_iter().fold(f64::INFINITY, f64::min)
     }
 }
 
+/// The blade: its depth (or depth path), face angle and face contact.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Blade {
     /// d: depth of the blade tip below the undisturbed surface.
@@ -70,6 +77,8 @@ pub struct Blade {
     pub depth_path: Vec<[f64; 2]>,
 }
 
+/// The soil: unit weight, material laws (docs/model.md §4), band width,
+/// repose and the loads of the extended equation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Soil {
     /// γ0: initial unit weight.
@@ -92,6 +101,7 @@ pub struct Soil {
     pub surcharge: f64,
 }
 
+/// How far the blade goes and in what increments.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {
     /// Total blade displacement.
@@ -106,7 +116,8 @@ pub struct Run {
 /// How a candidate band takes its angles from the nodes it touches.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BandAngleRule {
-    /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (MODEL.md default).
+    /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (the default,
+    /// docs/model.md §2.7).
     #[default]
     MeanOfAngles,
     /// φ and ψ of the mean ut over the band's nodes.
@@ -116,7 +127,7 @@ pub enum BandAngleRule {
 /// How much of Δut the band's nodes accumulate.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BandShearRule {
-    /// Every node in the band the full Δut (MODEL.md default).
+    /// Every node in the band the full Δut (the default, docs/model.md §3.6).
     #[default]
     Full,
     /// A node at relative position f in the band (0 at the lower boundary,
@@ -129,7 +140,7 @@ pub enum BandShearRule {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum UnitWeightRule {
     /// One uniform γ over the band's nodes, chosen so that the weight of
-    /// soil is unchanged (MODEL.md section 4: the band as a whole).
+    /// soil is unchanged (docs/model.md §5.3: the band as a whole).
     #[default]
     BandUniform,
     /// The paper's A_new = A0 (1 + Δut tan ψ / dB) applied to each band
@@ -137,23 +148,34 @@ pub enum UnitWeightRule {
     PerNodeFormula,
 }
 
-/// The choices MODEL.md leaves open, for studying their effect.
+/// The choices the paper leaves open (docs/model.md §14), for studying
+/// their effect.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Choices {
+    /// A candidate band's φ and ψ from its footprint (docs/model.md §2.7).
     pub band_angles: BandAngleRule,
+    /// How much of Δut the band's nodes accumulate (docs/model.md §3.6).
     pub band_shear: BandShearRule,
+    /// How the band's unit weight is updated (docs/model.md §5).
     pub unit_weight: UnitWeightRule,
 }
 
+/// One simulation case: what the case file says, every default filled in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
+    /// Names the output folder (`out/<name>`).
     pub name: String,
+    /// Free text for the outputs.
     pub title: String,
+    /// The paper's original or refined model.
     pub model: Model,
+    /// The blade and its path.
     pub blade: Blade,
+    /// The soil.
     pub soil: Soil,
+    /// Travel and increment.
     pub run: Run,
-    /// Variants of the refined model's open choices (defaults: MODEL.md).
+    /// Variants of the refined model's open choices (defaults: docs/model.md §14).
     pub choices: Choices,
 }
 
@@ -169,11 +191,14 @@ pub const INITIAL_REACH_DEPTHS: f64 = 8.0;
 /// file) and what it must satisfy.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CaseError {
+    /// The case-file key, dotted (`soil.friction.peak`).
     pub key: String,
+    /// What the value must satisfy, and the value given.
     pub message: String,
 }
 
 impl CaseError {
+    /// The error for `key` with `message`.
     pub fn new(key: &str, message: impl Into<String>) -> Self {
         CaseError {
             key: key.to_string(),

@@ -1,4 +1,4 @@
-//! The update of the free surface after an increment (MODEL.md section 3).
+//! The update of the free surface after an increment (docs/model.md §3).
 //!
 //! **Slip line** (original model, Fig. 1b; and any band narrower than a
 //! node): the block above the slip line A→j translates by v0 (1, tan β*).
@@ -45,9 +45,13 @@ mod coarse;
 /// afterwards (node b + 1 and 0 on the reference grid h = v0).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Advance {
+    /// v0, the blade's advance (length).
     pub increment: f64,
+    /// Δd, how much deeper the tip goes (length).
     pub deepening: f64,
+    /// The face node after the increment.
     pub face: usize,
+    /// δ / h of the face after the increment, in [0, 1).
     pub face_offset: f64,
 }
 

@@ -1,13 +1,13 @@
 //! The landscape of minimum effort: the force of every admissible candidate
 //! mechanism of one increment, not just the least (paper, "Numerical
-//! formulation"; MODEL.md section 2).
+//! formulation"; docs/model.md §2.8).
 //!
 //! The principle of minimum effort picks the least P over the candidates;
 //! how flat P is around that minimum says how firmly the band's position is
 //! determined. Where many candidates, far apart, lie within a small fraction
 //! of the minimum, a small change of the soil moves the band far: the origin
-//! of the band jumps and of the sensitivity to the increment that MODEL.md
-//! section 7 describes, and the reason an exact search must evaluate them
+//! of the band jumps and of the sensitivity to the increment that docs/model.md
+//! §12 describes, and the reason an exact search must evaluate them
 //! all (docs/performance.md).
 
 /// One candidate mechanism: the band whose lower boundary runs from the
@@ -16,6 +16,7 @@
 pub struct Candidate {
     /// Emergence point (physical coordinates, case length unit).
     pub x_emergence: f64,
+    /// y of the emergence point (0: undisturbed surface).
     pub y_emergence: f64,
     /// β, degrees.
     pub beta_deg: f64,
@@ -25,6 +26,7 @@ pub struct Candidate {
     pub force_norm: f64,
     /// The band's friction and dilation angles, degrees.
     pub friction_deg: f64,
+    /// The band's dilation angle ψ, degrees.
     pub dilation_deg: f64,
 }
 

@@ -5,6 +5,8 @@
 //! Start from a [`Case`], create a [`Simulation`] and call
 //! [`Simulation::step`] (or [`Simulation::run_to_end`]).
 
+#![warn(missing_docs)]
+
 pub mod analytic;
 pub mod avalanche;
 pub mod band;

@@ -19,6 +19,8 @@ pub struct PiecewiseLaw {
 }
 
 impl PiecewiseLaw {
+    /// The law through `angles_deg` (degrees) at ut = 0, `peak_shear` (up)
+    /// and `residual_shear` (ur), lengths; up = ur softens at once.
     pub fn new(angles_deg: AngleLaw, peak_shear: f64, residual_shear: f64) -> Self {
         PiecewiseLaw {
             initial: angles_deg.initial.to_radians(),
@@ -50,11 +52,14 @@ impl PiecewiseLaw {
 /// Friction and dilation laws of one soil.
 #[derive(Clone, Copy, Debug)]
 pub struct Material {
+    /// φ(ut) (paper Fig. 2a-b).
     pub friction: PiecewiseLaw,
+    /// ψ(ut) (paper Fig. 2c).
     pub dilation: PiecewiseLaw,
 }
 
 impl Material {
+    /// The laws of `soil`: φc → φp → φr and ψc → ψp → ψr over up, ur.
     pub fn new(soil: &Soil) -> Self {
         Material {
             friction: PiecewiseLaw::new(soil.friction, soil.peak_shear, soil.residual_shear),

@@ -1,6 +1,6 @@
 //! The principle of minimum effort: the grid search over candidate emergence
 //! nodes for the admissible mechanism of least force (paper, "Numerical
-//! formulation"; MODEL.md section 2).
+//! formulation"; docs/model.md §2).
 //!
 //! Candidate j is the straight line from the blade tip A = (x_b, −d) to
 //! surface node j. With r_j = (y_j + d) / (j − b) (rise per node, so that
@@ -69,6 +69,7 @@ pub struct Choice {
     pub weight: f64,
     /// The band's friction and dilation angles (radians).
     pub friction: f64,
+    /// Mean of ψ(ut_i) over the footprint, radians.
     pub dilation: f64,
 }
 
@@ -114,7 +115,9 @@ where
     A: Fn(BandAngles) -> BandAngles,
     F: Fn(BandAngles, f64) -> ForceFactor,
 {
+    /// Node b of the blade face.
     pub blade: usize,
+    /// d: depth of the blade tip during the increment.
     pub depth: f64,
     /// dB (0 for the original model's slip line).
     pub band_width: f64,
@@ -124,6 +127,8 @@ where
     /// plus α − 90° for a raked blade), radians, and the tan β below which a
     /// block may sink (β + ψ ≤ 0 for some reachable ψ): for the bounds.
     pub walls: (f64, f64),
+    /// tan β below which a block may sink relative to the face (§2.6 of
+    /// docs/model.md): where the sinking face friction must be bounded too.
     pub sinking_below: f64,
     /// The shear of coordinates of a raked blade.
     pub rake: Rake,

@@ -45,6 +45,7 @@ pub struct StepRecord {
     pub friction_deg: f64,
     /// Emergence point of the slip line (lower band boundary).
     pub x_emergence: f64,
+    /// y of the emergence point.
     pub y_emergence: f64,
     /// Depth of the blade tip during the increment.
     pub depth: f64,
@@ -62,7 +63,12 @@ pub struct StepRecord {
 #[derive(Clone, Debug, PartialEq)]
 pub enum StepError {
     /// No candidate satisfies β > 0, β + φ + φw < 90° within reach.
-    NoAdmissibleMechanism { step: usize, u: f64 },
+    NoAdmissibleMechanism {
+        /// The increment, from 1.
+        step: usize,
+        /// Blade displacement at its start.
+        u: f64,
+    },
 }
 
 impl fmt::Display for StepError {
@@ -81,9 +87,13 @@ impl std::error::Error for StepError {}
 /// A point of the free surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ProfilePoint {
+    /// x, physical (the face at x = u for a vertical blade).
     pub x: f64,
+    /// y: surface height (0: undisturbed ground).
     pub y: f64,
+    /// ut: shear accumulated by the soil at the node.
     pub accumulated_shear: f64,
+    /// γ of the node's soil column.
     pub unit_weight: f64,
 }
 
@@ -284,6 +294,7 @@ impl Simulation {
         })
     }
 
+    /// The case being run.
     pub fn case(&self) -> &Case {
         &self.case
     }
@@ -314,6 +325,7 @@ impl Simulation {
         self.surface.mass(self.surface.face)
     }
 
+    /// Weight of soil at the start (docs/model.md (M24)).
     pub fn initial_mass(&self) -> f64 {
         self.initial_mass
     }

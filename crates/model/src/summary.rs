@@ -23,22 +23,30 @@ pub const SHEARED_REACH_DEPTHS: f64 = 5.0;
 /// A distinct peak of the force history.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Peak {
+    /// Blade displacement over the depth, u/d.
     pub u_over_d: f64,
+    /// P/(γ0 d²) at the peak.
     pub force_norm: f64,
     /// Index into the history.
     pub index: usize,
 }
 
+/// Figures of a finished run (`summary.json`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Summary {
     /// P/(γ0 d²) of the first increment (Coulomb's wedge on flat ground).
     pub initial_force_norm: f64,
+    /// Largest P/(γ0 d²) of the run.
     pub max_force_norm: f64,
+    /// u/d where it occurs (first occurrence).
     pub u_over_d_at_max: f64,
+    /// P/(γ0 d²) of the last increment.
     pub final_force_norm: f64,
+    /// Distinct peaks of P/(γ0 d²) (`PEAK_PROMINENCE`).
     pub peaks: Vec<Peak>,
     /// (mass after the last increment − initial mass) / initial mass.
     pub mass_drift_rel: f64,
+    /// Increments run.
     pub steps: usize,
     /// Indices into the history of the band jumps (see `JUMP_DEPTHS`).
     pub band_jumps: Vec<usize>,
@@ -47,6 +55,8 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// The figures of `history` for `case`, with the mass before the first
+    /// increment.
     pub fn new(case: &Case, history: &[StepRecord], initial_mass: f64) -> Self {
         let d = case.blade.depth;
         let forces: Vec<f64> = history.iter().map(|r| r.force_norm).collect();

@@ -79,15 +79,18 @@ impl Surface {
         }
     }
 
+    /// Number of nodes.
     pub fn len(&self) -> usize {
         self.height.len()
     }
 
+    /// Whether the surface has no nodes.
     pub fn is_empty(&self) -> bool {
         self.height.is_empty()
     }
 
-    /// x of node i (the face node is offset from the grid).
+    /// x of node i: i Δx on the grid, the face node offset by δ (physical
+    /// for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
         i as f64 * self.spacing + self.offset_of(i) * self.spacing
     }

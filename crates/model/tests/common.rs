@@ -3,7 +3,7 @@
 
 use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil};
 
-/// The paper's original-model case (MODEL.md section 6), shortened to
+/// The paper's original-model case (docs/model.md §13), shortened to
 /// `travel_depths` depths at increment d / `per_depth`.
 pub fn original(travel_depths: f64, per_depth: f64) -> Case {
     let d = 20.0;

@@ -155,7 +155,7 @@ fn unit_weight_stays_positive_in_a_long_hardening_run() {
     assert!(drift.abs() < 1e-9, "{drift:e}");
 }
 
-/// MODEL.md section 4: applying A_new = A0 (1 + Δut tan ψ / dB) to each
+/// docs/model.md §5.2: applying A_new = A0 (1 + Δut tan ψ / dB) to each
 /// band node's unit weight on its own drifts the mass by per cents over
 /// 5 d; the band-as-a-whole rule keeps it to round-off.
 #[test]

@@ -22,7 +22,7 @@ pub const FRAME_DELAY: u16 = 5;
 pub const LAST_DELAY: u16 = 250;
 
 /// Draws the cutting process as an animated GIF, one picture per frame of
-/// `run.frames` (at most [`MAX_FRAMES`], evenly spaced): top, to equal
+/// `run.frames` (at most `MAX_FRAMES` = 150, evenly spaced): top, to equal
 /// scales in x/d and y/d, the ground at that moment, the blade (its tip
 /// at that moment's depth, the trench floor behind it where the tip went)
 /// and the slip line or shear band of the increment just done; below, the force

@@ -11,6 +11,7 @@ use std::path::Path;
 /// The candidates of one increment, for [`draw_landscape`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Landscape {
+    /// Title of the picture.
     pub title: String,
     /// (distance of the emergence point ahead of the blade tip / d, P/(γ0 d²)),
     /// one point per candidate.
@@ -105,6 +106,7 @@ impl Picture for Landscape {
 /// Landscapes taken through a run, for [`draw_landscape_map`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct LandscapeMap {
+    /// Title of the picture.
     pub title: String,
     /// Width of the distance bins, in d.
     pub bin: f64,

@@ -20,6 +20,8 @@
 //! Text uses the bundled DejaVu Sans (`fonts/`), never system fonts; the SVG
 //! files name the generic family `sans-serif`.
 
+#![warn(missing_docs)]
+
 mod animation;
 mod blade;
 mod curves;
@@ -52,6 +54,7 @@ pub struct Increment {
     pub beta_deg: f64,
     /// Where the slip line (lower band boundary) met the surface.
     pub x_emergence: f64,
+    /// y of that point (0: undisturbed ground).
     pub y_emergence: f64,
     /// Depth of the blade tip during the increment (length): the run's
     /// [`RunData::depth`] unless the blade followed a depth path.
@@ -61,6 +64,7 @@ pub struct Increment {
 /// A node of the ground surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfacePoint {
+    /// x of the node, physical (the blade's start at 0).
     pub x: f64,
     /// Height, 0 = undisturbed ground.
     pub y: f64,
@@ -174,7 +178,9 @@ pub(crate) fn increment(history: &[Increment]) -> f64 {
 /// case's length unit and γ·length².
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Measured {
+    /// Legend entry.
     pub label: String,
+    /// (u, force) points.
     pub points: Vec<(f64, f64)>,
 }
 

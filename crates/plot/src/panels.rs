@@ -17,7 +17,9 @@ const TITLE_HEIGHT: u32 = 50;
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SeriesMark {
+    /// A dot per point.
     Points,
+    /// A line through the points in order.
     Line,
 }
 
@@ -26,11 +28,14 @@ pub enum SeriesMark {
 pub struct Series {
     /// Legend entry (none if empty).
     pub label: String,
+    /// The (x, y) points.
     pub points: Vec<(f64, f64)>,
+    /// Dots or a line.
     pub mark: SeriesMark,
 }
 
 impl Series {
+    /// A series drawn as dots.
     pub fn points(label: &str, points: Vec<(f64, f64)>) -> Self {
         Series {
             label: label.to_string(),
@@ -39,6 +44,7 @@ impl Series {
         }
     }
 
+    /// A series drawn as a line.
     pub fn line(label: &str, points: Vec<(f64, f64)>) -> Self {
         Series {
             label: label.to_string(),
@@ -51,8 +57,11 @@ impl Series {
 /// One chart of a picture.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Panel {
+    /// Label of the x axis.
     pub x_label: String,
+    /// Label of the y axis.
     pub y_label: String,
+    /// The series drawn in the panel, in legend order.
     pub series: Vec<Series>,
 }
 

@@ -12,7 +12,9 @@ pub const PNG_DPI: u32 = 150;
 /// Why a picture could not be drawn or written.
 #[derive(Debug)]
 pub struct PlotError {
+    /// The file that could not be drawn or written.
     pub path: PathBuf,
+    /// What went wrong, on one line.
     pub message: String,
 }
 
@@ -40,11 +42,14 @@ impl std::error::Error for PlotError {}
 /// A picture file format, chosen by the file's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
+    /// Portable Network Graphics, 150 dpi.
     Png,
+    /// Scalable Vector Graphics, with real text.
     Svg,
 }
 
 impl Format {
+    /// The file extension of the format, without the dot.
     pub fn extension(self) -> &'static str {
         match self {
             Format::Png => "png",

@@ -1,6 +1,6 @@
-//! Convergence with the resolution (docs/model.md, "Convergence"): one case
-//! run with the increment v0 and the node spacing h halved level after
-//! level, together or one of them alone (`Refine`).
+//! Convergence with the resolution (docs/model.md §12): one case run with
+//! the increment v0 and the node spacing h halved level after level,
+//! together or one of them alone (`Refine`).
 //!
 //! Sequential limit analysis of frictional wedges can be chaotic: the
 //! sequence of individual bands need not converge, while averaged
@@ -68,6 +68,7 @@ impl Refine {
 /// A convergence study to run.
 #[derive(Clone, Debug)]
 pub struct Converge {
+    /// The case and its `--set` overrides.
     pub base: BaseCase,
     /// Number of levels; level k halves the resolution k times (`refine`).
     pub levels: usize,
@@ -83,9 +84,13 @@ pub struct Converge {
 /// The figures of one level.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Level {
+    /// Level k, from 0 (the case's own increment).
     pub level: usize,
+    /// v0 / 2^k, the case's length unit.
     pub increment: f64,
+    /// h / 2^k (or the case's h), the case's length unit.
     pub node_spacing: f64,
+    /// Increments run.
     pub steps: usize,
     /// Mean P/(γ0 d²) over the whole run.
     pub mean_force_norm: f64,
@@ -95,6 +100,7 @@ pub struct Level {
     pub window_max: Vec<f64>,
     /// Mean of `window_max`.
     pub envelope_mean: f64,
+    /// Increments whose emergence point jumped (`summary.json`'s rule).
     pub band_jumps: usize,
     /// Mean distance between successive band-jump locations, / d (NaN
     /// with fewer than two jumps).
@@ -103,8 +109,11 @@ pub struct Level {
     pub pile_height_d: f64,
     /// RMS difference of the final surface from the finest level's, / d.
     pub profile_rms_d: f64,
+    /// Largest P/(γ0 d²) of the run.
     pub max_force_norm: f64,
+    /// u/d where it occurs.
     pub u_over_d_at_max: f64,
+    /// Number of distinct force peaks (`summary.json`'s rule).
     pub peaks: usize,
     /// The final surface relative to the blade face, ((x − u)/d, y/d), on
     /// the common grid.
@@ -169,9 +178,13 @@ type PerWindow = fn(&Level) -> &Vec<f64>;
 /// A finished convergence study.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConvergeResult {
+    /// The case's title.
     pub title: String,
+    /// d, the reference depth (case length unit).
     pub depth: f64,
+    /// The relative change below which a quantity counts as converged.
     pub tolerance: f64,
+    /// What each level halved.
     pub refine: Refine,
     /// Coarsest first.
     pub levels: Vec<Level>,
@@ -421,7 +434,7 @@ impl ConvergeResult {
         let _ = writeln!(w, "# Convergence with the resolution: {}\n", self.title);
         let _ = writeln!(
             w,
-            "Level k runs at {}. Averaged quantities should converge; individual peaks need not (docs/model.md, \"Convergence\"). Converged: relative change < {} % between the two finest levels.\n",
+            "Level k runs at {}. Averaged quantities should converge; individual peaks need not (docs/model.md §12). Converged: relative change < {} % between the two finest levels.\n",
             self.refine.describe(),
             self.tolerance * 100.0
         );

@@ -32,18 +32,28 @@ pub const MEANINGS: [&str; 9] = [
 /// Summary figures of a finished run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Figures {
+    /// P/(γ0 d²) of the first increment.
     pub initial_force_norm: f64,
+    /// Largest P/(γ0 d²).
     pub max_force_norm: f64,
+    /// u/d where it occurs.
     pub u_over_d_at_max: f64,
+    /// P/(γ0 d²) of the last increment.
     pub final_force_norm: f64,
+    /// Number of distinct force peaks.
     pub peaks: usize,
+    /// Mean P/(γ0 d²) over the increments from steps/2 on.
     pub mean_force_norm_last_half: f64,
+    /// (final mass − initial mass) / initial mass.
     pub mass_drift_rel: f64,
+    /// Increments whose emergence point jumped more than d/4.
     pub band_jumps: usize,
+    /// Increments run.
     pub steps: usize,
 }
 
 impl Figures {
+    /// The figures of a finished run.
     pub fn of(run: &RunResult) -> Self {
         let s = &run.summary;
         let forces: Vec<f64> = run.history.iter().map(|r| r.force_norm).collect();

@@ -55,10 +55,13 @@ pub const FEASIBLE_TRIES: usize = 6;
 /// A free parameter.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Free {
+    /// The case-file key (`soil.friction.peak`).
     pub key: String,
     /// The case's own value.
     pub start: f64,
+    /// Lower bound.
     pub lo: f64,
+    /// Upper bound.
     pub hi: f64,
 }
 
@@ -127,6 +130,7 @@ pub fn parse_bounds(text: &str) -> Result<(String, f64, f64), StudyError> {
 /// A calibration to run.
 #[derive(Clone, Debug)]
 pub struct Fit {
+    /// The case and its `--set` overrides.
     pub base: BaseCase,
     /// The free keys, in order.
     pub free: Vec<String>,
@@ -136,6 +140,7 @@ pub struct Fit {
     pub measured: Vec<(f64, f64)>,
     /// Nelder-Mead starts (the first is the case's own values).
     pub starts: usize,
+    /// Seed of the Latin-hypercube starts.
     pub seed: u64,
     /// Nelder-Mead iterations per start (and for the polish).
     pub max_iters: u64,
@@ -150,24 +155,32 @@ pub struct StartResult {
     pub from: Vec<f64>,
     /// Where it ended.
     pub best: Vec<f64>,
+    /// RMS force difference at `best` (γ·length²).
     pub rms: f64,
+    /// Objective evaluations (case runs).
     pub evaluations: u64,
+    /// Nelder-Mead iterations.
     pub iterations: u64,
 }
 
 /// A finished calibration.
 #[derive(Clone, Debug)]
 pub struct FitResult {
+    /// The free keys with their starts and bounds.
     pub params: Vec<Free>,
     /// Best values, in the order of `params`.
     pub best: Vec<f64>,
+    /// RMS force difference at the best values (γ·length²).
     pub best_rms: f64,
+    /// RMS force difference at the case's own values.
     pub start_rms: f64,
     /// The starts, in order, then the polish as the last entry.
     pub starts: Vec<StartResult>,
+    /// The measured curve: (u, force per unit width).
     pub measured: Vec<(f64, f64)>,
     /// Runs of the case at the start and at the best values.
     pub start_run: RunResult,
+    /// Run of the case at the best values.
     pub best_run: RunResult,
 }
 

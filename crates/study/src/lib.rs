@@ -5,7 +5,7 @@
 //! * [`fit`]: the free case keys that best match a measured
 //!   force-displacement curve (Nelder-Mead from several seeded starts).
 //! * [`converge`]: one case with the increment halved level after level,
-//!   and which averaged quantities converge (MODEL.md section 7).
+//!   and which averaged quantities converge (docs/model.md §12).
 //!
 //! A library: no terminal output. Progress is reported through a
 //! [`Progress`] callback; results come back as data with methods that
@@ -16,6 +16,8 @@
 //! Case keys are changed with the same [`soilcut_io::Override`] mechanism
 //! as `--set`, applied to the case file's table before it is resolved, so
 //! every key of a case file can be varied or fitted.
+
+#![warn(missing_docs)]
 
 pub mod converge;
 pub mod csv;

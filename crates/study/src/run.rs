@@ -115,10 +115,15 @@ pub fn override_of(key: &str, value: &toml::Value) -> Result<Override, String> {
 /// Everything a finished run produced.
 #[derive(Clone, Debug)]
 pub struct RunResult {
+    /// The case as run.
     pub loaded: LoadedCase,
+    /// One record per increment.
     pub history: Vec<StepRecord>,
+    /// The final surface.
     pub profile: Vec<ProfilePoint>,
+    /// Figures of the run.
     pub summary: Summary,
+    /// Candidate mechanisms evaluated.
     pub evaluations: u64,
     /// Time spent in the simulation (varies between runs).
     pub wall_time_s: f64,

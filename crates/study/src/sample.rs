@@ -16,9 +16,21 @@ use std::str::FromStr;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Values {
     /// `lo:hi:n`: n evenly spaced values, lo and hi included.
-    Grid { lo: f64, hi: f64, n: usize },
+    Grid {
+        /// First value.
+        lo: f64,
+        /// Last value.
+        hi: f64,
+        /// Number of values.
+        n: usize,
+    },
     /// `lo:hi`: the interval, sampled.
-    Range { lo: f64, hi: f64 },
+    Range {
+        /// Lower end.
+        lo: f64,
+        /// Upper end.
+        hi: f64,
+    },
     /// `a,b,c`: these values.
     List(Vec<toml::Value>),
 }
@@ -26,7 +38,9 @@ pub enum Values {
 /// One `--vary key=SPEC`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Vary {
+    /// The case-file key.
     pub key: String,
+    /// Its values.
     pub values: Values,
 }
 
@@ -100,7 +114,12 @@ pub enum Sample {
     /// Every combination of the values (`lo:hi:n` and lists).
     Grid,
     /// A Latin-hypercube sample of `runs` points (`lo:hi` and lists).
-    Lhs { runs: usize, seed: u64 },
+    Lhs {
+        /// Number of points.
+        runs: usize,
+        /// Seed of the random pairing of strata.
+        seed: u64,
+    },
 }
 
 impl Sample {

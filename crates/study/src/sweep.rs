@@ -18,8 +18,12 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// A sweep to run.
 #[derive(Clone, Debug)]
 pub struct Sweep {
+    /// The case and its `--set` overrides.
     pub base: BaseCase,
+    /// The varied keys, in the order given (the last changes fastest on a
+    /// grid).
     pub varies: Vec<Vary>,
+    /// Grid or Latin hypercube.
     pub sample: Sample,
     /// Worker threads (0: one per available core).
     pub jobs: usize,
@@ -45,6 +49,7 @@ pub struct SweepRow {
 pub struct SweepResult {
     /// The varied keys.
     pub keys: Vec<String>,
+    /// One row per run, in the order of the sample.
     pub rows: Vec<SweepRow>,
 }
 
