@@ -10,7 +10,7 @@ use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
     AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
-    UnitWeightRule,
+    UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 use std::path::Path;
 
@@ -167,7 +167,8 @@ struct AngleFile {
 )]
 struct RunFile {
     travel: f64,
-    increment: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    increment: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     node_spacing: Option<f64>,
 }
@@ -333,7 +334,11 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     let repose = *soil.repose.get_or_insert(soil.friction.residual);
     let cohesion = *soil.cohesion.get_or_insert(0.0);
     let surcharge = *soil.surcharge.get_or_insert(0.0);
-    let node_spacing = *file.run.node_spacing.get_or_insert(file.run.increment);
+    let increment = *file
+        .run
+        .increment
+        .get_or_insert(file.blade.depth / DEFAULT_INCREMENTS_PER_DEPTH);
+    let node_spacing = *file.run.node_spacing.get_or_insert(increment);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
@@ -386,7 +391,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         },
         run: Run {
             travel: file.run.travel,
-            increment: file.run.increment,
+            increment,
             node_spacing,
         },
         choices,
@@ -469,6 +474,33 @@ mod tests {
         assert_eq!(c.soil.band_width, 7.0 * 0.6);
         assert_eq!(c.soil.friction.initial, 20.0);
         assert_eq!(c.soil.dilation.initial, -5.0);
+    }
+
+    #[test]
+    fn increment_and_node_spacing_default_to_a_thousandth_of_the_depth() {
+        let text: String = ORIGINAL
+            .lines()
+            .filter(|l| !l.starts_with("increment"))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let loaded = parse_case(&text, &[]).unwrap();
+        let d = loaded.case.blade.depth;
+        assert_eq!(loaded.case.run.increment, d / 1000.0);
+        assert_eq!(loaded.case.run.node_spacing, d / 1000.0);
+        let resolved = loaded.resolved_toml();
+        assert!(
+            resolved.contains(&format!("increment = {:?}", d / 1000.0)),
+            "{resolved}"
+        );
+        assert!(
+            resolved.contains(&format!("node_spacing = {:?}", d / 1000.0)),
+            "{resolved}"
+        );
+        let coarse = parse_case(&text, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
+        assert_eq!(coarse.case.run.node_spacing, 0.08);
+        assert_eq!(coarse.case.run.increment, d / 1000.0);
+        let e = key_error(&text, &["run.node_spacing=0.03"]);
+        assert_eq!(e.key, "run.node_spacing");
     }
 
     #[test]

@@ -101,6 +101,12 @@ pub struct Soil {
     pub surcharge: f64,
 }
 
+/// `run.increment` when a case does not give it: v0 = d / 1000, which puts
+/// every unit-window mean force of every paper case within 1 % of the
+/// converged value (docs/performance.md, "Time to accuracy"); the node
+/// spacing defaults to the increment (the reference grid).
+pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1000.0;
+
 /// How far the blade goes and in what increments.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {

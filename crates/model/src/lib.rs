@@ -26,7 +26,7 @@ pub mod trig;
 
 pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
-    UnitWeightRule,
+    UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 pub use landscape::Candidate;
 pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};
