@@ -53,3 +53,20 @@ fn fig5_step_on_developed_pile(bencher: Bencher) {
             sim
         });
 }
+
+/// Whole run of `cases/paper/fig8b.toml` (soil that only hardens) at about
+/// equal accuracy on the two node grids (`docs/performance.md`, "Time to
+/// accuracy"): the reference grid at d/500 (0.69 % from d/2000) and the
+/// coarse grid h = d/25 at v0 = d/500 (0.33 %).
+#[divan::bench(args = ["reference", "coarse"], sample_count = 3, sample_size = 1)]
+fn fig8b_equal_accuracy(bencher: Bencher, grid: &str) {
+    let spacing = match grid {
+        "reference" => "run.node_spacing=0.0508",
+        _ => "run.node_spacing=1.016",
+    };
+    let case = shipped_case("paper/fig8b.toml", &["run.increment=0.0508", spacing]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
