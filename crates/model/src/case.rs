@@ -247,19 +247,7 @@ impl Case {
 
     /// `validate` and what the simulation needs beyond the baselines.
     pub fn validate_simulation(&self) -> Result<(), CaseError> {
-        self.validate()?;
-        // On the sheared grid of a raked blade, sand at repose must still
-        // slope down away from the face (θr < α).
-        if self.soil.repose >= self.blade.rake {
-            return Err(CaseError::new(
-                "soil.repose",
-                format!(
-                    "must be < blade.rake ({}°) (got {}°)",
-                    self.blade.rake, self.soil.repose
-                ),
-            ));
-        }
-        Ok(())
+        self.validate()
     }
 
     fn validate_loads(&self) -> Result<(), CaseError> {

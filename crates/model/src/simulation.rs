@@ -237,8 +237,7 @@ pub struct Simulation {
     laws: Laws,
     /// The grid's shear for a raked blade (identity for 90°).
     rake: Rake,
-    /// Steepest slopes on the grid, downhill and uphill in +x: tan θr for a
-    /// vertical blade; on the sheared grid tan θr / (1 ∓ tan θr cot α).
+    /// Steepest slopes on the grid, downhill and uphill in +x (`Rake`).
     repose_slopes: (f64, f64),
     surface: Surface,
     search: Search,
@@ -267,10 +266,7 @@ impl Simulation {
         Ok(Simulation {
             laws,
             rake,
-            repose_slopes: (
-                tan_repose / (1.0 - tan_repose * rake.cot),
-                tan_repose / (1.0 + tan_repose * rake.cot),
-            ),
+            repose_slopes: rake.repose_slopes(tan_repose),
             surface,
             search: Search::default(),
             kinematics: Kinematics::default(),
