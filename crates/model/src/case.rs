@@ -142,6 +142,15 @@ pub struct Choices {
     pub unit_weight: UnitWeightRule,
 }
 
+/// The soil bin: where the ground ends.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Bin {
+    /// Distance from the blade's start (x = 0) to a rigid, frictionless end
+    /// wall ahead of it: no slip line emerges beyond it and the pile stops
+    /// at it. `None`: the ground is unbounded.
+    pub length: Option<f64>,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
     pub name: String,
@@ -150,6 +159,7 @@ pub struct Case {
     pub blade: Blade,
     pub soil: Soil,
     pub run: Run,
+    pub bin: Bin,
     /// Variants of the refined model's open choices (defaults: MODEL.md).
     pub choices: Choices,
 }
@@ -242,12 +252,46 @@ impl Case {
         self.validate_wall_friction()?;
         self.validate_soil()?;
         self.validate_loads()?;
-        self.validate_run()
+        self.validate_run()?;
+        self.validate_bin()
     }
 
     /// `validate` and what the simulation needs beyond the baselines.
     pub fn validate_simulation(&self) -> Result<(), CaseError> {
         self.validate()
+    }
+
+    /// The end wall must leave the blade room to travel and a mechanism
+    /// ahead of it; on the sheared grid of a raked blade a vertical wall is
+    /// no fixed node, so it needs a vertical blade.
+    fn validate_bin(&self) -> Result<(), CaseError> {
+        let Some(length) = self.bin.length else {
+            return Ok(());
+        };
+        let least = self.run.travel + 2.0 * self.run.increment;
+        if finite("bin.length", length)? < least {
+            return Err(CaseError::new(
+                "bin.length",
+                format!("must be >= run.travel + 2 run.increment = {least} (got {length})"),
+            ));
+        }
+        if self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                "bin.length",
+                format!(
+                    "needs a vertical blade, blade.rake = 90° (got {}°)",
+                    self.blade.rake
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The last node of the ground: the node at or before the end wall
+    /// (`bin.length`), if there is one.
+    pub fn wall_node(&self) -> Option<usize> {
+        let length = self.bin.length?;
+        Some((length / self.run.increment * (1.0 + 1e-12)).floor() as usize)
     }
 
     fn validate_loads(&self) -> Result<(), CaseError> {
@@ -456,9 +500,12 @@ impl Case {
     }
 
     /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
+    /// With an end wall, no more than the nodes up to it.
     pub fn initial_nodes(&self) -> f64 {
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
-        (reach / self.run.increment).ceil() + 2.0
+        let nodes = (reach / self.run.increment).ceil() + 2.0;
+        self.wall_node()
+            .map_or(nodes, |wall| nodes.min(wall as f64 + 1.0))
     }
 
     /// The tip depth at blade displacement u (`blade.depth_path`, linear

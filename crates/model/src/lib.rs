@@ -23,7 +23,7 @@ pub mod surface;
 pub mod trig;
 
 pub use case::{
-    AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
+    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, Model, Run, Soil,
     UnitWeightRule,
 };
 pub use landscape::Candidate;

@@ -63,6 +63,8 @@ pub struct StepRecord {
 pub enum StepError {
     /// No candidate satisfies β > 0, β + φ + φw < 90° within reach.
     NoAdmissibleMechanism { step: usize, u: f64 },
+    /// No admissible slip line emerges before the end wall (`bin.length`).
+    NoMechanismBeforeWall { step: usize, u: f64, length: f64 },
 }
 
 impl fmt::Display for StepError {
@@ -71,6 +73,10 @@ impl fmt::Display for StepError {
             StepError::NoAdmissibleMechanism { step, u } => write!(
                 f,
                 "no admissible mechanism at increment {step} (u = {u}): every candidate violates β > 0 and β + φ + φw < 90°"
+            ),
+            StepError::NoMechanismBeforeWall { step, u, length } => write!(
+                f,
+                "no admissible mechanism at increment {step} (u = {u}) emerges before the end wall at bin.length = {length}: shorten run.travel or lengthen the bin"
             ),
         }
     }
@@ -394,7 +400,9 @@ impl Simulation {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
         };
-        let max_nodes = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        let reach = self.done + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        // The end wall: candidates need a node ahead of them before it.
+        let max_nodes = self.case.wall_node().map_or(reach, |w| reach.min(w + 1));
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
         // A band far out on undisturbed ground needs its nodes (and one more).
         let missing = (choice.node + 2).saturating_sub(self.surface.len());
@@ -402,6 +410,15 @@ impl Simulation {
             self.surface.grow(missing.max(input.grow_nodes));
         }
         Some(choice)
+    }
+
+    /// Why the next increment has no mechanism.
+    fn no_mechanism(&self) -> StepError {
+        let (step, u) = (self.done + 1, self.blade_position());
+        match self.case.bin.length {
+            Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
+            None => StepError::NoAdmissibleMechanism { step, u },
+        }
     }
 
     /// Every admissible candidate of the next increment with its force,
@@ -414,10 +431,7 @@ impl Simulation {
         let found = self.find_mechanism(self.laws.face(self.climb()));
         let choices = self.search.end_landscape();
         if found.is_none() {
-            return Err(StepError::NoAdmissibleMechanism {
-                step: self.done + 1,
-                u: self.blade_position(),
-            });
+            return Err(self.no_mechanism());
         }
         let depth = self.tip_depth();
         Ok(choices
@@ -445,7 +459,7 @@ impl Simulation {
         let face = self.laws.face(self.climb());
         let choice = self
             .find_mechanism(face)
-            .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
+            .ok_or_else(|| self.no_mechanism())?;
         let (b, j) = (self.done, choice.node);
         let c = &self.case;
         let depth = self.tip_depth();

@@ -37,6 +37,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             travel: travel_depths * d,
             increment: d / per_depth,
         },
+        bin: Default::default(),
         choices: Default::default(),
     }
 }
