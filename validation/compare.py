@@ -19,11 +19,14 @@ Definitions (the same for soilcut and the DEM):
   for u <= 1 d;
 - mean force per unit of u/d: the mean over [k, k+1) d;
 - slope of the rise: least-squares slope of the force against u/d over [1, end];
-- pile: the highest point of the ground ahead of the face and the mean slope
-  of its front between 80 % and 20 % of that height;
-- DEM face friction: atan of the DEM's vertical over horizontal blade force,
-  each summed over the cut (the face friction the DEM mobilises);
-- reach: the furthest point ahead of the face where the ground stands at least
+- pile: the highest point of the ground in front of the face (for the raked
+  blade from 4 d back along the face, which carries soil behind the tip),
+  how far ahead of the tip it lies, and the mean slope of its front between
+  80 % and 20 % of that height;
+- force direction: atan of the vertical (upward on the blade) over the
+  horizontal blade force, each summed over the cut (for a vertical blade,
+  the face friction mobilised);
+- reach: the furthest point ahead of the tip where the ground stands at least
   0.1 d above the level surface (soilcut also records the slip line's
   emergence, x_emergence - u).
 """
@@ -72,18 +75,19 @@ def slope(u, f, lo):
     return sum((p[0] - mx) * (p[1] - my) for p in pts) / den
 
 
-def pile(points, face, depth):
-    """Height and front slope of the pile, and the reach of raised ground, ahead of `face`."""
-    ahead = sorted((x, y) for x, y in points if x > face)
+def pile(points, start, depth, tip):
+    """Height, front slope and crest of the pile and the reach of raised ground, from `start`
+    on (crest and reach measured from the tip)."""
+    ahead = sorted((x, y) for x, y in points if x > start)
     if not ahead:
-        return float("nan"), float("nan"), float("nan")
+        return float("nan"), float("nan"), float("nan"), float("nan")
     k = max(range(len(ahead)), key=lambda i: ahead[i][1])
     top = ahead[k][1]
     front = [(x, y) for x, y in ahead[k:] if 0.2 * top <= y <= 0.8 * top]
     s = slope([p[0] for p in front], [p[1] for p in front], -1e9) if len(front) > 1 else float("nan")
     raised = [x for x, y in ahead if y >= 0.1 * depth]
-    reach = max(raised) - face if raised else 0.0
-    return top, s, reach
+    reach = max(raised) - tip if raised else 0.0
+    return top, s, reach, ahead[k][0] - tip
 
 
 def dem_cut(name):
@@ -165,42 +169,49 @@ def svg(name, depth, dem_surf, model_surf):
 
 def main(out):
     out = Path(out)
-    print("| cut | first force: soilcut | Coulomb | FEE | soilcut first peak (at u/d) | DEM first peak (at u/d) | DEM face friction |")
+    print("| cut | first force: soilcut | Coulomb | FEE | soilcut first peak (at u/d) | DEM first peak (at u/d) | force direction atan(ΣFv/ΣFh): soilcut / DEM |")
     print("|---|---|---|---|---|---|---|")
     table2, table3 = [], []
     for name, (depth, rake) in CUTS.items():
-        if not (DEM / f"cut_{name}_forces.csv").exists():
-            print(f"| {name} | DEM cut not run | | | | | |")
-            continue
-        u, force, dem_surf, mobilised = dem_cut(name)
-        write_measured(name, depth, u, force)
         runs = sorted(out.glob(f"{name}-u*"), key=lambda p: int(p.name.rsplit("-u", 1)[1]))
         if not runs:
             continue
+        have_dem = (DEM / f"cut_{name}_forces.csv").exists()
+        u, force, dem_surf, mobilised = dem_cut(name) if have_dem else ([], [], {}, float("nan"))
+        if have_dem:
+            write_measured(name, depth, u, force)
         h, _, summary = soilcut_run(runs[-1])
         su = [float(r["u_over_d"]) for r in h]
         sf = [float(r["force_norm"]) for r in h]
-        sm = smooth(force, 5)
-        k = max((i for i in range(len(u)) if u[i] <= 1.0), key=lambda i: sm[i])
         base = summary.get("baselines", {})
         coulomb = base.get("coulomb", {}).get("force_norm", float("nan"))
         fee = base.get("fee", {}).get("force_norm", float("nan"))
+        direction = math.degrees(math.atan(sum(float(r["force_v"]) for r in h) / sum(float(r["force_h"]) for r in h)))
         first = summary["peaks"][0] if summary["peaks"] else {"force_norm": float("nan"), "u_over_d": float("nan")}
+        dem_peak = "pending"
+        if have_dem:
+            sm = smooth(force, 5)
+            k = max((i for i in range(len(u)) if u[i] <= 1.0), key=lambda i: sm[i])
+            dem_peak = f"{sm[k]:.3f} ({u[k]:.2f})"
         print(f"| {name} | {sf[0]:.3f} | {coulomb:.3f} | {fee:.3f} | {first['force_norm']:.3f} ({first['u_over_d']:.2f}) "
-              f"| {sm[k]:.3f} ({u[k]:.2f}) | {mobilised:.1f}° |")
+              f"| {dem_peak} | {direction:.1f}° / {mobilised:.1f}° |")
         dm, mm = window_means(u, force), window_means(su, sf)
+        dm += [float("nan")] * (len(mm) - len(dm))
         table2.append(f"| {name} | " + " | ".join(f"{a:.2f} / {b:.2f}" for a, b in zip(mm, dm))
-                      + f" | {slope(su, sf, 1.0):.3f} / {slope(u, force, 1.0):.3f} |")
+                      + " |" * (5 - len(mm)) + f" | {slope(su, sf, 1.0):.3f} / {slope(u, force, 1.0):.3f} |")
         model_surf = {}
         for run in runs:
             kd = int(run.name.rsplit("-u", 1)[1])
             hk, prof, _ = soilcut_run(run)
             model_surf[kd] = prof
             face = kd * depth
-            mt, ms, mr = pile(prof, face - 1e-9, depth)
-            dt, ds, dr = pile(dem_surf.get(float(kd), []), face + 1.0, depth)
+            # A raked face carries soil behind the tip: look from 4 d back along it.
+            back = 0.0 if rake == 90.0 else 4.0 * depth / math.tan(math.radians(rake))
+            mt, ms, mr, mc = pile(prof, face - back - 1e-9, depth, face)
+            dt, ds, dr, dc = pile(dem_surf.get(float(kd), []), face - back + 1.0, depth, face)
             emerge = float(hk[-1]["x_emergence"]) - float(hk[-1]["u"])
-            table3.append(f"| {name} | {kd} | {mt / depth:.2f} / {dt / depth:.2f} | {-ms:.2f} / {-ds:.2f} "
+            table3.append(f"| {name} | {kd} | {mt / depth:.2f} / {dt / depth:.2f} | {mc / depth:.2f} / {dc / depth:.2f} "
+                          f"| {-ms:.2f} / {-ds:.2f} "
                           f"| {mr / depth:.2f} / {dr / depth:.2f} | {emerge / depth:.2f} |")
         svg(name, depth, dem_surf, model_surf)
     print()
@@ -226,8 +237,8 @@ def main(out):
     print()
     print("Pile and reach at u = k d, soilcut / DEM (in units of d; the pile front slope as tan):")
     print()
-    print("| cut | u/d | pile height | front slope | reach of raised ground | soilcut emergence ahead |")
-    print("|---|---|---|---|---|---|")
+    print("| cut | u/d | pile height | crest ahead of the tip | front slope | reach of raised ground | soilcut emergence ahead |")
+    print("|---|---|---|---|---|---|---|")
     print("\n".join(table3))
 
 
