@@ -9,7 +9,7 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
+    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, Model, Run, Soil,
     UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 use std::path::Path;
@@ -36,7 +36,16 @@ struct CaseFile {
     soil: SoilFile,
     run: RunFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    bin: Option<BinFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     choices: Option<ChoicesFile>,
+}
+
+/// `[bin]`: the soil bin's end wall (none: unbounded ground).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table { length }")]
+struct BinFile {
+    length: f64,
 }
 
 /// `[choices]`: variants of the refined model's open choices (docs/model.md §14).
@@ -394,6 +403,9 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             increment,
             node_spacing,
         },
+        bin: Bin {
+            length: file.bin.map(|b| b.length),
+        },
         choices,
     };
     case.validate().map_err(|e| key_as_written(e, &file))?;
@@ -455,6 +467,20 @@ mod tests {
             key_error(ORIGINAL, &["choices.band_shear=full"]).key,
             "choices"
         );
+    }
+
+    #[test]
+    fn bin_length_is_read_validated_and_written_back() {
+        let loaded = parse_case(ORIGINAL, &[]).unwrap();
+        assert_eq!(loaded.case.bin.length, None);
+        assert!(!loaded.resolved_toml().contains("[bin]"));
+        let set: Vec<Override> = vec!["bin.length=120".parse().unwrap()];
+        let walled = parse_case(ORIGINAL, &set).unwrap();
+        assert_eq!(walled.case.bin.length, Some(120.0));
+        let again = parse_case(&walled.resolved_toml(), &[]).unwrap();
+        assert_eq!(again.case, walled.case);
+        assert_eq!(key_error(ORIGINAL, &["bin.length=10"]).key, "bin.length");
+        assert_eq!(key_error(ORIGINAL, &["bin.width=10"]).key, "bin.width");
     }
 
     #[test]

@@ -49,7 +49,8 @@ pub struct Avalanche {
 impl Avalanche {
     /// Relaxes every slope steeper than the angle of repose among the nodes
     /// from `first` (the face) to the end of the domain, given as the
-    /// steepest grid slopes downhill and uphill (`slopes`), where slopes elsewhere
+    /// steepest grid slopes downhill and uphill (`slopes`; an infinite one
+    /// is no limit), where slopes elsewhere
     /// are known to be at most the angle of repose: only the nodes in
     /// `changed` (and as far as pooling spreads from them) are visited;
     /// the result is that of passes over the whole domain. Returns the range
@@ -65,7 +66,8 @@ impl Avalanche {
         self.set_windows(changed, first, surface.len());
         let mut touched = first..first;
         for _ in 0..MAX_PASSES {
-            let down = self.pass(surface, first, down, 1.0, &mut touched);
+            // No downhill limit (a face flatter than the repose, `Rake`).
+            let down = down.is_finite() && self.pass(surface, first, down, 1.0, &mut touched);
             let up = self.pass(surface, first, up, -1.0, &mut touched);
             if !down && !up {
                 break;

@@ -166,6 +166,15 @@ pub struct Choices {
     pub unit_weight: UnitWeightRule,
 }
 
+/// The soil bin: where the ground ends.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Bin {
+    /// Distance from the blade's start (x = 0) to a rigid, frictionless end
+    /// wall ahead of it: no slip line emerges beyond it and the pile stops
+    /// at it. `None`: the ground is unbounded.
+    pub length: Option<f64>,
+}
+
 /// One simulation case: what the case file says, every default filled in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
@@ -181,6 +190,8 @@ pub struct Case {
     pub soil: Soil,
     /// Travel and increment.
     pub run: Run,
+    /// The soil bin's end wall (none: unbounded ground; docs/model.md §10).
+    pub bin: Bin,
     /// Variants of the refined model's open choices (defaults: docs/model.md §14).
     pub choices: Choices,
 }
@@ -276,24 +287,46 @@ impl Case {
         self.validate_wall_friction()?;
         self.validate_soil()?;
         self.validate_loads()?;
-        self.validate_run()
+        self.validate_run()?;
+        self.validate_bin()
     }
 
     /// `validate` and what the simulation needs beyond the baselines.
     pub fn validate_simulation(&self) -> Result<(), CaseError> {
-        self.validate()?;
-        // On the sheared grid of a raked blade, sand at repose must still
-        // slope down away from the face (θr < α).
-        if self.soil.repose >= self.blade.rake {
+        self.validate()
+    }
+
+    /// The end wall must leave the blade room to travel and a mechanism
+    /// ahead of it; on the sheared grid of a raked blade a vertical wall is
+    /// no fixed node, so it needs a vertical blade.
+    fn validate_bin(&self) -> Result<(), CaseError> {
+        let Some(length) = self.bin.length else {
+            return Ok(());
+        };
+        let least = self.run.travel + 2.0 * self.run.node_spacing;
+        if finite("bin.length", length)? < least {
             return Err(CaseError::new(
-                "soil.repose",
+                "bin.length",
+                format!("must be >= run.travel + 2 run.node_spacing = {least} (got {length})"),
+            ));
+        }
+        if self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                "bin.length",
                 format!(
-                    "must be < blade.rake ({}°) (got {}°)",
-                    self.blade.rake, self.soil.repose
+                    "needs a vertical blade, blade.rake = 90° (got {}°)",
+                    self.blade.rake
                 ),
             ));
         }
         Ok(())
+    }
+
+    /// The last node of the ground: the node at or before the end wall
+    /// (`bin.length`), if there is one.
+    pub fn wall_node(&self) -> Option<usize> {
+        let length = self.bin.length?;
+        Some((length / self.run.node_spacing * (1.0 + 1e-12)).floor() as usize)
     }
 
     fn validate_loads(&self) -> Result<(), CaseError> {
@@ -534,9 +567,12 @@ impl Case {
     }
 
     /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
+    /// With an end wall, no more than the nodes up to it.
     pub fn initial_nodes(&self) -> f64 {
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
-        (reach / self.run.node_spacing).ceil() + 2.0
+        let nodes = (reach / self.run.node_spacing).ceil() + 2.0;
+        self.wall_node()
+            .map_or(nodes, |wall| nodes.min(wall as f64 + 1.0))
     }
 
     /// The tip depth at blade displacement u (`blade.depth_path`, linear

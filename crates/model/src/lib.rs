@@ -25,7 +25,7 @@ pub mod surface;
 pub mod trig;
 
 pub use case::{
-    AngleLaw, BandAngleRule, BandShearRule, Blade, Case, CaseError, Choices, Model, Run, Soil,
+    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, Model, Run, Soil,
     UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 pub use landscape::Candidate;

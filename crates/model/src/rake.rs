@@ -55,6 +55,23 @@ impl Rake {
         t / (1.0 + self.cot * t)
     }
 
+    /// The steepest grid slopes, downhill and uphill in +x, of sand at
+    /// repose tan θr = `tan_repose`: a physical slope ∓tan θr is the grid
+    /// slope ∓tan θr / (1 ∓ tan θr cot α). A grid segment falling by s per
+    /// unit of x' falls physically by s / (1 + s cot α) < tan α, so where
+    /// θr ≥ α (a face flatter than the repose) every downhill slope the grid
+    /// can hold is stable and the downhill limit is infinite: soil lies on
+    /// the face as on ground flatter than its repose.
+    pub fn repose_slopes(&self, tan_repose: f64) -> (f64, f64) {
+        let run = 1.0 - tan_repose * self.cot;
+        let down = if run > 0.0 {
+            tan_repose / run
+        } else {
+            f64::INFINITY
+        };
+        (down, tan_repose / (1.0 + tan_repose * self.cot))
+    }
+
     /// Physical x of the point (x', y) with the tip at depth d.
     #[inline]
     pub fn x(&self, x_grid: f64, y: f64, depth: f64) -> f64 {
@@ -72,6 +89,19 @@ mod tests {
         assert_eq!(r.physical(0.37), Some(0.37));
         assert_eq!(r.grid(0.37), 0.37);
         assert_eq!(r.x(3.0, -0.5, 1.0), 3.0);
+    }
+
+    #[test]
+    fn repose_slopes_are_the_physical_repose_on_the_grid() {
+        let r = Rake::new(60.0);
+        let t = 30f64.to_radians().tan();
+        let (down, up) = r.repose_slopes(t);
+        assert!((r.physical(-down).unwrap() + t).abs() < 1e-12);
+        assert!((r.physical(up).unwrap() - t).abs() < 1e-12);
+        // A face flatter than the repose: no downhill limit on the grid.
+        let flat = Rake::new(30.0).repose_slopes(35f64.to_radians().tan());
+        assert_eq!(flat.0, f64::INFINITY);
+        assert!(flat.1.is_finite());
     }
 
     #[test]

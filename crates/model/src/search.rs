@@ -212,10 +212,16 @@ impl Search {
         if found.is_some() || !prune {
             return found;
         }
-        // The bounds are proven, so this does not happen; if it ever does,
-        // tests fail here and a user's run still gets the true minimum.
-        debug_assert!(false, "a bound rejected every admissible candidate");
-        self.scan(surface, input, max_nodes, false)
+        // None may be true (an end wall leaves no room); that a bound
+        // rejected every admissible candidate is proven not to happen: if it
+        // ever does, tests fail here and a user's run still gets the true
+        // minimum.
+        let exact = self.scan(surface, input, max_nodes, false);
+        debug_assert!(
+            exact.is_none(),
+            "a bound rejected every admissible candidate"
+        );
+        exact
     }
 
     /// The outward scan; with `prune` false, no candidate is rejected
@@ -498,11 +504,13 @@ impl Search {
         let fresh = (input.angles)(input.fresh);
         let fresh_walls = Lower::new(fresh.friction, input);
         let mut n1 = far.first_admissible(scan.r_min);
-        while scan.b + n1 < max_nodes {
+        // A candidate needs a node ahead of it within `max_nodes` (an end
+        // wall may set it).
+        while scan.b + n1 + 1 < max_nodes {
             if scan.beyond_reach(far.weight(n1), input.min_factor) {
                 return;
             }
-            let n2 = n1 + (n1 / 16).max(64) - 1;
+            let n2 = (n1 + (n1 / 16).max(64) - 1).min(max_nodes - 2 - scan.b);
             // Weight and slip length grow with n, P/W and the cohesion term
             // with tan β: (n₁, β(n₂)) bounds the block from below.
             let slopes = (far.slope(n1, &input.rake), far.slope(n2, &input.rake));

@@ -69,6 +69,15 @@ pub enum StepError {
         /// Blade displacement at its start.
         u: f64,
     },
+    /// No admissible slip line emerges before the end wall (`bin.length`).
+    NoMechanismBeforeWall {
+        /// The increment, from 1.
+        step: usize,
+        /// Blade displacement at its start.
+        u: f64,
+        /// `bin.length`, the wall's distance from the blade's start.
+        length: f64,
+    },
 }
 
 impl fmt::Display for StepError {
@@ -77,6 +86,10 @@ impl fmt::Display for StepError {
             StepError::NoAdmissibleMechanism { step, u } => write!(
                 f,
                 "no admissible mechanism at increment {step} (u = {u}): every candidate violates β > 0 and β + φ + φw < 90°"
+            ),
+            StepError::NoMechanismBeforeWall { step, u, length } => write!(
+                f,
+                "no admissible mechanism at increment {step} (u = {u}) emerges before the end wall at bin.length = {length}: shorten run.travel or lengthen the bin"
             ),
         }
     }
@@ -247,8 +260,7 @@ pub struct Simulation {
     laws: Laws,
     /// The grid's shear for a raked blade (identity for 90°).
     rake: Rake,
-    /// Steepest slopes on the grid, downhill and uphill in +x: tan θr for a
-    /// vertical blade; on the sheared grid tan θr / (1 ∓ tan θr cot α).
+    /// Steepest slopes on the grid, downhill and uphill in +x (`Rake`).
     repose_slopes: (f64, f64),
     surface: Surface,
     search: Search,
@@ -279,10 +291,7 @@ impl Simulation {
         Ok(Simulation {
             laws,
             rake,
-            repose_slopes: (
-                tan_repose / (1.0 - tan_repose * rake.cot),
-                tan_repose / (1.0 + tan_repose * rake.cot),
-            ),
+            repose_slopes: rake.repose_slopes(tan_repose),
             surface,
             search: Search::default(),
             kinematics: Kinematics::default(),
@@ -413,7 +422,9 @@ impl Simulation {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
         };
-        let max_nodes = self.surface.face + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        let reach = self.surface.face + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        // The end wall: candidates need a node ahead of them before it.
+        let max_nodes = self.case.wall_node().map_or(reach, |w| reach.min(w + 1));
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
         // A band far out on undisturbed ground needs its nodes (and one more).
         let missing = (choice.node + 2).saturating_sub(self.surface.len());
@@ -421,6 +432,15 @@ impl Simulation {
             self.surface.grow(missing.max(input.grow_nodes));
         }
         Some(choice)
+    }
+
+    /// Why the next increment has no mechanism.
+    fn no_mechanism(&self) -> StepError {
+        let (step, u) = (self.done + 1, self.blade_position());
+        match self.case.bin.length {
+            Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
+            None => StepError::NoAdmissibleMechanism { step, u },
+        }
     }
 
     /// Every admissible candidate of the next increment with its force,
@@ -433,10 +453,7 @@ impl Simulation {
         let found = self.find_mechanism(self.laws.face(self.climb()));
         let choices = self.search.end_landscape();
         if found.is_none() {
-            return Err(StepError::NoAdmissibleMechanism {
-                step: self.done + 1,
-                u: self.blade_position(),
-            });
+            return Err(self.no_mechanism());
         }
         let depth = self.tip_depth();
         Ok(choices
@@ -478,7 +495,7 @@ impl Simulation {
         let face = self.laws.face(self.climb());
         let choice = self
             .find_mechanism(face)
-            .ok_or(StepError::NoAdmissibleMechanism { step, u })?;
+            .ok_or_else(|| self.no_mechanism())?;
         let (b, j) = (self.surface.face, choice.node);
         let c = &self.case;
         let depth = self.tip_depth();

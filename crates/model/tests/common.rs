@@ -38,6 +38,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             increment: d / per_depth,
             node_spacing: d / per_depth,
         },
+        bin: Default::default(),
         choices: Default::default(),
     }
 }

@@ -25,6 +25,16 @@ fn first(case: &Case) -> soilcut_model::StepRecord {
     Simulation::new(case).unwrap().step().unwrap()
 }
 
+/// The first increment, checked against the FEE's trial wedge.
+fn first_matches_fee(case: &Case) -> soilcut_model::StepRecord {
+    let exact = soilcut_model::analytic::Wedge::of_case(case).fee().unwrap();
+    let got = first(case);
+    let rel = (got.force - exact.force).abs() / exact.force;
+    let rake = case.blade.rake;
+    assert!(rel < 1e-4, "α={rake}: {} vs FEE {}", got.force, exact.force);
+    got
+}
+
 #[test]
 fn first_increment_matches_the_fee_rake_sweep() {
     for (rake, beta, force) in [
@@ -35,12 +45,7 @@ fn first_increment_matches_the_fee_rake_sweep() {
         (90.0, 16.2, 18.37),
     ] {
         let case = fee_example(rake, 4000.0);
-        let exact = soilcut_model::analytic::Wedge::of_case(&case)
-            .fee()
-            .unwrap();
-        let got = first(&case);
-        let rel = (got.force - exact.force).abs() / exact.force;
-        assert!(rel < 1e-4, "α={rake}: {} vs FEE {}", got.force, exact.force);
+        let got = first_matches_fee(&case);
         assert!(
             (got.force - force).abs() < 5e-3,
             "α={rake}: {} vs {force}",
@@ -130,4 +135,38 @@ fn pruning_holds_for_either_face_friction() {
     assert_eq!(history.len(), case.steps());
     let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
     assert!(drift.abs() < 1e-9, "{drift:e}");
+}
+
+/// Tines and scrapers work at α = 20° to 35° in sand whose repose is 35°:
+/// the face is flatter than the repose. The first increment on flat ground
+/// is still the FEE's trial wedge, and the soil that rides up the face,
+/// avalanching only where it would stand steeper than its repose, is
+/// conserved to round-off.
+#[test]
+fn blades_raked_below_the_repose_match_the_fee_and_conserve_soil() {
+    for rake in [20.0, 25.0, 30.0] {
+        let mut case = fee_example(rake, 4000.0);
+        case.blade.wall_friction = 15.0;
+        case.soil.repose = 35.0;
+        first_matches_fee(&case);
+
+        let mut long = common::original(3.0, 100.0);
+        long.blade.rake = rake;
+        long.blade.wall_friction = 15.0;
+        long.soil.repose = 35.0;
+        let (history, sim) = common::run(&long);
+        assert_eq!(history.len(), long.steps());
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-12, "α={rake}: drift {drift:e}");
+        // Nowhere does the ground stand steeper than its repose.
+        let tan_repose = 35f64.to_radians().tan();
+        for w in sim.profile().windows(2) {
+            let slope = (w[1].y - w[0].y) / (w[1].x - w[0].x);
+            assert!(
+                w[1].x > w[0].x && slope.abs() <= tan_repose * (1.0 + 1e-6),
+                "α={rake}: slope {slope} at x = {}",
+                w[0].x
+            );
+        }
+    }
 }
