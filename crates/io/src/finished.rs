@@ -132,6 +132,11 @@ impl Table {
         })
     }
 
+    /// The column names, in order.
+    pub fn header(&self) -> &[String] {
+        &self.header
+    }
+
     pub fn len(&self) -> usize {
         self.rows.len()
     }

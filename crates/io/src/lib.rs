@@ -9,7 +9,10 @@
 //!   [`landscape_map_csv`]: landscapes through a run, binned by distance.
 //! * [`read_measured`]: a measured force-displacement curve (`u,force`).
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
-//!   reads a finished run's files back for drawing.
+//!   reads a finished run's files back for drawing; [`record_run`] runs a
+//!   simulation capturing the frames.
+//! * [`write_run_dir`]: a run's folder with its pictures ([`draw_run_dir`]),
+//!   the same from every front end.
 
 mod case_file;
 mod error;
@@ -18,6 +21,8 @@ mod landscape;
 mod measured;
 mod output;
 mod overrides;
+mod pictures;
+mod record;
 
 pub use case_file::{parse_case, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
@@ -32,3 +37,5 @@ pub use output::{
     HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
+pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
+pub use record::{record_run, ANIMATION_FRAMES};
