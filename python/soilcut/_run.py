@@ -62,7 +62,7 @@ class RunResult:
             ``force_h``, ``force_v``, ``beta_deg``, ``x_emergence``, ``mass``,
             ``y_emergence``, ``friction_deg``, ``slip``, ``dilation_deg``,
             ``dilation_area``, ``depth``): forces per unit width
-            (force/length), ``force_norm`` = P/(γ0 d²), lengths in the case's
+            (γ·length², force per unit width), ``force_norm`` = P/(γ0 d²), lengths in the case's
             unit, angles in degrees. The numbers are the file's exactly.
         profile: the final ground surface, arrays ``x``, ``y``,
             ``accumulated_shear`` (length) and ``unit_weight`` (force/length³).

@@ -106,7 +106,7 @@ class FitResult:
 
     Attributes:
         best: the free keys' best values (dotted key → value).
-        best_rms: RMS error of the force at the best values (force/length).
+        best_rms: RMS error of the force at the best values (γ·length², force per unit width).
         start_rms: RMS error at the case's own values.
         best_case: the case at the best values (resolved).
         files: ``fit.md``, ``fit.csv``, ``curves.csv``, ``best.toml`` as
@@ -165,7 +165,7 @@ def fit(
 
     Args:
         measured: the blade displacement u (length) and the force per unit
-            width (force/length): a DataFrame with columns ``u`` and
+            width (γ·length², force per unit width): a DataFrame with columns ``u`` and
             ``force``, a tuple ``(u, force)`` or an N×2 array.
         free: dotted keys to fit; they start at the case's values.
         bounds: dotted key → (lo, hi), replacing a key's default bounds.
@@ -187,7 +187,7 @@ def analytic(case: Case) -> dict[str, dict[str, Any] | None]:
     ``soilcut analytic`` prints them: ``rankine`` (smooth vertical wall),
     ``coulomb`` (trial wedge, c = a = q = 0) and ``fee`` (Reece's
     Fundamental Earthmoving Equation, McKyes' factors). Each is a dict of
-    ``force`` (per unit width, force/length), ``force_norm`` (P/(γ0 d²)),
+    ``force`` (per unit width, γ·length²), ``force_norm`` (P/(γ0 d²)),
     ``force_h``, ``force_v`` (positive upward), ``failure_angle_deg`` and,
     for the FEE, ``factors`` (``n_gamma``, ``n_c``, ``n_a``, ``n_q``); None
     where no wedge is admissible."""

@@ -128,7 +128,7 @@ impl Simulation {
         self.sim.tip_depth()
     }
 
-    /// Weight of the soil now, per unit width (force/length).
+    /// Weight of the soil now, per unit width (γ·length², force per unit width).
     #[getter]
     fn mass(&self) -> f64 {
         self.sim.mass()
@@ -166,7 +166,7 @@ impl Step {
     fn u(&self) -> f64 {
         self.0.u
     }
-    /// Resultant blade force P per unit width (force/length).
+    /// Resultant blade force P per unit width (γ·length², force per unit width).
     #[getter]
     fn force(&self) -> f64 {
         self.0.force
@@ -176,12 +176,12 @@ impl Step {
     fn force_norm(&self) -> f64 {
         self.0.force_norm
     }
-    /// Horizontal (draft) component of P (force/length).
+    /// Horizontal (draft) component of P (γ·length², force per unit width).
     #[getter]
     fn force_h(&self) -> f64 {
         self.0.force_h
     }
-    /// Vertical component of P, positive upward (force/length).
+    /// Vertical component of P, positive upward (γ·length², force per unit width).
     #[getter]
     fn force_v(&self) -> f64 {
         self.0.force_v
@@ -226,7 +226,7 @@ impl Step {
     fn dilation_area(&self) -> f64 {
         self.0.dilation_area
     }
-    /// Weight of the soil after the increment (force/length).
+    /// Weight of the soil after the increment (γ·length², force per unit width).
     #[getter]
     fn mass(&self) -> f64 {
         self.0.mass
