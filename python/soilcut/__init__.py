@@ -19,12 +19,13 @@ from ._case import Case
 from ._errors import CaseError, StepError
 from ._run import Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
-from ._study import FitResult, analytic, fit, sweep
+from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
 
 __all__ = [
     "Case",
     "CaseError",
     "FitResult",
+    "Landscape",
     "Frame",
     "RunResult",
     "Simulation",
@@ -33,6 +34,7 @@ __all__ = [
     "__version__",
     "analytic",
     "fit",
+    "landscape",
     "run",
     "sweep",
 ]

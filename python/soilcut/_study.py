@@ -6,7 +6,7 @@ import concurrent.futures
 import io
 import os
 from collections.abc import Mapping, Sequence
-from typing import Any, Union
+from typing import Any, NamedTuple, Union
 
 import numpy as np
 
@@ -192,3 +192,24 @@ def analytic(case: Case) -> dict[str, dict[str, Any] | None]:
     for the FEE, ``factors`` (``n_gamma``, ``n_c``, ``n_a``, ``n_q``); None
     where no wedge is admissible."""
     return _soilcut.analytic(text_of(case))
+
+
+class Landscape(NamedTuple):
+    """Every candidate mechanism of one increment (``soilcut landscape --at``)."""
+
+    u: float
+    """Blade displacement of the increment (length)."""
+    candidates: dict[str, np.ndarray]
+    """The columns of ``landscape.csv``, one row per candidate, nearest the
+    blade first: ``x_emergence``, ``distance_over_d`` ((x − u)/d),
+    ``y_emergence`` (length), ``beta_deg``, ``force`` (γ·length², force per
+    unit width), ``force_norm`` (P/(γ0 d²)), ``force_over_least``,
+    ``friction_deg``, ``dilation_deg``."""
+
+
+def landscape(case: Case, at: float) -> Landscape:
+    """The force of every candidate band at u/d = ``at`` (0 to
+    run.travel / blade.depth): the increment evaluated first at u ≥ at·d, as
+    ``soilcut landscape --at`` takes it."""
+    u, csv = _soilcut.landscape(text_of(case), float(at))
+    return Landscape(u, _soilcut.csv_columns("landscape.csv", csv))

@@ -155,3 +155,27 @@ def test_history_frame(refined):
     pd = pytest.importorskip("pandas")
     frame = soilcut.run(refined).history_frame()
     assert isinstance(frame, pd.DataFrame) and frame.columns[0] == "step"
+
+
+def test_a_case_the_model_cannot_simulate_is_a_case_error(cli, original):
+    """`soilcut check`'s second stage (what only a simulation needs) raises
+    from run and Simulation with the command line's message."""
+    case = original.update({"blade.rake": 30, "blade.wall_friction": 5})
+    path = case_path("paper/original.toml")
+    done = run_cli(
+        cli,
+        "check",
+        str(path),
+        "--set",
+        "blade.rake=30",
+        "--set",
+        "blade.wall_friction=5",
+        check=False,
+    )
+    assert done.returncode == 2
+    for attempt in (lambda: soilcut.run(case), lambda: soilcut.Simulation(case)):
+        with pytest.raises(soilcut.CaseError) as raised:
+            attempt()
+        assert done.stderr == f"error: {path}: {raised.value}\n"
+    with pytest.raises(soilcut.CaseError, match="line 1"):
+        soilcut.Simulation("name = = 2")

@@ -177,3 +177,20 @@ def test_sweep_rows_travel_as_text(refined):
     frame = soilcut.sweep(short(refined), {"soil.friction.peak": [35]}, jobs=1)
     again = soilcut._study._read_csv(frame.to_csv(index=False))
     pd.testing.assert_frame_equal(again, frame)
+
+
+def test_landscape_is_the_cli_landscape(cli, tmp_path, refined):
+    taken = soilcut.landscape(refined, 0.5)
+    out = tmp_path / "ls"
+    run_cli(cli, "landscape", str(REFINED), "--at", "0.5", "--out", str(out))
+    theirs = soilcut._soilcut.csv_columns("landscape.csv", (out / "landscape.csv").read_text())
+    assert list(taken.candidates) == list(theirs)
+    for name, column in theirs.items():
+        assert taken.candidates[name].tolist() == column.tolist(), name
+    least = taken.candidates["force_over_least"].min()
+    assert least == 1.0 and taken.u >= 0.5 * refined["blade.depth"]
+    run = soilcut.run(refined).history
+    step = int(round(taken.u / refined["run.increment"]))
+    assert taken.candidates["force"].min() == run["force"][step], "the least is the run's choice"
+    with pytest.raises(ValueError, match="at must be"):
+        soilcut.landscape(refined, 2.0)

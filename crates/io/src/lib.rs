@@ -30,7 +30,9 @@ pub use finished::{
     frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
     FRAME_ROWS,
 };
-pub use landscape::{landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER};
+pub use landscape::{
+    landscape_at, landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
+};
 pub use measured::{parse_measured, read_measured};
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,

@@ -27,6 +27,7 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::sweep_csv, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
     m.add_class::<simulation::Simulation>()?;
     m.add_class::<simulation::Step>()?;
     Ok(())

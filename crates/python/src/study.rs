@@ -2,11 +2,13 @@
 
 use crate::case::load;
 use crate::convert::{from_toml, to_toml};
-use crate::errors::case_message;
+use crate::errors::{case_error, case_message, step_error};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
+use soilcut_io::{landscape_at, landscape_csv};
 use soilcut_model::analytic::{Baseline, Wedge};
+use soilcut_model::Simulation;
 use soilcut_study::fit::Fit;
 use soilcut_study::sample::{Sample, Values, Vary};
 use soilcut_study::sweep::{Sweep, SweepResult};
@@ -246,4 +248,23 @@ pub fn analytic<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>
     out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
     out.set_item("fee", baseline(py, wedge.fee(), norm)?)?;
     Ok(out)
+}
+
+/// The landscape of `soilcut landscape --at`: every candidate mechanism at
+/// the first increment evaluated at u ≥ `at`·d, as `(u, landscape.csv)`.
+#[pyfunction]
+pub fn landscape(py: Python<'_>, text: &str, at: f64) -> PyResult<(f64, String)> {
+    let case = load(py, text)?.case;
+    let last = case.run.travel / case.blade.depth;
+    if !(at.is_finite() && (0.0..=last).contains(&at)) {
+        return Err(PyValueError::new_err(format!(
+            "at must be a number from 0 to run.travel / blade.depth = {last} (got {at})"
+        )));
+    }
+    let mut sim = Simulation::new(&case).map_err(|e| case_error(py, &e.into()))?;
+    let candidates = py
+        .detach(|| landscape_at(&mut sim, at))
+        .map_err(|e| step_error(py, &e))?;
+    let u = sim.blade_position();
+    Ok((u, landscape_csv(&candidates, u, case.blade.depth)))
 }
