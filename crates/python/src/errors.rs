@@ -6,8 +6,9 @@ use pyo3::prelude::*;
 use soilcut_io::InputError;
 use soilcut_model::StepError;
 use std::any::Any;
+use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// An instance of the package's exception `class` made with `args`.
+/// An instance of the package's exception `class`: `class(message, key)`.
 fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> PyErr {
     let made = py
         .import("soilcut._errors")
@@ -44,17 +45,30 @@ pub fn key_error(py: Python<'_>, key: &str, message: &str) -> PyErr {
 }
 
 /// `soilcut.StepError`: an increment without an admissible mechanism.
-pub fn step_error(py: Python<'_>, e: &StepError) -> PyErr {
+fn step_error(py: Python<'_>, e: &StepError) -> PyErr {
     raise(py, "StepError", e.to_string(), None)
 }
 
 /// A panic of the model (a bug) as a `RuntimeError`, so that it never
 /// reaches Python as a `PanicException` (which escapes `except Exception`).
-pub fn panic_error(panic: Box<dyn Any + Send>) -> PyErr {
+fn panic_error(panic: Box<dyn Any + Send>) -> PyErr {
     let text = panic
         .downcast_ref::<&str>()
         .map(|s| s.to_string())
         .or_else(|| panic.downcast_ref::<String>().cloned())
         .unwrap_or_else(|| "unknown panic".to_string());
     PyRuntimeError::new_err(format!("the model panicked (a bug of soilcut): {text}"))
+}
+
+/// Runs `f` without the interpreter (other Python threads go on); a step
+/// error becomes `soilcut.StepError`, a panic a `RuntimeError`.
+pub fn detached<T: Send>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, StepError> + Send,
+) -> PyResult<T> {
+    match py.detach(|| catch_unwind(AssertUnwindSafe(f))) {
+        Ok(Ok(value)) => Ok(value),
+        Ok(Err(e)) => Err(step_error(py, &e)),
+        Err(panic) => Err(panic_error(panic)),
+    }
 }

@@ -4,13 +4,12 @@
 
 use crate::case::load;
 use crate::convert::columns;
-use crate::errors::{panic_error, step_error};
+use crate::errors::detached;
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use soilcut_io::{frames_csv, record_run, OutputError, RunOutput, Table};
-use soilcut_model::{Simulation, StepError, Summary};
-use std::panic::{catch_unwind, AssertUnwindSafe};
+use soilcut_model::{Simulation, Summary};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -22,31 +21,24 @@ pub fn run(py: Python<'_>, text: &str) -> PyResult<Vec<(&'static str, String)>> 
     let loaded = load(py, text)?;
     let mut sim =
         Simulation::new(&loaded.case).map_err(|e| crate::errors::case_error(py, &e.into()))?;
-    let outcome = py.detach(|| {
-        catch_unwind(AssertUnwindSafe(|| {
-            let start = Instant::now();
-            let (history, frames) = record_run(&mut sim, || {})?;
-            let wall_time_s = start.elapsed().as_secs_f64();
-            let case = &loaded.case;
-            let summary = Summary::new(case, &history, sim.initial_mass());
-            let output = RunOutput {
-                loaded: &loaded,
-                history: &history,
-                profile: &sim.profile(),
-                summary: &summary,
-                candidate_evaluations: sim.evaluations(),
-                wall_time_s,
-            };
-            let mut files = output.files();
-            files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
-            Ok::<_, StepError>(files)
-        }))
-    });
-    match outcome {
-        Ok(Ok(files)) => Ok(files),
-        Ok(Err(e)) => Err(step_error(py, &e)),
-        Err(panic) => Err(panic_error(panic)),
-    }
+    detached(py, || {
+        let start = Instant::now();
+        let (history, frames) = record_run(&mut sim, || {})?;
+        let wall_time_s = start.elapsed().as_secs_f64();
+        let case = &loaded.case;
+        let summary = Summary::new(case, &history, sim.initial_mass());
+        let output = RunOutput {
+            loaded: &loaded,
+            history: &history,
+            profile: &sim.profile(),
+            summary: &summary,
+            candidate_evaluations: sim.evaluations(),
+            wall_time_s,
+        };
+        let mut files = output.files();
+        files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
+        Ok(files)
+    })
 }
 
 /// The columns of a CSV file of numbers (history.csv, profile.csv,

@@ -3,12 +3,11 @@
 
 use crate::case::load;
 use crate::convert::columns;
-use crate::errors::{case_error, panic_error, step_error};
+use crate::errors::{case_error, detached};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_model::{StepError, StepRecord};
-use std::panic::{catch_unwind, AssertUnwindSafe};
+use soilcut_model::StepRecord;
 
 /// A running simulation of one case.
 #[pyclass(module = "soilcut._soilcut")]
@@ -21,23 +20,6 @@ pub struct Simulation {
 /// case's units (γ·length²), lengths in the case's unit, angles in degrees.
 #[pyclass(module = "soilcut._soilcut", frozen)]
 pub struct Step(StepRecord);
-
-impl Simulation {
-    /// Runs `f` on the simulation without the interpreter; a panic of the
-    /// model becomes a `RuntimeError`, a step error `soilcut.StepError`.
-    fn detached<T: Send>(
-        &mut self,
-        py: Python<'_>,
-        f: impl FnOnce(&mut soilcut_model::Simulation) -> Result<T, StepError> + Send,
-    ) -> PyResult<T> {
-        let sim = &mut self.sim;
-        match py.detach(|| catch_unwind(AssertUnwindSafe(|| f(sim)))) {
-            Ok(Ok(value)) => Ok(value),
-            Ok(Err(e)) => Err(step_error(py, &e)),
-            Err(panic) => Err(panic_error(panic)),
-        }
-    }
-}
 
 #[pymethods]
 impl Simulation {
@@ -66,13 +48,15 @@ impl Simulation {
                 self.sim.steps_done()
             )));
         }
-        self.detached(py, |sim| sim.step()).map(Step)
+        let sim = &mut self.sim;
+        detached(py, || sim.step()).map(Step)
     }
 
     /// Advances by up to `n` increments without returning their records;
     /// returns how many were made.
     fn advance(&mut self, py: Python<'_>, n: usize) -> PyResult<usize> {
-        self.detached(py, |sim| {
+        let sim = &mut self.sim;
+        detached(py, || {
             let mut made = 0;
             while made < n && !sim.is_done() {
                 sim.step()?;

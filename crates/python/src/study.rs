@@ -2,7 +2,7 @@
 
 use crate::case::load;
 use crate::convert::{from_toml, to_toml};
-use crate::errors::{case_error, case_message, step_error};
+use crate::errors::{case_error, case_message, detached};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
@@ -262,9 +262,7 @@ pub fn landscape(py: Python<'_>, text: &str, at: f64) -> PyResult<(f64, String)>
         )));
     }
     let mut sim = Simulation::new(&case).map_err(|e| case_error(py, &e.into()))?;
-    let candidates = py
-        .detach(|| landscape_at(&mut sim, at))
-        .map_err(|e| step_error(py, &e))?;
+    let candidates = detached(py, || landscape_at(&mut sim, at))?;
     let u = sim.blade_position();
     Ok((u, landscape_csv(&candidates, u, case.blade.depth)))
 }
