@@ -12,14 +12,13 @@ mod study_cmd;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    frames_csv, read_case, record_run, write_run_dir, LoadedCase, OutputError, Override,
-    PictureError, RunOutput,
+    read_case, record_files, write_run_dir, LoadedCase, OutputError, Override, PictureError,
+    RecordedRun,
 };
-use soilcut_model::{Simulation, Summary};
+use soilcut_model::Simulation;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -256,22 +255,9 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
 
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
-    let start = Instant::now();
-    let (history, frames) =
-        record_run(&mut sim, || bar.inc(1)).map_err(|e| Failure::input(path, e))?;
-    let wall_time_s = start.elapsed().as_secs_f64();
+    let RecordedRun { files, summary } =
+        record_files(&loaded, &mut sim, || bar.inc(1)).map_err(|e| Failure::input(path, e))?;
     bar.finish_and_clear();
-    let summary = Summary::new(case, &history, sim.initial_mass());
-    let output = RunOutput {
-        loaded: &loaded,
-        history: &history,
-        profile: &sim.profile(),
-        summary: &summary,
-        candidate_evaluations: sim.evaluations(),
-        wall_time_s,
-    };
-    let mut files = output.files();
-    files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
     write_run_dir(&out, &files, force, plots).map_err(Failure::output)?;
     if quiet {
         return Ok(());

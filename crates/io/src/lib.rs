@@ -40,4 +40,4 @@ pub use output::{
 };
 pub use overrides::{parse_value, Override};
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
-pub use record::{record_run, ANIMATION_FRAMES};
+pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};

@@ -1,8 +1,11 @@
 //! A run recorded for its output folder: the history of every increment
 //! and evenly spaced surfaces for `frames.csv` and the animation.
 
-use crate::finished::SurfaceFrame;
-use soilcut_model::{Simulation, StepError, StepRecord};
+use crate::case_file::LoadedCase;
+use crate::finished::{frames_csv, SurfaceFrame};
+use crate::output::RunOutput;
+use soilcut_model::{Simulation, StepError, StepRecord, Summary};
+use std::time::Instant;
 
 /// Surfaces captured during a run for the animation (evenly spaced).
 pub const ANIMATION_FRAMES: usize = 120;
@@ -36,4 +39,38 @@ pub fn record_run(
         on_step();
     }
     Ok((history, frames))
+}
+
+/// A finished run: the files of its output folder and its summary.
+pub struct RecordedRun {
+    /// (name, contents): history.csv, profile.csv, summary.json,
+    /// case.resolved.toml, frames.csv.
+    pub files: Vec<(&'static str, String)>,
+    pub summary: Summary,
+}
+
+/// Runs the remaining increments of `sim` (set up from `loaded`) with
+/// [`record_run`], timing them for `summary.json`, and returns the files
+/// that `soilcut run` writes (every front end writes through here).
+pub fn record_files(
+    loaded: &LoadedCase,
+    sim: &mut Simulation,
+    on_step: impl FnMut(),
+) -> Result<RecordedRun, StepError> {
+    let start = Instant::now();
+    let (history, frames) = record_run(sim, on_step)?;
+    let wall_time_s = start.elapsed().as_secs_f64();
+    let case = &loaded.case;
+    let summary = Summary::new(case, &history, sim.initial_mass());
+    let output = RunOutput {
+        loaded,
+        history: &history,
+        profile: &sim.profile(),
+        summary: &summary,
+        candidate_evaluations: sim.evaluations(),
+        wall_time_s,
+    };
+    let mut files = output.files();
+    files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
+    Ok(RecordedRun { files, summary })
 }

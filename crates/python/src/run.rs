@@ -8,10 +8,9 @@ use crate::errors::detached;
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_io::{frames_csv, record_run, OutputError, RunOutput, Table};
-use soilcut_model::{Simulation, Summary};
+use soilcut_io::{record_files, OutputError, Table};
+use soilcut_model::Simulation;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// The run's files: `(name, contents)` of history.csv, profile.csv,
 /// summary.json, case.resolved.toml and frames.csv. Runs without the
@@ -21,24 +20,7 @@ pub fn run(py: Python<'_>, text: &str) -> PyResult<Vec<(&'static str, String)>> 
     let loaded = load(py, text)?;
     let mut sim =
         Simulation::new(&loaded.case).map_err(|e| crate::errors::case_error(py, &e.into()))?;
-    detached(py, || {
-        let start = Instant::now();
-        let (history, frames) = record_run(&mut sim, || {})?;
-        let wall_time_s = start.elapsed().as_secs_f64();
-        let case = &loaded.case;
-        let summary = Summary::new(case, &history, sim.initial_mass());
-        let output = RunOutput {
-            loaded: &loaded,
-            history: &history,
-            profile: &sim.profile(),
-            summary: &summary,
-            candidate_evaluations: sim.evaluations(),
-            wall_time_s,
-        };
-        let mut files = output.files();
-        files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
-        Ok(files)
-    })
+    detached(py, || Ok(record_files(&loaded, &mut sim, || {})?.files))
 }
 
 /// The columns of a CSV file of numbers (history.csv, profile.csv,
