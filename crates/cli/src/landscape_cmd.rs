@@ -4,7 +4,7 @@
 
 use crate::{load, CaseOutput, Failure};
 use soilcut_io::{
-    landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
+    landscape_at, landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
 };
 use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
@@ -112,12 +112,7 @@ impl Picture {
 fn one(sim: &mut Simulation, loaded: &LoadedCase, at: f64, path: &Path) -> Result<Taken, Failure> {
     let case = &loaded.case;
     let d = case.blade.depth;
-    // Increments before the one evaluated at u ≥ at d (u = steps × v0).
-    let before = ((at * d / case.run.increment) - 1e-9).ceil().max(0.0) as usize;
-    while sim.steps_done() < before.min(case.steps() - 1) {
-        sim.step().map_err(|e| Failure::input(path, e))?;
-    }
-    let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
+    let candidates = landscape_at(sim, at).map_err(|e| Failure::input(path, e))?;
     let u = sim.blade_position();
     let picture = Landscape {
         title: format!("{}: every candidate band at u/d = {:.3}", case.title, u / d),

@@ -11,24 +11,18 @@
 
 mod analytic_cmd;
 mod landscape_cmd;
-mod pictures;
 mod study_cmd;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use pictures::PictureError;
 use soilcut_io::{
-    frames_csv, read_case, write_output_dir_then, LoadedCase, OutputError, Override, RunOutput,
-    SurfaceFrame,
+    read_case, record_files, write_run_dir, LoadedCase, OutputError, Override, PictureError,
+    RecordedRun,
 };
-use soilcut_model::{Simulation, StepRecord, Summary};
+use soilcut_model::Simulation;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
-
-/// Surfaces captured during a run for the animation (evenly spaced).
-const FRAMES: usize = 120;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -274,37 +268,10 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
 
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
-    let start = Instant::now();
-    let (history, frames) = simulate(&mut sim, &bar).map_err(|e| Failure::input(path, e))?;
-    let wall_time_s = start.elapsed().as_secs_f64();
+    let RecordedRun { files, summary } =
+        record_files(&loaded, &mut sim, || bar.inc(1)).map_err(|e| Failure::input(path, e))?;
     bar.finish_and_clear();
-    let summary = Summary::new(case, &history, sim.initial_mass());
-    let output = RunOutput {
-        loaded: &loaded,
-        history: &history,
-        profile: &sim.profile(),
-        summary: &summary,
-        candidate_evaluations: sim.evaluations(),
-        wall_time_s,
-    };
-    let mut files = output.files();
-    files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
-    write_output_dir_then(&out, &files, force, |staged| {
-        if plots {
-            pictures::draw_run_dir(staged).map_err(|e| {
-                let message = match e {
-                    PictureError::Read(e) => e.to_string(),
-                    PictureError::Draw(e) => e.message,
-                };
-                OutputError::Io {
-                    path: staged.to_path_buf(),
-                    source: std::io::Error::other(message),
-                }
-            })?;
-        }
-        Ok(())
-    })
-    .map_err(Failure::output)?;
+    write_run_dir(&out, &files, force, plots).map_err(Failure::output)?;
     if quiet {
         return Ok(());
     }
@@ -317,36 +284,6 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
         out.display()
     );
     Ok(())
-}
-
-/// Runs the remaining increments, capturing [`FRAMES`] evenly spaced
-/// surfaces (the first before any increment, the last after all).
-fn simulate(
-    sim: &mut Simulation,
-    bar: &ProgressBar,
-) -> Result<(Vec<StepRecord>, Vec<SurfaceFrame>), soilcut_model::StepError> {
-    let total = sim.case().steps();
-    let n = FRAMES.min(total + 1).max(2);
-    let mut at: Vec<usize> = (0..n)
-        .map(|i| (i * total + (n - 1) / 2) / (n - 1))
-        .collect();
-    at.dedup();
-    let snapshot = |sim: &Simulation| SurfaceFrame {
-        step: sim.steps_done(),
-        u: sim.blade_position(),
-        surface: sim.profile(),
-    };
-    let mut frames = vec![snapshot(sim)];
-    let mut history = Vec::with_capacity(total);
-    let mut next = at.iter().skip(1).peekable();
-    while !sim.is_done() {
-        history.push(sim.step()?);
-        if next.next_if_eq(&&sim.steps_done()).is_some() {
-            frames.push(snapshot(sim));
-        }
-        bar.inc(1);
-    }
-    Ok((history, frames))
 }
 
 /// A progress bar on stderr, only if it is a terminal and not `quiet`.
@@ -364,14 +301,14 @@ fn progress_bar(steps: usize, quiet: bool) -> ProgressBar {
 }
 
 fn plot(dir: &Path) -> Result<(), Failure> {
-    let written = pictures::draw_run_dir(dir).map_err(Failure::picture)?;
+    let written = soilcut_io::draw_run_dir(dir).map_err(Failure::picture)?;
     println!("{}: {} pictures drawn", dir.display(), written.len());
     Ok(())
 }
 
 fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<(), Failure> {
     soilcut_plot::Format::of(out).map_err(|e| Failure::input(out, e.message))?;
-    pictures::compare(dirs, measured, out).map_err(Failure::picture)?;
+    soilcut_io::compare(dirs, measured, out).map_err(Failure::picture)?;
     println!("{}: {} runs compared", out.display(), dirs.len());
     Ok(())
 }

@@ -135,6 +135,11 @@ impl Table {
         })
     }
 
+    /// The column names, in order.
+    pub fn header(&self) -> &[String] {
+        &self.header
+    }
+
     /// Number of rows.
     pub fn len(&self) -> usize {
         self.rows.len()

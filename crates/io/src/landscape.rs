@@ -1,10 +1,25 @@
 //! `landscape.csv`: every candidate mechanism of one increment.
 
-use soilcut_model::Candidate;
+use soilcut_model::{Candidate, Simulation, StepError};
 use std::fmt::Write as _;
 
 /// Columns of `landscape.csv`, in order.
 pub const LANDSCAPE_HEADER: &str = "x_emergence,distance_over_d,y_emergence,beta_deg,force,force_norm,force_over_least,friction_deg,dilation_deg";
+
+/// Steps `sim` to the first increment evaluated at u ≥ `at`·d (u = steps ×
+/// v0; the last increment if `at` lies beyond it) and returns every
+/// candidate mechanism there: the landscape of `soilcut landscape --at`.
+pub fn landscape_at(sim: &mut Simulation, at: f64) -> Result<Vec<Candidate>, StepError> {
+    let case = sim.case();
+    let before = ((at * case.blade.depth / case.run.increment) - 1e-9)
+        .ceil()
+        .max(0.0) as usize;
+    let before = before.min(case.steps() - 1);
+    while sim.steps_done() < before {
+        sim.step()?;
+    }
+    sim.landscape()
+}
 
 /// One row per candidate, nearest the blade first; `u` is the face's
 /// position and `depth` the case's d (distance_over_d = (x − u) / d).

@@ -9,7 +9,10 @@
 //!   [`landscape_map_csv`]: landscapes through a run, binned by distance.
 //! * [`read_measured`]: a measured force-displacement curve (`u,force`).
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
-//!   reads a finished run's files back for drawing.
+//!   reads a finished run's files back for drawing; [`record_run`] runs a
+//!   simulation capturing the frames.
+//! * [`write_run_dir`]: a run's folder with its pictures ([`draw_run_dir`]),
+//!   the same from every front end.
 
 #![warn(missing_docs)]
 
@@ -20,6 +23,8 @@ mod landscape;
 mod measured;
 mod output;
 mod overrides;
+mod pictures;
+mod record;
 
 pub use case_file::{parse_case, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
@@ -27,10 +32,14 @@ pub use finished::{
     frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
     FRAME_ROWS,
 };
-pub use landscape::{landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER};
+pub use landscape::{
+    landscape_at, landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
+};
 pub use measured::{parse_measured, read_measured};
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,
     HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
+pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
+pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};

@@ -75,7 +75,7 @@ impl Sweep {
         let finished = AtomicUsize::new(0);
         progress(0, total);
         let one = |(index, values): (usize, Vec<toml::Value>)| {
-            let row = self.run_one(&keys, index + 1, total, values);
+            let row = self.run_point(&keys, index + 1, total, values);
             progress(finished.fetch_add(1, Ordering::Relaxed) + 1, total);
             row
         };
@@ -85,7 +85,10 @@ impl Sweep {
         Ok(SweepResult { keys, rows })
     }
 
-    fn run_one(
+    /// Runs one point of the sweep: run number `run` (from 1) of `total`,
+    /// `values` for `keys`. A sweep spread over other processes (an
+    /// executor of the Python package) runs its points through here.
+    pub fn run_point(
         &self,
         keys: &[String],
         run: usize,

@@ -1,7 +1,10 @@
-//! The pictures of finished runs: their files read with `soilcut-io`,
-//! drawn with `soilcut-plot`.
+//! The pictures of finished runs: their files read back and drawn with
+//! `soilcut-plot`. Every front end writes a run's folder through
+//! [`write_run_dir`], so the folders are identical.
 
-use soilcut_io::{read_finished_run, FinishedRun, RunFilesError, Table};
+use crate::error::OutputError;
+use crate::finished::{read_finished_run, FinishedRun, RunFilesError, Table};
+use crate::output::write_output_dir_then;
 use soilcut_plot::{Frame, Increment, Measured, PlotError, RunData, SurfacePoint};
 use std::path::{Path, PathBuf};
 
@@ -10,6 +13,7 @@ pub const PLOTS_DIR: &str = "plots";
 pub const ANIMATION: &str = "animation.gif";
 
 /// A failure: reading the run's files (bad input) or drawing (I/O).
+#[derive(Debug)]
 pub enum PictureError {
     Read(RunFilesError),
     Draw(PlotError),
@@ -40,6 +44,32 @@ pub fn draw_run_dir(dir: &Path) -> Result<Vec<PathBuf>, PictureError> {
     Ok(written)
 }
 
+/// Writes a run's output folder: `files` and, if `pictures`, the pictures
+/// drawn from them (placed together, atomically, by
+/// [`write_output_dir_then`]).
+pub fn write_run_dir(
+    out: &Path,
+    files: &[(&str, String)],
+    force: bool,
+    pictures: bool,
+) -> Result<(), OutputError> {
+    write_output_dir_then(out, files, force, |staged| {
+        if pictures {
+            draw_run_dir(staged).map_err(|e| {
+                let message = match e {
+                    PictureError::Read(e) => e.to_string(),
+                    PictureError::Draw(e) => e.message,
+                };
+                OutputError::Io {
+                    path: staged.to_path_buf(),
+                    source: std::io::Error::other(message),
+                }
+            })?;
+        }
+        Ok(())
+    })
+}
+
 /// Overlays the force and β* curves of the runs in `dirs` (and a measured
 /// curve, columns `u,force`) into `out`.
 pub fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<(), PictureError> {
@@ -53,7 +83,7 @@ pub fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<
                 "measured ({})",
                 path.file_name().unwrap_or_default().to_string_lossy()
             ),
-            points: soilcut_io::read_measured(path).map_err(|e| RunFilesError {
+            points: crate::measured::read_measured(path).map_err(|e| RunFilesError {
                 path: path.to_path_buf(),
                 message: e.to_string(),
             })?,

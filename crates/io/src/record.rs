@@ -1,0 +1,76 @@
+//! A run recorded for its output folder: the history of every increment
+//! and evenly spaced surfaces for `frames.csv` and the animation.
+
+use crate::case_file::LoadedCase;
+use crate::finished::{frames_csv, SurfaceFrame};
+use crate::output::RunOutput;
+use soilcut_model::{Simulation, StepError, StepRecord, Summary};
+use std::time::Instant;
+
+/// Surfaces captured during a run for the animation (evenly spaced).
+pub const ANIMATION_FRAMES: usize = 120;
+
+/// Runs the remaining increments of `sim`, capturing [`ANIMATION_FRAMES`]
+/// evenly spaced surfaces (the first before any increment, the last after
+/// all); `on_step` is called after each increment.
+pub fn record_run(
+    sim: &mut Simulation,
+    mut on_step: impl FnMut(),
+) -> Result<(Vec<StepRecord>, Vec<SurfaceFrame>), StepError> {
+    let total = sim.case().steps();
+    let n = ANIMATION_FRAMES.min(total + 1).max(2);
+    let mut at: Vec<usize> = (0..n)
+        .map(|i| (i * total + (n - 1) / 2) / (n - 1))
+        .collect();
+    at.dedup();
+    let snapshot = |sim: &Simulation| SurfaceFrame {
+        step: sim.steps_done(),
+        u: sim.blade_position(),
+        surface: sim.profile(),
+    };
+    let mut frames = vec![snapshot(sim)];
+    let mut history = Vec::with_capacity(total);
+    let mut next = at.iter().skip(1).peekable();
+    while !sim.is_done() {
+        history.push(sim.step()?);
+        if next.next_if_eq(&&sim.steps_done()).is_some() {
+            frames.push(snapshot(sim));
+        }
+        on_step();
+    }
+    Ok((history, frames))
+}
+
+/// A finished run: the files of its output folder and its summary.
+pub struct RecordedRun {
+    /// (name, contents): history.csv, profile.csv, summary.json,
+    /// case.resolved.toml, frames.csv.
+    pub files: Vec<(&'static str, String)>,
+    pub summary: Summary,
+}
+
+/// Runs the remaining increments of `sim` (set up from `loaded`) with
+/// [`record_run`], timing them for `summary.json`, and returns the files
+/// that `soilcut run` writes (every front end writes through here).
+pub fn record_files(
+    loaded: &LoadedCase,
+    sim: &mut Simulation,
+    on_step: impl FnMut(),
+) -> Result<RecordedRun, StepError> {
+    let start = Instant::now();
+    let (history, frames) = record_run(sim, on_step)?;
+    let wall_time_s = start.elapsed().as_secs_f64();
+    let case = &loaded.case;
+    let summary = Summary::new(case, &history, sim.initial_mass());
+    let output = RunOutput {
+        loaded,
+        history: &history,
+        profile: &sim.profile(),
+        summary: &summary,
+        candidate_evaluations: sim.evaluations(),
+        wall_time_s,
+    };
+    let mut files = output.files();
+    files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
+    Ok(RecordedRun { files, summary })
+}

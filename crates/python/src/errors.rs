@@ -1,0 +1,74 @@
+//! Rust errors as the Python package's exceptions (defined in
+//! `soilcut/_errors.py`, so that they carry docstrings and attributes).
+
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use soilcut_io::InputError;
+use soilcut_model::StepError;
+use std::any::Any;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// An instance of the package's exception `class`: `class(message, key)`.
+fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> PyErr {
+    let made = py
+        .import("soilcut._errors")
+        .and_then(|m| m.getattr(class))
+        .and_then(|c| c.call1((message, key)));
+    match made {
+        Ok(e) => PyErr::from_value(e),
+        Err(e) => e,
+    }
+}
+
+/// `soilcut.CaseError(message, key)`: the message is the command line's.
+pub fn case_error(py: Python<'_>, e: &InputError) -> PyErr {
+    let key = match e {
+        InputError::Key(k) => Some(k.key.clone()),
+        _ => None,
+    };
+    raise(py, "CaseError", e.to_string(), key)
+}
+
+/// `soilcut.CaseError` from a message (errors the study crate reports as text).
+pub fn case_message(py: Python<'_>, message: impl Into<String>) -> PyErr {
+    raise(py, "CaseError", message.into(), None)
+}
+
+/// `soilcut.CaseError` about `key`: the message is `key: message`.
+pub fn key_error(py: Python<'_>, key: &str, message: &str) -> PyErr {
+    raise(
+        py,
+        "CaseError",
+        format!("{key}: {message}"),
+        Some(key.to_string()),
+    )
+}
+
+/// `soilcut.StepError`: an increment without an admissible mechanism.
+fn step_error(py: Python<'_>, e: &StepError) -> PyErr {
+    raise(py, "StepError", e.to_string(), None)
+}
+
+/// A panic of the model (a bug) as a `RuntimeError`, so that it never
+/// reaches Python as a `PanicException` (which escapes `except Exception`).
+fn panic_error(panic: Box<dyn Any + Send>) -> PyErr {
+    let text = panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_string());
+    PyRuntimeError::new_err(format!("the model panicked (a bug of soilcut): {text}"))
+}
+
+/// Runs `f` without the interpreter (other Python threads go on); a step
+/// error becomes `soilcut.StepError`, a panic a `RuntimeError`.
+pub fn detached<T: Send>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, StepError> + Send,
+) -> PyResult<T> {
+    match py.detach(|| catch_unwind(AssertUnwindSafe(f))) {
+        Ok(Ok(value)) => Ok(value),
+        Ok(Err(e)) => Err(step_error(py, &e)),
+        Err(panic) => Err(panic_error(panic)),
+    }
+}

@@ -1,0 +1,34 @@
+//! `soilcut._soilcut`: the Python extension of soilcut. Type conversions
+//! only, over `soilcut-model`, `soilcut-io` and `soilcut-study`; the
+//! Python package `soilcut` (python/soilcut) builds its API on it. Every
+//! simulation runs with the interpreter released (`Python::detach`).
+
+mod case;
+mod convert;
+mod errors;
+mod run;
+mod simulation;
+mod study;
+
+use pyo3::prelude::*;
+
+#[pymodule]
+fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(case::resolve, m)?)?;
+    m.add_function(wrap_pyfunction!(case::set_keys, m)?)?;
+    m.add_function(wrap_pyfunction!(case::to_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(case::from_dict, m)?)?;
+    m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(run::csv_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(run::write_run_dir, m)?)?;
+    m.add_function(wrap_pyfunction!(study::analytic, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_points, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
+    m.add_function(wrap_pyfunction!(study::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
+    m.add_class::<simulation::Simulation>()?;
+    m.add_class::<simulation::Step>()?;
+    Ok(())
+}

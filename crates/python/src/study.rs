@@ -1,0 +1,268 @@
+//! Studies of many runs (`soilcut-study`) and the analytical baselines.
+
+use crate::case::load;
+use crate::convert::{from_toml, to_toml};
+use crate::errors::{case_error, case_message, detached};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString, PyTuple};
+use soilcut_io::{landscape_at, landscape_csv};
+use soilcut_model::analytic::{Baseline, Wedge};
+use soilcut_model::Simulation;
+use soilcut_study::fit::Fit;
+use soilcut_study::sample::{Sample, Values, Vary};
+use soilcut_study::sweep::{Sweep, SweepResult};
+use soilcut_study::{no_progress, BaseCase, StudyError};
+
+fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
+    match e {
+        StudyError::Case(message) => case_message(py, message),
+        e => PyValueError::new_err(e.to_string()),
+    }
+}
+
+fn base(py: Python<'_>, text: &str) -> PyResult<BaseCase> {
+    BaseCase::new(text.to_string(), vec![]).map_err(|e| crate::errors::case_error(py, &e))
+}
+
+/// One varied key: a spec string as `--vary` takes it (`lo:hi:n`, `lo:hi`,
+/// `a,b,c`), a tuple `(lo, hi)` (sampled) or `(lo, hi, n)` (grid), or any
+/// other sequence of values.
+fn vary(key: &str, spec: &Bound<'_, PyAny>) -> PyResult<Vary> {
+    let py = spec.py();
+    if let Ok(text) = spec.cast::<PyString>() {
+        return format!("{key}={text}")
+            .parse::<Vary>()
+            .map_err(|e| study_error(py, e));
+    }
+    let values = if let Ok(t) = spec.cast::<PyTuple>() {
+        let spec_text = match t.len() {
+            2 => format!("{}:{}", t.get_item(0)?, t.get_item(1)?),
+            3 => format!("{}:{}:{}", t.get_item(0)?, t.get_item(1)?, t.get_item(2)?),
+            n => {
+                return Err(PyValueError::new_err(format!(
+                    "vary {key}: a tuple is (lo, hi) or (lo, hi, n), not {n} items; give a list of values"
+                )))
+            }
+        };
+        return vary(key, &PyString::new(py, &spec_text).into_any());
+    } else {
+        let items = spec
+            .try_iter()
+            .map_err(|_| {
+                PyValueError::new_err(format!(
+                    "vary {key}: expected a spec string, a tuple or a sequence of values"
+                ))
+            })?
+            .map(|item| to_toml(key, &item?))
+            .collect::<PyResult<Vec<_>>>()?;
+        if items.is_empty() {
+            return Err(PyValueError::new_err(format!("vary {key}: no values")));
+        }
+        Values::List(items)
+    };
+    Ok(Vary {
+        key: key.to_string(),
+        values,
+    })
+}
+
+fn sweep_of(
+    py: Python<'_>,
+    text: &str,
+    varies: Vec<(String, Bound<'_, PyAny>)>,
+    sample: &str,
+    seed: u64,
+    jobs: usize,
+) -> PyResult<Sweep> {
+    Ok(Sweep {
+        base: base(py, text)?,
+        varies: varies
+            .iter()
+            .map(|(k, spec)| vary(k, spec))
+            .collect::<PyResult<_>>()?,
+        sample: Sample::parse(sample, seed).map_err(|e| study_error(py, e))?,
+        jobs,
+        keep_runs: None,
+    })
+}
+
+/// The values of every run of a sweep, one list per run.
+type Points<'py> = Vec<Vec<Bound<'py, PyAny>>>;
+
+/// The runs of a sweep: the varied keys and one list of values per run.
+#[pyfunction]
+pub fn sweep_points<'py>(
+    py: Python<'py>,
+    text: &str,
+    varies: Vec<(String, Bound<'py, PyAny>)>,
+    sample: &str,
+    seed: u64,
+) -> PyResult<(Vec<String>, Points<'py>)> {
+    let sweep = sweep_of(py, text, varies, sample, seed, 1)?;
+    let keys = sweep.varies.iter().map(|v| v.key.clone()).collect();
+    let points = sweep.points().map_err(|e| study_error(py, e))?;
+    let points = points
+        .iter()
+        .map(|p| p.iter().map(|v| from_toml(py, v)).collect())
+        .collect::<PyResult<_>>()?;
+    Ok((keys, points))
+}
+
+/// `sweep.csv` of a whole sweep run on `jobs` threads (0: one per core),
+/// and `timing.csv`.
+#[pyfunction]
+pub fn sweep_csv(
+    py: Python<'_>,
+    text: &str,
+    varies: Vec<(String, Bound<'_, PyAny>)>,
+    sample: &str,
+    seed: u64,
+    jobs: usize,
+) -> PyResult<(String, String)> {
+    let sweep = sweep_of(py, text, varies, sample, seed, jobs)?;
+    let result = py
+        .detach(|| sweep.run(&no_progress))
+        .map_err(|e| study_error(py, e))?;
+    Ok((result.csv(), result.timing_csv()))
+}
+
+/// Run `run` of `total` of a sweep over `keys`: its line of `sweep.csv`
+/// (without the header) and its wall time. With `run = 0` (no run): the
+/// header of `sweep.csv`.
+#[pyfunction]
+pub fn sweep_row(
+    py: Python<'_>,
+    text: &str,
+    keys: Vec<String>,
+    values: Vec<Bound<'_, PyAny>>,
+    run: usize,
+    total: usize,
+) -> PyResult<(String, f64)> {
+    let mut result = SweepResult {
+        keys: keys.clone(),
+        rows: vec![],
+    };
+    if run == 0 {
+        return Ok((result.csv(), 0.0));
+    }
+    let values = keys
+        .iter()
+        .zip(&values)
+        .map(|(k, v)| to_toml(k, v))
+        .collect::<PyResult<Vec<_>>>()?;
+    let sweep = Sweep {
+        base: base(py, text)?,
+        varies: vec![],
+        sample: Sample::Grid,
+        jobs: 1,
+        keep_runs: None,
+    };
+    let row = py
+        .detach(|| sweep.run_point(&keys, run, total, values))
+        .map_err(|e| study_error(py, e))?;
+    let wall_time_s = row.wall_time_s;
+    result.rows.push(row);
+    let csv = result.csv();
+    let line = csv.split_once('\n').map_or("", |(_, rows)| rows);
+    Ok((line.to_string(), wall_time_s))
+}
+
+/// A calibration as `soilcut fit` makes it: the best values, the RMS
+/// errors and the files `fit.md`, `fit.csv`, `curves.csv`, `best.toml`.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn fit<'py>(
+    py: Python<'py>,
+    text: &str,
+    measured: Vec<(f64, f64)>,
+    free: Vec<String>,
+    bounds: Vec<(String, f64, f64)>,
+    starts: usize,
+    seed: u64,
+    iterations: u64,
+    jobs: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let title = load(py, text)?.case.title;
+    let fit = Fit {
+        base: base(py, text)?,
+        free,
+        bounds,
+        measured,
+        starts,
+        seed,
+        max_iters: iterations,
+        jobs,
+    };
+    let r = py
+        .detach(|| fit.run(&no_progress))
+        .map_err(|e| study_error(py, e))?;
+    let out = PyDict::new(py);
+    let best = PyDict::new(py);
+    for (p, x) in r.params.iter().zip(&r.best) {
+        best.set_item(&p.key, x)?;
+    }
+    out.set_item("best", best)?;
+    out.set_item("best_rms", r.best_rms)?;
+    out.set_item("start_rms", r.start_rms)?;
+    let files = PyDict::new(py);
+    files.set_item("fit.md", r.markdown(&title))?;
+    files.set_item("fit.csv", r.csv())?;
+    files.set_item("curves.csv", r.curves_csv())?;
+    files.set_item("best.toml", r.best_toml())?;
+    out.set_item("files", files)?;
+    Ok(out)
+}
+
+fn baseline<'py>(py: Python<'py>, b: Option<Baseline>, norm: f64) -> PyResult<Bound<'py, PyAny>> {
+    let Some(b) = b else {
+        return Ok(py.None().into_bound(py));
+    };
+    let d = PyDict::new(py);
+    d.set_item("force", b.force)?;
+    d.set_item("force_norm", b.force / norm)?;
+    d.set_item("force_h", b.force_h)?;
+    d.set_item("force_v", b.force_v)?;
+    d.set_item("failure_angle_deg", b.failure_angle.to_degrees())?;
+    if let Some(f) = b.factors {
+        let factors = PyDict::new(py);
+        factors.set_item("n_gamma", f.n_gamma)?;
+        factors.set_item("n_c", f.n_c)?;
+        factors.set_item("n_a", f.n_a)?;
+        factors.set_item("n_q", f.n_q)?;
+        d.set_item("factors", factors)?;
+    }
+    Ok(d.into_any())
+}
+
+/// The analytical baselines of the case's initial flat ground, as
+/// `soilcut analytic` prints them: `rankine`, `coulomb` and `fee`, each a
+/// dict (or None where no wedge is admissible).
+#[pyfunction]
+pub fn analytic<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>> {
+    let case = load(py, text)?.case;
+    let wedge = Wedge::of_case(&case);
+    let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+    let out = PyDict::new(py);
+    out.set_item("rankine", baseline(py, Some(wedge.rankine()), norm)?)?;
+    out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
+    out.set_item("fee", baseline(py, wedge.fee(), norm)?)?;
+    Ok(out)
+}
+
+/// The landscape of `soilcut landscape --at`: every candidate mechanism at
+/// the first increment evaluated at u ≥ `at`·d, as `(u, landscape.csv)`.
+#[pyfunction]
+pub fn landscape(py: Python<'_>, text: &str, at: f64) -> PyResult<(f64, String)> {
+    let case = load(py, text)?.case;
+    let last = case.run.travel / case.blade.depth;
+    if !(at.is_finite() && (0.0..=last).contains(&at)) {
+        return Err(PyValueError::new_err(format!(
+            "at must be a number from 0 to run.travel / blade.depth = {last} (got {at})"
+        )));
+    }
+    let mut sim = Simulation::new(&case).map_err(|e| case_error(py, &e.into()))?;
+    let candidates = detached(py, || landscape_at(&mut sim, at))?;
+    let u = sim.blade_position();
+    Ok((u, landscape_csv(&candidates, u, case.blade.depth)))
+}

@@ -1,0 +1,40 @@
+"""soilcut: soil cutting by sequential limit analysis (Jin & Hambleton,
+"Simulation of the Cutting Process in Softening and Hardening Soils").
+
+    import soilcut
+    case = soilcut.Case.from_file("cases/paper/original.toml")
+    result = soilcut.run(case.set("run.increment", 0.08))
+    result.history["force_norm"]          # NumPy array, P/(γ0 d²)
+    result.save("out/original")           # the folder `soilcut run` writes
+
+    sim = soilcut.Simulation(case)        # step by step, for a control loop
+    for step in sim:
+        step.force, step.beta_deg
+
+Lengths are in the case's unit (the paper's cases use mm), angles in
+degrees, forces per unit width.
+"""
+
+from ._case import Case
+from ._errors import CaseError, StepError
+from ._run import Frame, RunResult, run
+from ._soilcut import Simulation, Step, __version__
+from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
+
+__all__ = [
+    "Case",
+    "CaseError",
+    "FitResult",
+    "Landscape",
+    "Frame",
+    "RunResult",
+    "Simulation",
+    "Step",
+    "StepError",
+    "__version__",
+    "analytic",
+    "fit",
+    "landscape",
+    "run",
+    "sweep",
+]

@@ -1,0 +1,133 @@
+"""Cases: the case file of ``soilcut run`` as a Python value."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Mapping
+from typing import Any, Union
+
+from . import _soilcut
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+class Case:
+    """One case: the blade, the soil and the run, as a case file gives them.
+
+    Make one with :meth:`from_file`, :meth:`from_toml` or :meth:`from_dict`;
+    change keys with :meth:`set` (a new case is returned; a case never
+    changes). Every case is validated when it is made, exactly as
+    ``soilcut run`` validates its case file: a bad type, a NaN, an unknown
+    key or a value out of range raises :class:`soilcut.CaseError` with the
+    command line's message.
+
+    Units are those of the case file (see the README's table of keys):
+    lengths in any consistent unit (the paper's cases use mm), angles in
+    degrees, the unit weight in force per length³ of the same unit.
+    """
+
+    __slots__ = ("_text", "_resolved")
+
+    def __init__(self, text: str) -> None:
+        """The case of a case file's TOML ``text`` (same as :meth:`from_toml`)."""
+        if not isinstance(text, str):
+            raise TypeError(
+                f"Case(text) takes the TOML text of a case file, not {type(text).__name__}; "
+                "use Case.from_dict or Case.from_file"
+            )
+        self._resolved = _soilcut.resolve(text)
+        self._text = text
+
+    @classmethod
+    def from_toml(cls, text: str) -> Case:
+        """The case of a case file's TOML text."""
+        return cls(text)
+
+    @classmethod
+    def from_file(cls, path: PathLike) -> Case:
+        """Reads a case file (TOML, UTF-8). Raises ``OSError`` if it cannot be
+        read and :class:`soilcut.CaseError` if it is not a valid case."""
+        with open(path, encoding="utf-8") as f:
+            return cls(f.read())
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any]) -> Case:
+        """The case of nested dicts shaped like the case file, e.g.
+        ``{"name": "a", "model": "original", "blade": {"depth": 20, ...}, ...}``."""
+        return cls(_soilcut.from_dict(dict(d)))
+
+    def set(self, key: str, value: Any) -> Case:
+        """A new case with the dotted ``key`` set to ``value``, as
+        ``soilcut run --set key=value`` sets it (any key of the case file;
+        tables as dicts): ``case.set("soil.friction.peak", 36)``."""
+        return self.update({key: value})
+
+    def update(self, changes: Mapping[str, Any] | Iterable[tuple[str, Any]]) -> Case:
+        """A new case with several dotted keys set, in order:
+        ``case.update({"run.increment": 0.2, "run.travel": 40})``."""
+        pairs = list(changes.items() if isinstance(changes, Mapping) else changes)
+        return Case(_soilcut.set_keys(self._text, pairs))
+
+    def to_toml(self) -> str:
+        """The case file's text (after any :meth:`set`): only the keys given."""
+        return self._text
+
+    def to_dict(self) -> dict[str, Any]:
+        """The case file as nested dicts (only the keys given)."""
+        return _soilcut.to_dict(self._text)
+
+    def resolved(self) -> Case:
+        """The same case with every default filled in: the case of the
+        ``case.resolved.toml`` that ``soilcut run`` writes."""
+        return Case(self._resolved)
+
+    def resolved_toml(self) -> str:
+        """The ``case.resolved.toml`` text that ``soilcut run`` writes."""
+        return self._resolved
+
+    def __getitem__(self, key: str) -> Any:
+        """The value of a dotted key of the resolved case:
+        ``case["soil.repose"]`` (a default filled in if not given)."""
+        value: Any = _soilcut.to_dict(self._resolved)
+        for part in key.split("."):
+            if not isinstance(value, dict) or part not in value:
+                raise KeyError(key)
+            value = value[part]
+        return value
+
+    @property
+    def name(self) -> str:
+        """The case's name (it names the output folder ``out/<name>``)."""
+        return self["name"]
+
+    @property
+    def title(self) -> str:
+        """The case's title (its name if none is given)."""
+        return self["title"]
+
+    @property
+    def model(self) -> str:
+        """``"original"`` (slip line, softening) or ``"refined"`` (shear band)."""
+        return self["model"]
+
+    def __eq__(self, other: object) -> bool:
+        """Two cases are equal when their resolved case files are."""
+        return isinstance(other, Case) and self._resolved == other._resolved
+
+    def __hash__(self) -> int:
+        return hash(self._resolved)
+
+    def __repr__(self) -> str:
+        return f"Case(name={self.name!r}, model={self.model!r})"
+
+    def __reduce__(self):
+        return (Case, (self._text,))
+
+
+def text_of(case: Case | str) -> str:
+    """The TOML text of a :class:`Case` (or of a case file's text)."""
+    if isinstance(case, Case):
+        return case.to_toml()
+    if isinstance(case, str):
+        return Case(case).to_toml()
+    raise TypeError(f"expected a soilcut.Case, not {type(case).__name__}")

@@ -1,0 +1,33 @@
+"""The exceptions of soilcut."""
+
+from __future__ import annotations
+
+
+class CaseError(ValueError):
+    """A case that cannot be read or is out of range.
+
+    The message is the command line's (``soilcut check``): it names the key
+    and the allowed range, e.g. ``blade.depth: must be a finite number > 0
+    (got -1)``. ``key`` is that dotted key, or None when the message is about
+    the whole text (a TOML syntax error) or a study's argument.
+    """
+
+    def __init__(self, message: str, key: str | None = None) -> None:
+        super().__init__(message)
+        self.key = key
+
+    def __reduce__(self):  # keeps `key` across processes (executors)
+        return (type(self), (str(self), self.key))
+
+
+class StepError(ValueError):
+    """An increment without an admissible mechanism (every candidate violates
+    β > 0 and β + φ + φw < 90°): the case cannot be simulated further. The
+    command line reports it as bad input too (exit code 2)."""
+
+    def __init__(self, message: str, key: str | None = None) -> None:
+        super().__init__(message)
+        self.key = key
+
+    def __reduce__(self):
+        return (type(self), (str(self), self.key))

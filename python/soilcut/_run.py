@@ -1,0 +1,126 @@
+"""Runs of a case: ``soilcut.run`` and its result."""
+
+from __future__ import annotations
+
+import json
+import os
+import pathlib
+from typing import Any, NamedTuple, Union
+
+import numpy as np
+
+from . import _soilcut
+from ._case import Case, text_of
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+class Frame(NamedTuple):
+    """The ground surface after ``step`` increments (0: before the first), as
+    ``frames.csv`` holds it: from the blade face to beyond the disturbed
+    zone, thinned to at most 400 nodes. Lengths in the case's unit."""
+
+    step: int
+    u: float
+    """Blade displacement (length)."""
+    x: np.ndarray
+    y: np.ndarray
+    accumulated_shear: np.ndarray
+
+
+def _frames(columns: dict[str, np.ndarray]) -> list[Frame]:
+    ids = columns["frame"]
+    starts = np.flatnonzero(np.r_[True, ids[1:] != ids[:-1]])
+    ends = np.r_[starts[1:], len(ids)]
+    return [
+        Frame(
+            int(columns["step"][a]),
+            float(columns["u"][a]),
+            columns["x"][a:b],
+            columns["y"][a:b],
+            columns["accumulated_shear"][a:b],
+        )
+        for a, b in zip(starts, ends)
+    ]
+
+
+def _frame_of(columns: dict[str, np.ndarray]):
+    try:
+        import pandas as pd
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("a DataFrame needs pandas: pip install pandas") from e
+    return pd.DataFrame(columns)
+
+
+class RunResult:
+    """A finished run: what ``soilcut run`` writes, as Python values.
+
+    Attributes:
+        case: the case that was run.
+        history: one NumPy array per column of ``history.csv``, in its order
+            (``step``, ``u``, ``u_over_d``, ``force``, ``force_norm``,
+            ``force_h``, ``force_v``, ``beta_deg``, ``x_emergence``, ``mass``,
+            ``y_emergence``, ``friction_deg``, ``slip``, ``dilation_deg``,
+            ``dilation_area``, ``depth``): forces per unit width
+            (γ·length², force per unit width), ``force_norm`` = P/(γ0 d²), lengths in the case's
+            unit, angles in degrees. The numbers are the file's exactly.
+        profile: the final ground surface, arrays ``x``, ``y``,
+            ``accumulated_shear`` (length) and ``unit_weight`` (force/length³).
+        summary: the content of ``summary.json`` (peaks, baselines, mass
+            drift, ``wall_time_s``, ...).
+        frames: the surfaces captured for the animation (:class:`Frame`),
+            the deformation pattern through the run.
+
+    A result pickles (to move it between processes or keep it on disk).
+    """
+
+    def __init__(self, case: Case, files: dict[str, str]) -> None:
+        self.case = case
+        self._files = files
+        self.history: dict[str, np.ndarray] = _soilcut.csv_columns(
+            "history.csv", files["history.csv"]
+        )
+        self.history["step"] = self.history["step"].astype(np.int64)
+        self.profile: dict[str, np.ndarray] = _soilcut.csv_columns(
+            "profile.csv", files["profile.csv"]
+        )
+        self.summary: dict[str, Any] = json.loads(files["summary.json"])
+        self.frames: list[Frame] = _frames(_soilcut.csv_columns("frames.csv", files["frames.csv"]))
+
+    def history_frame(self):
+        """``history`` as a pandas DataFrame (needs pandas)."""
+        return _frame_of(self.history)
+
+    def profile_frame(self):
+        """``profile`` as a pandas DataFrame (needs pandas)."""
+        return _frame_of(self.profile)
+
+    def save(self, folder: PathLike, *, pictures: bool = True, force: bool = False) -> pathlib.Path:
+        """Writes the folder ``soilcut run`` writes: ``history.csv``,
+        ``profile.csv``, ``summary.json``, ``case.resolved.toml``,
+        ``frames.csv`` and, with ``pictures``, ``plots/`` and
+        ``animation.gif``. The files appear together or not at all. An
+        existing, non-empty folder is replaced only with ``force=True``
+        (else ``FileExistsError``). Returns the folder."""
+        folder = pathlib.Path(folder)
+        _soilcut.write_run_dir(os.fspath(folder), list(self._files.items()), force, pictures)
+        return folder
+
+    def __repr__(self) -> str:
+        s = self.summary
+        return (
+            f"RunResult({self.case.name!r}: {s['steps']} steps, "
+            f"max force_norm {s['max_force_norm']:.4f} at u/d = {s['u_over_d_at_max']:.3f})"
+        )
+
+
+def run(case: Case) -> RunResult:
+    """Runs ``case`` to its end, as ``soilcut run`` does, and returns the
+    result. The interpreter is released while it runs (other threads go on).
+
+    Raises :class:`soilcut.CaseError` for a case the model cannot simulate
+    and :class:`soilcut.StepError` if an increment has no admissible
+    mechanism.
+    """
+    files = dict(_soilcut.run(text_of(case)))
+    return RunResult(case if isinstance(case, Case) else Case(case), files)

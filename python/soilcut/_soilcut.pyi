@@ -1,0 +1,140 @@
+"""Type stubs of the extension module ``soilcut._soilcut`` (crates/python).
+
+The public names are re-exported by ``soilcut``: :class:`Simulation` and
+:class:`Step`. The functions are the package's internals.
+"""
+
+from collections.abc import Iterator
+from typing import Any
+
+import numpy as np
+
+from ._case import Case
+
+__version__: str
+
+class Step:
+    """One increment (a row of ``history.csv``): forces per unit width
+    (γ·length², force per unit width), lengths in the case's unit, angles in degrees."""
+
+    @property
+    def step(self) -> int:
+        """Increment number, from 1."""
+    @property
+    def u(self) -> float:
+        """Blade displacement u at which the mechanism was evaluated (length)."""
+    @property
+    def force(self) -> float:
+        """Resultant blade force P per unit width (γ·length², force per unit width)."""
+    @property
+    def force_norm(self) -> float:
+        """P/(γ0 d²), d = blade.depth."""
+    @property
+    def force_h(self) -> float:
+        """Horizontal (draft) component of P (γ·length², force per unit width)."""
+    @property
+    def force_v(self) -> float:
+        """Vertical component of P, positive upward (γ·length², force per unit width)."""
+    @property
+    def beta_deg(self) -> float:
+        """β*, the angle of the least-force slip line or band (degrees)."""
+    @property
+    def friction_deg(self) -> float:
+        """Friction angle mobilised on the band (degrees)."""
+    @property
+    def dilation_deg(self) -> float:
+        """Dilation angle on the band (degrees)."""
+    @property
+    def x_emergence(self) -> float:
+        """x of the band's emergence point at the surface (length)."""
+    @property
+    def y_emergence(self) -> float:
+        """y of the emergence point (length)."""
+    @property
+    def depth(self) -> float:
+        """Depth of the blade tip during the increment (length)."""
+    @property
+    def slip(self) -> float:
+        """Slip along the band in this increment (length)."""
+    @property
+    def dilation_area(self) -> float:
+        """Area added by dilation in this increment (length²)."""
+    @property
+    def mass(self) -> float:
+        """Weight of the soil after the increment (γ·length², force per unit width)."""
+
+class Simulation:
+    """A running simulation of one case, stepped from Python (a control
+    loop): ``for step in Simulation(case): ...``. Each step runs with the
+    interpreter released."""
+
+    def __init__(self, case: Case | str) -> None:
+        """Flat ground for ``case`` (a :class:`soilcut.Case` or a case file's
+        text); raises :class:`soilcut.CaseError` for a case the model cannot
+        simulate."""
+    def step(self) -> Step:
+        """Advances the blade by one increment (``run.increment``) and
+        returns its record. Raises :class:`soilcut.StepError` if no
+        mechanism is admissible and ``RuntimeError`` once the travel is
+        reached."""
+    def advance(self, n: int) -> int:
+        """Advances by up to ``n`` increments without returning their
+        records; returns how many were made."""
+    def surface(self) -> dict[str, np.ndarray]:
+        """The free surface from the face to the end of the domain: ``x``,
+        ``y``, ``accumulated_shear`` (length), ``unit_weight``
+        (force/length³)."""
+    @property
+    def blade_position(self) -> float:
+        """Blade displacement u (length): the face is at x = u."""
+    @property
+    def steps_done(self) -> int:
+        """Increments done so far."""
+    @property
+    def steps(self) -> int:
+        """Increments of the whole case."""
+    @property
+    def is_done(self) -> bool:
+        """Whether the case's travel has been reached."""
+    @property
+    def tip_depth(self) -> float:
+        """Depth of the blade tip now (length)."""
+    @property
+    def mass(self) -> float:
+        """Weight of the soil now (γ·length², force per unit width)."""
+    @property
+    def case(self) -> Case:
+        """The case, every default filled in."""
+    def __iter__(self) -> Iterator[Step]: ...
+    def __next__(self) -> Step: ...
+
+def resolve(text: str) -> str: ...
+def set_keys(text: str, pairs: list[tuple[str, Any]]) -> str: ...
+def to_dict(text: str) -> dict[str, Any]: ...
+def from_dict(d: dict[str, Any]) -> str: ...
+def run(text: str) -> list[tuple[str, str]]: ...
+def csv_columns(name: str, text: str) -> dict[str, np.ndarray]: ...
+def write_run_dir(
+    folder: str, files: list[tuple[str, str]], force: bool, pictures: bool
+) -> None: ...
+def analytic(text: str) -> dict[str, dict[str, Any] | None]: ...
+def sweep_points(
+    text: str, varies: list[tuple[str, Any]], sample: str, seed: int
+) -> tuple[list[str], list[list[Any]]]: ...
+def sweep_csv(
+    text: str, varies: list[tuple[str, Any]], sample: str, seed: int, jobs: int
+) -> tuple[str, str]: ...
+def sweep_row(
+    text: str, keys: list[str], values: list[Any], run: int, total: int
+) -> tuple[str, float]: ...
+def fit(
+    text: str,
+    measured: list[tuple[float, float]],
+    free: list[str],
+    bounds: list[tuple[str, float, float]],
+    starts: int,
+    seed: int,
+    iterations: int,
+    jobs: int,
+) -> dict[str, Any]: ...
+def landscape(text: str, at: float) -> tuple[float, str]: ...

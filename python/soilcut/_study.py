@@ -1,0 +1,215 @@
+"""Studies made of many runs: sweeps, calibration, the analytical baselines."""
+
+from __future__ import annotations
+
+import concurrent.futures
+import io
+import os
+from collections.abc import Mapping, Sequence
+from typing import Any, NamedTuple, Union
+
+import numpy as np
+
+from . import _soilcut
+from ._case import Case, text_of
+
+Spec = Union[str, tuple[float, float], tuple[float, float, int], Sequence[Any]]
+
+
+def _read_csv(text: str):
+    try:
+        import pandas as pd
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("soilcut.sweep returns a pandas DataFrame: pip install pandas") from e
+    # The numbers must be the CSV's exactly: pandas < 3 rounds by default.
+    exact = {} if int(pd.__version__.split(".")[0]) >= 3 else {"float_precision": "round_trip"}
+    return pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=[""], **exact)
+
+
+def _sweep_row(text: str, keys: list[str], values: list[Any], run: int, total: int) -> str:
+    """One run of a sweep (on a worker of an executor): its ``sweep.csv`` line."""
+    return _soilcut.sweep_row(text, keys, values, run, total)[0]
+
+
+def sweep(
+    case: Case,
+    vary: Mapping[str, Spec] | None = None,
+    *,
+    samples: Sequence[Mapping[str, Any]] | None = None,
+    sample: str = "grid",
+    seed: int = 0,
+    jobs: int = 0,
+    executor: concurrent.futures.Executor | None = None,
+):
+    """Runs ``case`` for many values of its keys, as ``soilcut sweep`` does,
+    and returns ``sweep.csv`` as a pandas DataFrame: ``run``, the varied keys,
+    ``status`` (``ok`` or ``failed``), ``error``, then the figures of each run
+    (``initial_force_norm``, ``max_force_norm``, ``u_over_d_at_max``,
+    ``final_force_norm``, ``peaks``, ``mean_force_norm_last_half``,
+    ``mass_drift_rel``, ``band_jumps``, ``steps``; forces as P/(γ0 d²)). A
+    run that fails is a row with its error, not an exception.
+
+    Args:
+        vary: dotted key → values: a spec string as ``--vary`` takes it
+            (``"30:45:7"`` grid, ``"30:45"`` interval, ``"0.3,0.6"`` list),
+            a tuple ``(lo, hi, n)`` (grid) or ``(lo, hi)`` (interval, for
+            ``sample="lhs:N"``), or a list of values.
+        samples: instead of ``vary``, the runs themselves: one dict of
+            dotted key → value per run (every dict with the same keys).
+        sample: ``"grid"`` (every combination) or ``"lhs:N"`` (a seeded
+            Latin-hypercube sample of N runs).
+        seed: the seed of the Latin-hypercube sample.
+        jobs: threads when no executor is given (0: one per core). The
+            result does not depend on it.
+        executor: any ``concurrent.futures.Executor`` to run the runs on: a
+            ``ProcessPoolExecutor``, or a cluster's, such as Dask's
+            ``Client.get_executor()`` (dask-jobqueue for Slurm or PBS). The
+            result is the same as on one thread, row for row.
+    """
+    text = text_of(case)
+    if (vary is None) == (samples is None):
+        raise ValueError("give either vary (keys and their values) or samples (one dict per run)")
+    if samples is not None:
+        keys = list(samples[0].keys()) if samples else []
+        if not keys:
+            raise ValueError("samples: give at least one run with at least one key")
+        points = []
+        for i, s in enumerate(samples):
+            if list(s.keys()) != keys:
+                raise ValueError(f"samples[{i}]: the keys differ from those of samples[0]: {keys}")
+            points.append([s[k] for k in keys])
+    else:
+        varies = list(vary.items())
+        if executor is None:
+            csv, _timing = _soilcut.sweep_csv(text, varies, sample, seed, jobs)
+            return _read_csv(csv)
+        keys, points = _soilcut.sweep_points(text, varies, sample, seed)
+    header = _soilcut.sweep_row(text, keys, [], 0, 0)[0]
+    total = len(points)
+    own = executor is None
+    if own:
+        executor = concurrent.futures.ThreadPoolExecutor(max_workers=jobs or os.cpu_count())
+    try:
+        futures = [
+            executor.submit(_sweep_row, text, keys, values, i + 1, total)
+            for i, values in enumerate(points)
+        ]
+        lines = [f.result() for f in futures]
+    finally:
+        if own:
+            executor.shutdown()
+    return _read_csv(header + "".join(lines))
+
+
+class FitResult:
+    """A calibration (``soilcut fit``).
+
+    Attributes:
+        best: the free keys' best values (dotted key → value).
+        best_rms: RMS error of the force at the best values (γ·length², force per unit width).
+        start_rms: RMS error at the case's own values.
+        best_case: the case at the best values (resolved).
+        files: ``fit.md``, ``fit.csv``, ``curves.csv``, ``best.toml`` as
+            ``soilcut fit`` writes them.
+    """
+
+    def __init__(self, d: dict[str, Any]) -> None:
+        self.best: dict[str, float] = d["best"]
+        self.best_rms: float = d["best_rms"]
+        self.start_rms: float = d["start_rms"]
+        self.files: dict[str, str] = d["files"]
+        self.best_case = Case(self.files["best.toml"])
+
+    def __repr__(self) -> str:
+        return (
+            f"FitResult(best={self.best}, best_rms={self.best_rms:.4g}, "
+            f"start_rms={self.start_rms:.4g})"
+        )
+
+
+def _measured(measured: Any) -> list[tuple[float, float]]:
+    if hasattr(measured, "columns") and "u" in measured.columns and "force" in measured.columns:
+        u, p = measured["u"], measured["force"]
+    elif isinstance(measured, tuple) and len(measured) == 2:
+        u, p = measured
+    else:
+        a = np.asarray(measured, dtype=float)
+        if a.ndim != 2 or a.shape[1] != 2:
+            raise ValueError(
+                "measured: expected a DataFrame with columns u, force, a tuple (u, force) "
+                "of arrays or an N×2 array"
+            )
+        u, p = a[:, 0], a[:, 1]
+    u, p = np.asarray(u, dtype=float), np.asarray(p, dtype=float)
+    if u.shape != p.shape or u.ndim != 1:
+        raise ValueError("measured: u and force must be 1-D arrays of one length")
+    return list(zip(u.tolist(), p.tolist()))
+
+
+def fit(
+    case: Case,
+    measured: Any,
+    free: Sequence[str],
+    *,
+    bounds: Mapping[str, tuple[float, float]] | None = None,
+    width: float | None = None,
+    starts: int = 4,
+    seed: int = 0,
+    iterations: int = 100,
+    jobs: int = 0,
+) -> FitResult:
+    """Fits the ``free`` keys of ``case`` to a measured force-displacement
+    curve, as ``soilcut fit`` does (Nelder-Mead from the case's values and
+    ``starts`` − 1 seeded others, on ``jobs`` threads; the result does not
+    depend on ``jobs``).
+
+    Args:
+        measured: the blade displacement u (length) and the force per unit
+            width (γ·length², force per unit width): a DataFrame with columns ``u`` and
+            ``force``, a tuple ``(u, force)`` or an N×2 array.
+        free: dotted keys to fit; they start at the case's values.
+        bounds: dotted key → (lo, hi), replacing a key's default bounds.
+        width: the measured force is the total over this blade width:
+            it is divided by it.
+    """
+    points = _measured(measured)
+    if width is not None:
+        if not (np.isfinite(width) and width > 0):
+            raise ValueError(f"width {width}: must be a finite number > 0")
+        points = [(u, p / width) for u, p in points]
+    bounds_list = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
+    d = _soilcut.fit(text_of(case), points, list(free), bounds_list, starts, seed, iterations, jobs)
+    return FitResult(d)
+
+
+def analytic(case: Case) -> dict[str, dict[str, Any] | None]:
+    """The analytical baselines of the case's initial flat ground, as
+    ``soilcut analytic`` prints them: ``rankine`` (smooth vertical wall),
+    ``coulomb`` (trial wedge, c = a = q = 0) and ``fee`` (Reece's
+    Fundamental Earthmoving Equation, McKyes' factors). Each is a dict of
+    ``force`` (per unit width, γ·length²), ``force_norm`` (P/(γ0 d²)),
+    ``force_h``, ``force_v`` (positive upward), ``failure_angle_deg`` and,
+    for the FEE, ``factors`` (``n_gamma``, ``n_c``, ``n_a``, ``n_q``); None
+    where no wedge is admissible."""
+    return _soilcut.analytic(text_of(case))
+
+
+class Landscape(NamedTuple):
+    """Every candidate mechanism of one increment (``soilcut landscape --at``)."""
+
+    u: float
+    """Blade displacement of the increment (length)."""
+    candidates: dict[str, np.ndarray]
+    """The columns of ``landscape.csv``, one row per candidate, nearest the
+    blade first: ``x_emergence``, ``distance_over_d`` ((x − u)/d),
+    ``y_emergence`` (length), ``beta_deg``, ``force`` (γ·length², force per
+    unit width), ``force_norm`` (P/(γ0 d²)), ``force_over_least``,
+    ``friction_deg``, ``dilation_deg``."""
+
+
+def landscape(case: Case, at: float) -> Landscape:
+    """The force of every candidate band at u/d = ``at`` (0 to
+    run.travel / blade.depth): the increment evaluated first at u ≥ at·d, as
+    ``soilcut landscape --at`` takes it."""
+    u, csv = _soilcut.landscape(text_of(case), float(at))
+    return Landscape(u, _soilcut.csv_columns("landscape.csv", csv))

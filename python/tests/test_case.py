@@ -1,0 +1,118 @@
+"""Cases: round trips (TOML, dict, pickle), --set's keys, and every error
+path with the command line's message."""
+
+from __future__ import annotations
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+from conftest import case_path, run_cli
+
+import soilcut
+
+
+def test_round_trips_keep_the_case(original, refined):
+    for case in (original, refined):
+        assert soilcut.Case.from_toml(case.to_toml()) == case
+        assert soilcut.Case.from_dict(case.to_dict()) == case
+        assert pickle.loads(pickle.dumps(case)) == case
+        assert case.resolved() == case
+        assert case.resolved().resolved_toml() == case.resolved_toml()
+
+
+def test_resolved_fills_the_defaults(original):
+    assert "rake" not in original.to_dict()["blade"]
+    resolved = original.resolved()
+    assert resolved.to_dict()["blade"]["rake"] == 90.0 == original["blade.rake"]
+    assert "cohesion" not in original.to_dict()["soil"]
+    assert resolved.to_dict()["soil"]["cohesion"] == 0.0
+
+
+def test_set_returns_a_new_case_as_the_cli_reads_it(cli, original, tmp_path):
+    changed = original.set("soil.friction.peak", 36).set("run.increment", 0.5)
+    assert original["soil.friction.peak"] == 35.0, "a case never changes"
+    assert changed["soil.friction.peak"] == 36
+    same = original.update({"soil.friction.peak": np.int64(36), "run.increment": np.float64(0.5)})
+    assert same == changed
+    out = tmp_path / "cli"
+    run_cli(
+        cli,
+        "run",
+        str(case_path("paper/original.toml")),
+        "--set",
+        "soil.friction.peak=36",
+        "--set",
+        "run.increment=0.5",
+        "--set",
+        "run.travel=1",
+        "--no-plots",
+        "-q",
+        "--out",
+        str(out),
+    )
+    written = (out / "case.resolved.toml").read_text()
+    assert changed.set("run.travel", 1).resolved_toml() == written
+
+
+def test_tables_and_strings_are_set_like_the_cli(refined):
+    varied = refined.set("choices", {"band_shear": "by-position"})
+    assert varied["choices.band_shear"] == "by-position"
+    assert (
+        refined.set("soil.friction", {"initial": 20, "peak": 36, "residual": 30})[
+            "soil.friction.peak"
+        ]
+        == 36
+    )
+
+
+CLI_ERRORS = [
+    ("blade.depth", -1, "blade.depth=-1"),
+    ("blade.depth", "deep", 'blade.depth="deep"'),
+    ("blade.depth", math.nan, "blade.depth=nan"),
+    ("blade.dpth", 1, "blade.dpth=1"),
+    ("soil.friction.peak", 95, "soil.friction.peak=95"),
+    ("soil.d50", 0.6, "soil.d50=0.6"),
+    ("run.increment", 30, "run.increment=30"),
+]
+
+
+@pytest.mark.parametrize("key,value,cli_set", CLI_ERRORS)
+def test_errors_are_case_errors_with_the_cli_message(cli, original, key, value, cli_set):
+    with pytest.raises(soilcut.CaseError) as raised:
+        original.set(key, value)
+    path = case_path("paper/original.toml")
+    done = run_cli(cli, "check", str(path), "--set", cli_set, check=False)
+    assert done.returncode == 2
+    assert done.stderr == f"error: {path}: {raised.value}\n"
+    assert isinstance(raised.value, ValueError)
+    assert raised.value.key is not None and str(raised.value).startswith(raised.value.key)
+
+
+def test_a_value_python_cannot_express_in_toml_names_the_key(original):
+    with pytest.raises(soilcut.CaseError, match=r"^blade\.depth: a value of type object") as e:
+        original.set("blade.depth", object())
+    assert e.value.key == "blade.depth"
+
+
+def test_text_and_dict_errors(original):
+    with pytest.raises(soilcut.CaseError, match="line 1"):
+        soilcut.Case.from_toml("name = = 1")
+    d = original.to_dict()
+    del d["blade"]["depth"]
+    with pytest.raises(soilcut.CaseError, match="^blade.depth: required key is missing$"):
+        soilcut.Case.from_dict(d)
+    with pytest.raises(soilcut.CaseError, match="unknown key"):
+        soilcut.Case.from_dict({**original.to_dict(), "colour": "red"})
+    with pytest.raises(FileNotFoundError):
+        soilcut.Case.from_file("no/such/case.toml")
+    with pytest.raises(TypeError):
+        soilcut.Case(original.to_dict())
+
+
+def test_errors_pickle_with_their_key(original):
+    with pytest.raises(soilcut.CaseError) as raised:
+        original.set("blade.depth", -1)
+    again = pickle.loads(pickle.dumps(raised.value))
+    assert (str(again), again.key) == (str(raised.value), "blade.depth")

@@ -1,0 +1,196 @@
+"""Sweeps (threads, process pools, a Dask cluster), calibration and the
+analytical baselines, against the command line and closed forms."""
+
+from __future__ import annotations
+
+import concurrent.futures
+import math
+
+import pytest
+from conftest import ROOT, run_cli
+
+import soilcut
+
+pd = pytest.importorskip("pandas")
+
+REFINED = ROOT / "crates/io/testdata/refined.toml"
+SHORT = {"run.travel": 10, "run.increment": 1}
+VARY = {"soil.friction.peak": "31:40", "soil.friction.initial": [20, 33]}
+
+
+def short(refined):
+    return refined.update(SHORT)
+
+
+def read(path):
+    return soilcut._study._read_csv(open(path, encoding="utf-8").read())
+
+
+def test_sweep_is_the_cli_sweep(cli, tmp_path, refined):
+    ours = soilcut.sweep(short(refined), VARY, sample="lhs:6", seed=4, jobs=2)
+    out = tmp_path / "cli"
+    run_cli(
+        cli,
+        "sweep",
+        str(REFINED),
+        "--vary",
+        "soil.friction.peak=31:40",
+        "--vary",
+        "soil.friction.initial=20,33",
+        "--sample",
+        "lhs:6",
+        "--seed",
+        "4",
+        "--set",
+        "run.travel=10",
+        "--set",
+        "run.increment=1",
+        "--out",
+        str(out),
+    )
+    theirs = read(out / "sweep.csv")
+    pd.testing.assert_frame_equal(ours, theirs)
+    assert list(ours["run"]) == list(range(1, 7))
+    above_peak = ours["soil.friction.initial"] > ours["soil.friction.peak"]
+    assert list(ours["status"] == "failed") == list(above_peak), "φc > φp is refused"
+
+
+def test_a_failed_run_is_a_row(refined):
+    frame = soilcut.sweep(short(refined), {"soil.friction.initial": [20, 50]}, jobs=1)
+    assert list(frame["status"]) == ["ok", "failed"]
+    assert frame["error"][1].startswith("soil.friction.initial: ")
+    assert math.isnan(frame["max_force_norm"][1])
+
+
+def test_samples_and_tuples(refined):
+    case = short(refined)
+    grid = soilcut.sweep(case, {"soil.friction.peak": (33, 37, 3)}, jobs=1)
+    assert list(grid["soil.friction.peak"]) == [33.0, 35.0, 37.0]
+    listed = soilcut.sweep(case, samples=[{"soil.friction.peak": v} for v in (33.0, 35.0, 37.0)])
+    pd.testing.assert_frame_equal(grid, listed)
+    peaks = grid["max_force_norm"].to_numpy()
+    assert peaks[0] < peaks[1] < peaks[2], "a stronger soil needs a larger force"
+    with pytest.raises(ValueError, match="lo:hi:n"):
+        soilcut.sweep(case, {"soil.friction.peak": "x:y:z"})
+    with pytest.raises(ValueError, match="either vary"):
+        soilcut.sweep(case)
+
+
+def test_a_process_pool_gives_the_thread_result(refined):
+    case = short(refined)
+    alone = soilcut.sweep(case, VARY, sample="lhs:6", seed=4, jobs=1)
+    with concurrent.futures.ProcessPoolExecutor(2) as pool:
+        spread = soilcut.sweep(case, VARY, sample="lhs:6", seed=4, executor=pool)
+    pd.testing.assert_frame_equal(alone, spread)
+
+
+def test_a_dask_cluster_gives_the_thread_result(refined):
+    distributed = pytest.importorskip("distributed")
+    case = short(refined)
+    alone = soilcut.sweep(case, VARY, sample="lhs:8", seed=1, jobs=1)
+    with (
+        distributed.LocalCluster(
+            processes=True, n_workers=2, threads_per_worker=1, dashboard_address=None
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        spread = soilcut.sweep(case, VARY, sample="lhs:8", seed=1, executor=client.get_executor())
+        workers = client.run(lambda: __import__("os").getpid())
+    assert len(set(workers.values())) == 2, "two worker processes"
+    pd.testing.assert_frame_equal(alone, spread)
+
+
+def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
+    case = short(refined)
+    truth = soilcut.run(case.set("soil.friction.peak", 37.0)).history
+    measured = pd.DataFrame({"u": truth["u"], "force": truth["force"]})
+    result = soilcut.fit(case, measured, ["soil.friction.peak"], starts=2, iterations=30, jobs=1)
+    assert result.best_rms < 0.05 * result.start_rms
+    assert abs(result.best["soil.friction.peak"] - 37.0) < 0.2
+    assert result.best_case["soil.friction.peak"] == result.best["soil.friction.peak"]
+    # The same calibration from the command line writes the same files.
+    csv = tmp_path / "measured.csv"
+    measured.to_csv(csv, index=False)
+    out = tmp_path / "fit"
+    run_cli(
+        cli,
+        "fit",
+        str(REFINED),
+        "--measured",
+        str(csv),
+        "--free",
+        "soil.friction.peak",
+        "--starts",
+        "2",
+        "--iterations",
+        "30",
+        "--jobs",
+        "1",
+        "--set",
+        "run.travel=10",
+        "--set",
+        "run.increment=1",
+        "--out",
+        str(out),
+    )
+    for name in ["fit.csv", "curves.csv", "best.toml"]:
+        assert result.files[name] == (out / name).read_text(), name
+
+
+def test_fit_width_divides_the_measured_force(refined):
+    case = short(refined)
+    truth = soilcut.run(case).history
+    per_width = soilcut.fit(
+        case, (truth["u"], truth["force"]), ["soil.friction.peak"], starts=1, iterations=2, jobs=1
+    )
+    total = soilcut.fit(
+        case,
+        (truth["u"], 50 * truth["force"]),
+        ["soil.friction.peak"],
+        width=50,
+        starts=1,
+        iterations=2,
+        jobs=1,
+    )
+    assert per_width.start_rms == total.start_rms == 0.0
+    with pytest.raises(ValueError, match="width"):
+        soilcut.fit(case, (truth["u"], truth["force"]), ["soil.friction.peak"], width=0)
+
+
+def test_analytic_baselines_are_the_closed_forms(original, cli):
+    b = soilcut.analytic(original)
+    phi = math.radians(original["soil.friction.peak"])
+    d, gamma = original["blade.depth"], original["soil.unit_weight"]
+    kp = math.tan(math.pi / 4 + phi / 2) ** 2
+    assert b["rankine"]["force"] == pytest.approx(0.5 * gamma * d * d * kp, rel=1e-12)
+    assert b["rankine"]["failure_angle_deg"] == pytest.approx(45 - math.degrees(phi) / 2)
+    assert b["coulomb"]["force"] > b["rankine"]["force"], "wall friction adds to the force"
+    assert b["fee"]["force"] == pytest.approx(b["coulomb"]["force"], rel=1e-9)
+    assert b["fee"]["factors"]["n_gamma"] == pytest.approx(b["fee"]["force_norm"], rel=1e-12)
+    printed = run_cli(cli, "analytic", str(ROOT / "cases/paper/original.toml")).stdout
+    row = next(line for line in printed.splitlines() if line.startswith("Coulomb"))
+    assert float(row.split()[-5]) == round(b["coulomb"]["force"], 6)
+
+
+def test_sweep_rows_travel_as_text(refined):
+    # What a worker sends back is the row of sweep.csv itself.
+    frame = soilcut.sweep(short(refined), {"soil.friction.peak": [35]}, jobs=1)
+    again = soilcut._study._read_csv(frame.to_csv(index=False))
+    pd.testing.assert_frame_equal(again, frame)
+
+
+def test_landscape_is_the_cli_landscape(cli, tmp_path, refined):
+    taken = soilcut.landscape(refined, 0.5)
+    out = tmp_path / "ls"
+    run_cli(cli, "landscape", str(REFINED), "--at", "0.5", "--out", str(out))
+    theirs = soilcut._soilcut.csv_columns("landscape.csv", (out / "landscape.csv").read_text())
+    assert list(taken.candidates) == list(theirs)
+    for name, column in theirs.items():
+        assert taken.candidates[name].tolist() == column.tolist(), name
+    least = taken.candidates["force_over_least"].min()
+    assert least == 1.0 and taken.u >= 0.5 * refined["blade.depth"]
+    run = soilcut.run(refined).history
+    step = int(round(taken.u / refined["run.increment"]))
+    assert taken.candidates["force"].min() == run["force"][step], "the least is the run's choice"
+    with pytest.raises(ValueError, match="at must be"):
+        soilcut.landscape(refined, 2.0)
