@@ -1,11 +1,13 @@
 //! Synthetic-truth recovery: curves made by soilcut from seeded random
-//! values of 3 to 5 free keys of the refined model, with 2 % seeded noise,
-//! fitted from starts anywhere in the bounds. Short travel (1.5 d) at a
-//! coarse increment (d/50) so that it is quick.
+//! values of 3 to 5 free keys of the refined model, with 2 % seeded noise
+//! (weighted 1/P², as a user with such noise would), fitted from starts
+//! anywhere in the bounds. Short travel (1.5 d) at a coarse increment
+//! (d/50) so that it is quick.
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use soilcut_io::Override;
+use soilcut_study::fit::problem::Problem;
 use soilcut_study::fit::{Compare, Fit, FitResult, Test};
 use soilcut_study::{no_progress, BaseCase};
 
@@ -152,32 +154,31 @@ fn check(c: &Case, r: &FitResult) -> (Vec<String>, usize) {
 
 #[test]
 fn recovers_every_key_it_calls_determined() {
-    let (mut failures, mut determined) = (Vec::new(), 0);
-    let seeds: u64 = std::env::var("FIT_SEEDS").map_or(3, |s| s.parse().unwrap());
-    for seed in 1..=seeds {
+    let (mut failures, mut determined) = (Vec::new(), Vec::new());
+    for seed in 1..=3 {
         let c = case(seed, 2, 400);
         let r = c.fit.run(&no_progress).unwrap();
         eprintln!(
             "seed {seed}: RMS {} after {} runs",
             r.best.rms, r.evaluations
         );
-        if std::env::var_os("FIT_DEBUG").is_some() {
-            let problem = soilcut_study::fit::problem::Problem::new(&r.tests, r.compare, &r.params);
-            let t = problem.evaluate(&c.truth);
-            let n = r.noise.as_ref().unwrap();
-            eprintln!(
-                "truth RMS {} dchi2 {} threshold {:?}",
-                t.rms,
-                n.chi2(&t) - n.chi2(&r.best),
-                r.threshold
-            );
-        }
+        let problem = Problem::new(&r.tests, r.compare, &r.params);
+        let (t, noise) = (problem.evaluate(&c.truth), r.noise.as_ref().unwrap());
+        eprintln!(
+            "truth: RMS {}, Δχ² {}; threshold {:?}",
+            t.rms,
+            noise.chi2(&t) - noise.chi2(&r.best),
+            r.threshold
+        );
         let (f, d) = check(&c, &r);
         failures.extend(f);
-        determined += d;
+        determined.push(d);
     }
     assert!(failures.is_empty(), "{failures:#?}");
-    assert!(determined >= 3, "only {determined} keys determined");
+    assert!(
+        determined.iter().all(|&d| d >= 1),
+        "keys determined per truth: {determined:?}"
+    );
 }
 
 #[test]
@@ -185,7 +186,7 @@ fn same_files_on_any_number_of_threads() {
     let (mut one, mut two) = (case(7, 1, 48).fit, case(7, 2, 48).fit);
     for f in [&mut one, &mut two] {
         f.polish_iterations = 4;
-        f.profile_grid = 3;
+        f.profile_grid = 2;
     }
     let (a, b) = (
         one.run(&no_progress).unwrap(),
