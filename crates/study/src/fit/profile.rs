@@ -315,3 +315,63 @@ pub fn correlation(
             .collect(),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(x: f64, chi2: f64) -> Point {
+        Point {
+            x: vec![x],
+            sums: Some(vec![chi2]),
+            residuals: None,
+            rms: chi2.sqrt(),
+        }
+    }
+
+    fn interval(chi2: impl Fn(f64) -> f64) -> Profile {
+        let free = Free {
+            key: "soil.friction.peak".into(),
+            start: 5.0,
+            lo: 0.0,
+            hi: 10.0,
+            rule: String::new(),
+        };
+        let noise = Noise {
+            variance: vec![1.0],
+            sigma: vec![1.0],
+        };
+        let points: Vec<Point> = (0..=10).map(|k| point(k as f64, chi2(k as f64))).collect();
+        let mut profile = Profile {
+            points: points.iter().map(|p| (p.x[0], p.clone())).collect(),
+            lower: None,
+            upper: None,
+            bounded: false,
+            determined: false,
+        };
+        profile.bound(0, &free, &points, &noise, 4.0);
+        profile
+    }
+
+    #[test]
+    fn intervals_end_where_a_quadratic_profile_crosses_the_threshold() {
+        // Δχ² = (x − 5)² / 0.5625: crossings of 4 at 3.5 and 6.5, between
+        // grid points (√Δχ² is linear in x).
+        let p = interval(|x| (x - 5.0).powi(2) / 0.5625 + 1.0);
+        assert!((p.lower.unwrap() - 3.5).abs() < 1e-12, "{:?}", p.lower);
+        assert!((p.upper.unwrap() - 6.5).abs() < 1e-12, "{:?}", p.upper);
+        assert!(p.bounded && !p.determined, "wider than ± 1°");
+        let p = interval(|x| 16.0 * (x - 5.0).powi(2));
+        assert!(p.determined, "{:?}..{:?}", p.lower, p.upper);
+    }
+
+    #[test]
+    fn a_flat_profile_is_undetermined() {
+        let p = interval(|x| 0.01 * x);
+        assert_eq!((p.lower, p.upper), (None, None));
+        assert!(!p.bounded && !p.determined);
+        let p = interval(|x| if x < 5.0 { 0.0 } else { 100.0 });
+        assert_eq!(p.lower, None, "reaches the lower bound");
+        assert!(p.upper.is_some() && !p.bounded);
+    }
+}
