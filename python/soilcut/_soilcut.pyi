@@ -132,9 +132,9 @@ def fit(
     measured: list[tuple[float, float]],
     free: list[str],
     bounds: list[tuple[str, float, float]],
-    starts: int,
+    objective: str,
+    budget: tuple[int, int, int, int],
     seed: int,
-    iterations: int,
     jobs: int,
 ) -> dict[str, Any]: ...
 def landscape(text: str, at: float) -> tuple[float, str]: ...

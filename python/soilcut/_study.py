@@ -106,15 +106,20 @@ class FitResult:
 
     Attributes:
         best: the free keys' best values (dotted key → value).
+        intervals: each key's 95 % interval as text (profile likelihood).
+        verdicts: each key's verdict: determined, weakly determined or
+            undetermined by the curve.
         best_rms: RMS error of the force at the best values (γ·length², force per unit width).
         start_rms: RMS error at the case's own values.
         best_case: the case at the best values (resolved).
-        files: ``fit.md``, ``fit.csv``, ``curves.csv``, ``best.toml`` as
-            ``soilcut fit`` writes them.
+        files: ``fit.md``, ``fit.csv``, ``curves.csv``, ``profiles.csv``,
+            ``search.csv``, ``best.toml`` as ``soilcut fit`` writes them.
     """
 
     def __init__(self, d: dict[str, Any]) -> None:
         self.best: dict[str, float] = d["best"]
+        self.intervals: dict[str, str] = d["intervals"]
+        self.verdicts: dict[str, str] = d["verdicts"]
         self.best_rms: float = d["best_rms"]
         self.start_rms: float = d["start_rms"]
         self.files: dict[str, str] = d["files"]
@@ -153,15 +158,20 @@ def fit(
     *,
     bounds: Mapping[str, tuple[float, float]] | None = None,
     width: float | None = None,
-    starts: int = 4,
+    objective: str = "raw",
+    evaluations: int = 1200,
+    population: int = 0,
+    polish: int = 60,
+    profile_points: int = 9,
     seed: int = 0,
-    iterations: int = 100,
     jobs: int = 0,
 ) -> FitResult:
     """Fits the ``free`` keys of ``case`` to a measured force-displacement
-    curve, as ``soilcut fit`` does (Nelder-Mead from the case's values and
-    ``starts`` − 1 seeded others, on ``jobs`` threads; the result does not
-    depend on ``jobs``).
+    curve, as ``soilcut fit`` does: a seeded differential evolution of
+    ``evaluations`` runs over the bounds (``population`` 0: max(16, 8 × keys)),
+    a Nelder-Mead polish of ``polish`` iterations, then each key's profile
+    on ``profile_points`` values for its interval (0: none), on ``jobs``
+    threads; the result does not depend on ``jobs``.
 
     Args:
         measured: the blade displacement u (length) and the force per unit
@@ -171,6 +181,8 @@ def fit(
         bounds: dotted key → (lo, hi), replacing a key's default bounds.
         width: the measured force is the total over this blade width:
             it is divided by it.
+        objective: ``raw``, ``smooth:W`` or ``means:W`` (W a length), as
+            ``soilcut fit --objective``.
     """
     points = _measured(measured)
     if width is not None:
@@ -178,7 +190,8 @@ def fit(
             raise ValueError(f"width {width}: must be a finite number > 0")
         points = [(u, p / width) for u, p in points]
     bounds_list = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
-    d = _soilcut.fit(text_of(case), points, list(free), bounds_list, starts, seed, iterations, jobs)
+    budget = (evaluations, population, polish, profile_points)
+    d = _soilcut.fit(text_of(case), points, list(free), bounds_list, objective, budget, seed, jobs)
     return FitResult(d)
 
 

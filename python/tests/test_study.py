@@ -104,7 +104,8 @@ def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
     case = short(refined)
     truth = soilcut.run(case.set("soil.friction.peak", 37.0)).history
     measured = pd.DataFrame({"u": truth["u"], "force": truth["force"]})
-    result = soilcut.fit(case, measured, ["soil.friction.peak"], starts=2, iterations=30, jobs=1)
+    budget = dict(evaluations=48, population=16, polish=20, profile_points=0)
+    result = soilcut.fit(case, measured, ["soil.friction.peak"], **budget, seed=3, jobs=1)
     assert result.best_rms < 0.05 * result.start_rms
     assert abs(result.best["soil.friction.peak"] - 37.0) < 0.2
     assert result.best_case["soil.friction.peak"] == result.best["soil.friction.peak"]
@@ -120,10 +121,16 @@ def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
         str(csv),
         "--free",
         "soil.friction.peak",
-        "--starts",
-        "2",
-        "--iterations",
-        "30",
+        "--evaluations",
+        "48",
+        "--population",
+        "16",
+        "--polish",
+        "20",
+        "--profile-points",
+        "0",
+        "--seed",
+        "3",
         "--jobs",
         "1",
         "--set",
@@ -140,17 +147,10 @@ def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
 def test_fit_width_divides_the_measured_force(refined):
     case = short(refined)
     truth = soilcut.run(case).history
-    per_width = soilcut.fit(
-        case, (truth["u"], truth["force"]), ["soil.friction.peak"], starts=1, iterations=2, jobs=1
-    )
+    budget = dict(evaluations=16, population=16, polish=2, profile_points=0, jobs=1)
+    per_width = soilcut.fit(case, (truth["u"], truth["force"]), ["soil.friction.peak"], **budget)
     total = soilcut.fit(
-        case,
-        (truth["u"], 50 * truth["force"]),
-        ["soil.friction.peak"],
-        width=50,
-        starts=1,
-        iterations=2,
-        jobs=1,
+        case, (truth["u"], 50 * truth["force"]), ["soil.friction.peak"], width=50, **budget
     )
     assert per_width.start_rms == total.start_rms == 0.0
     with pytest.raises(ValueError, match="width"):

@@ -6,9 +6,11 @@
 use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use soilcut_io::{check_output_dir, read_measured, write_output_dir_then, OutputError, Override};
+use soilcut_io::{
+    check_output_dir, read_measured_curve, write_output_dir_then, OutputError, Override,
+};
 use soilcut_study::converge::{Converge, Refine};
-use soilcut_study::fit::{parse_bounds, Fit};
+use soilcut_study::fit::{parse_bounds, Compare, Fit};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::Sweep;
 use soilcut_study::{BaseCase, StudyError};
@@ -28,9 +30,12 @@ pub const FIT_EXAMPLES: &str = "\
 Examples:
   soilcut fit cases/paper/table1-hs.toml --measured lab.csv \\
       --free soil.friction.initial,soil.friction.peak,soil.peak_shear
-      writes out/table1-hs-fit/{fit.md,fit.csv,curves.csv,best.toml,fit.png}
+      writes out/table1-hs-fit/{fit.md,fit.csv,curves.csv,profiles.csv,search.csv,best.toml,
+      fit.png,profiles.png,search.png}
   soilcut fit case.toml --measured lab.csv --width 50 --free soil.friction.peak \\
-      --bounds soil.friction.peak=30:45 --starts 6 --seed 2";
+      --bounds soil.friction.peak=30:45 --objective smooth:2 --seed 2
+  soilcut fit shallow.toml --measured shallow.csv --also deep.toml=deep.csv \\
+      --free soil.friction.peak,soil.peak_shear --evaluations 2000";
 
 pub const CONVERGE_EXAMPLES: &str = "\
 Examples:
@@ -73,27 +78,42 @@ pub struct SweepArgs {
 pub struct FitArgs {
     #[command(flatten)]
     common: Common,
-    /// The measured curve: CSV with the columns u,force (case units, force per unit width).
+    /// The measured curve of the case: CSV with the columns u,force and
+    /// optionally weight (case units, force per unit width); `,` `;` or tab.
     #[arg(long, value_name = "FILE")]
     measured: PathBuf,
+    /// Another test fitted at once: its case file and measured curve
+    /// (repeatable). The free keys are shared; --set applies to every case.
+    #[arg(long, value_name = "CASE=FILE")]
+    also: Vec<String>,
     /// The keys to fit, comma-separated; they start at the case's values.
     #[arg(long, value_name = "KEY,...", value_delimiter = ',', required = true)]
     free: Vec<String>,
     /// Bounds of a free key, replacing its default (repeatable).
     #[arg(long, value_name = "KEY=LO:HI")]
     bounds: Vec<String>,
-    /// The measured force is the total over this blade width: divide by it.
+    /// The measured forces are totals over this blade width: divide by it.
     #[arg(long, value_name = "W")]
     width: Option<f64>,
-    /// Nelder-Mead starts: the case's values and N − 1 seeded others.
-    #[arg(long, value_name = "N", default_value_t = 4)]
-    starts: usize,
-    /// Seed of the other starts.
+    /// raw, smooth:W (both curves smoothed over a window W) or means:W
+    /// (means over consecutive windows W); W in the case length unit.
+    #[arg(long, value_name = "raw|smooth:W|means:W", default_value = "raw")]
+    objective: String,
+    /// Runs of the global search (differential evolution).
+    #[arg(long, value_name = "N", default_value_t = soilcut_study::fit::EVALUATIONS)]
+    evaluations: usize,
+    /// Population of the search [default: max(16, 8 × free keys)].
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    population: usize,
+    /// Seed of the search. Results do not depend on --jobs.
     #[arg(long, default_value_t = 0)]
     seed: u64,
-    /// Nelder-Mead iterations per start.
-    #[arg(long, value_name = "N", default_value_t = 100)]
-    iterations: u64,
+    /// Nelder-Mead iterations of the polish of the best point.
+    #[arg(long, value_name = "N", default_value_t = soilcut_study::fit::POLISH_ITERATIONS)]
+    polish: u64,
+    /// Grid of each key's profile across its bounds (0: no profiles, no intervals).
+    #[arg(long, value_name = "N", default_value_t = soilcut_study::fit::PROFILE_GRID)]
+    profile_points: usize,
 }
 
 #[derive(Args)]
@@ -145,13 +165,7 @@ impl Common {
     /// The base case, the output folder (checked to be free) and the case name.
     fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
         let path = &self.target.case;
-        let overrides = self
-            .target
-            .set
-            .iter()
-            .map(|s| s.parse::<Override>())
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| Failure::input(path, e))?;
+        let overrides = self.overrides().map_err(|e| Failure::input(path, e))?;
         let base = BaseCase::read(path, overrides).map_err(|e| Failure::input(path, e))?;
         let name = base
             .load(&[])
@@ -161,6 +175,15 @@ impl Common {
         let out = self.target.out_or(&format!("{name}-{study}"));
         check_output_dir(&out, self.target.force).map_err(Failure::output)?;
         Ok((base, out))
+    }
+
+    /// The `--set` overrides.
+    fn overrides(&self) -> Result<Vec<Override>, soilcut_io::InputError> {
+        self.target
+            .set
+            .iter()
+            .map(|s| s.parse::<Override>())
+            .collect()
     }
 
     /// A progress callback: a bar on stderr when it is a terminal.
@@ -211,9 +234,9 @@ fn write_study(
     }
 }
 
-fn text_files(dir: &Path, files: &[(&str, String)]) -> Result<(), StudyError> {
+fn text_files<N: AsRef<str>>(dir: &Path, files: &[(N, String)]) -> Result<(), StudyError> {
     for (name, contents) in files {
-        let path = dir.join(name);
+        let path = dir.join(name.as_ref());
         std::fs::write(&path, contents)
             .map_err(|source| StudyError::Output(OutputError::Io { path, source }))?;
     }
@@ -263,6 +286,22 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
     Ok(())
 }
 
+/// A measured curve as a test of `base`, its forces divided by `width`.
+fn test_of(
+    name: &Path,
+    base: BaseCase,
+    width: Option<f64>,
+) -> Result<soilcut_study::fit::Test, Failure> {
+    let curve = read_measured_curve(name).map_err(|e| Failure::input(name, e))?;
+    let w = width.unwrap_or(1.0);
+    Ok(soilcut_study::fit::Test {
+        name: name.display().to_string(),
+        base,
+        measured: curve.points.iter().map(|&(u, p)| (u, p / w)).collect(),
+        weights: curve.weights,
+    })
+}
+
 pub fn fit(args: FitArgs) -> Result<(), Failure> {
     let c = &args.common;
     let path = &c.target.case;
@@ -274,8 +313,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         .map(|b| parse_bounds(b))
         .collect::<Result<Vec<_>, _>>()
         .map_err(fail)?;
-    let mut measured =
-        read_measured(&args.measured).map_err(|e| Failure::input(&args.measured, e))?;
+    let compare: Compare = args.objective.parse().map_err(fail)?;
     if let Some(w) = args.width {
         if !(w.is_finite() && w > 0.0) {
             return Err(Failure::input(
@@ -283,46 +321,65 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
                 format!("--width {w}: must be a finite number > 0"),
             ));
         }
-        measured.iter_mut().for_each(|p| p.1 /= w);
     }
     let title = base
         .load(&[])
         .map_err(|e| Failure::input(path, e))?
         .case
         .title;
+    let mut tests = vec![test_of(&args.measured, base.clone(), args.width)?];
+    for also in &args.also {
+        let (case, measured) = also
+            .split_once('=')
+            .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
+        let case = Path::new(case);
+        let other = BaseCase::read(case, c.overrides().map_err(|e| Failure::input(path, e))?)
+            .map_err(|e| Failure::input(case, e))?;
+        tests.push(test_of(Path::new(measured), other, args.width)?);
+    }
     let fit = Fit {
-        base,
+        tests,
         free: args.free.clone(),
         bounds,
-        measured,
-        starts: args.starts,
+        compare,
+        evaluations: args.evaluations,
+        population: args.population,
         seed: args.seed,
-        max_iters: args.iterations,
+        polish_iterations: args.polish,
+        profile_grid: args.profile_points,
         jobs: c.jobs,
     };
     let mut summary = String::new();
     write_study(&out, c.target.force, |dir| {
-        let r = fit.run(&c.progress("Nelder-Mead runs"))?;
-        text_files(
-            dir,
-            &[
-                ("fit.md", r.markdown(&title)),
-                ("fit.csv", r.csv()),
-                ("curves.csv", r.curves_csv()),
-                ("best.toml", r.best_toml()),
-            ],
-        )?;
-        r.draw(&dir.join("fit.png"))?;
+        let r = fit.run(&c.progress("runs"))?;
+        let mut files = vec![
+            ("fit.md".to_string(), r.markdown(&title)),
+            ("fit.csv".to_string(), r.csv()),
+            ("curves.csv".to_string(), r.curves_csv()),
+            ("profiles.csv".to_string(), r.profiles_csv()),
+            ("search.csv".to_string(), r.search_csv()),
+        ];
+        files.extend(r.best_tomls());
+        text_files(dir, &files)?;
+        r.draw(dir)?;
         let best: Vec<String> = r
             .params
             .iter()
-            .zip(&r.best)
-            .map(|(p, x)| format!("{} = {x:.4}", p.key))
+            .enumerate()
+            .map(|(j, p)| {
+                format!(
+                    "{} = {:.4} [{}, {}]",
+                    p.key,
+                    r.best.x[j],
+                    r.interval_text(j),
+                    r.verdict(j)
+                )
+            })
             .collect();
         summary = format!(
             "RMS error {:.4} (start {:.4}), {}",
-            r.best_rms,
-            r.start_rms,
+            r.best.rms,
+            r.start.rms,
             best.join(", ")
         );
         Ok(())

@@ -135,6 +135,7 @@ fn fit_and_converge_write_their_files() {
     args.extend(SHORT);
     ok(&soilcut(&args));
     let measured = truth.join("history.csv").display().to_string();
+    let also = format!("{case}={measured}");
     let fit = |out: &Path, jobs: &str| {
         let out = out.display().to_string();
         let mut args = vec![
@@ -142,14 +143,20 @@ fn fit_and_converge_write_their_files() {
             &case,
             "--measured",
             &measured,
+            "--also",
+            &also,
             "--free",
             "soil.friction.peak",
             "--set",
             "soil.friction.peak=38",
-            "--starts",
-            "2",
-            "--iterations",
-            "10",
+            "--objective",
+            "smooth:2",
+            "--evaluations",
+            "16",
+            "--polish",
+            "4",
+            "--profile-points",
+            "3",
             "--jobs",
             jobs,
             "--out",
@@ -161,7 +168,17 @@ fn fit_and_converge_write_their_files() {
     let (a, b) = (tmp.path().join("fa"), tmp.path().join("fb"));
     ok(&fit(&a, "1"));
     ok(&fit(&b, "2"));
-    for file in ["fit.csv", "fit.md", "curves.csv", "best.toml", "fit.png"] {
+    for file in [
+        "fit.csv",
+        "fit.md",
+        "curves.csv",
+        "profiles.csv",
+        "search.csv",
+        "best.toml",
+        "best-2.toml",
+        "fit.png",
+        "search.png",
+    ] {
         assert_eq!(
             std::fs::read(a.join(file)).unwrap(),
             std::fs::read(b.join(file)).unwrap(),

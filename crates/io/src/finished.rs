@@ -2,8 +2,9 @@
 //! `soilcut compare`), and `frames.csv`, the surfaces captured during a run.
 
 use crate::case_file::read_case;
+use crate::csv_text::CsvText;
 use soilcut_model::{Case, ProfilePoint};
-use std::fmt::{self, Write as _};
+use std::fmt;
 use std::path::{Path, PathBuf};
 
 /// Columns of `frames.csv`, in order.
@@ -39,21 +40,15 @@ pub fn frames_csv(frames: &[SurfaceFrame], depth: f64) -> String {
         }
     }
     let end = far + depth;
-    let mut out = String::from(FRAMES_HEADER);
-    out.push('\n');
+    let mut out = CsvText::new(FRAMES_HEADER);
     for (k, f) in frames.iter().enumerate() {
         let shown = f.surface.iter().take_while(|p| p.x <= end).count();
         let stride = shown.div_ceil(FRAME_ROWS).max(1);
         for p in f.surface[..shown].iter().step_by(stride) {
-            writeln!(
-                out,
-                "{k},{},{},{},{},{}",
-                f.step, f.u, p.x, p.y, p.accumulated_shear
-            )
-            .expect("writing to a String");
+            out.row(&[&k, &f.step, &f.u, &p.x, &p.y, &p.accumulated_shear]);
         }
     }
-    out
+    out.finish()
 }
 
 /// Why the files of a run could not be read.

@@ -1,7 +1,7 @@
 //! `landscape.csv`: every candidate mechanism of one increment.
 
+use crate::csv_text::CsvText;
 use soilcut_model::{Candidate, Simulation, StepError};
-use std::fmt::Write as _;
 
 /// Columns of `landscape.csv`, in order.
 pub const LANDSCAPE_HEADER: &str = "x_emergence,distance_over_d,y_emergence,beta_deg,force,force_norm,force_over_least,friction_deg,dilation_deg";
@@ -28,26 +28,21 @@ pub fn landscape_csv(candidates: &[Candidate], u: f64, depth: f64) -> String {
         .iter()
         .map(|c| c.force)
         .fold(f64::INFINITY, f64::min);
-    let mut out = String::with_capacity(160 * (candidates.len() + 1));
-    out.push_str(LANDSCAPE_HEADER);
-    out.push('\n');
+    let mut out = CsvText::new(LANDSCAPE_HEADER);
     for c in candidates {
-        writeln!(
-            out,
-            "{},{},{},{},{},{},{},{},{}",
-            c.x_emergence,
-            (c.x_emergence - u) / depth,
-            c.y_emergence,
-            c.beta_deg,
-            c.force,
-            c.force_norm,
-            c.force / least,
-            c.friction_deg,
-            c.dilation_deg
-        )
-        .expect("writing to a String");
+        out.row(&[
+            &c.x_emergence,
+            &((c.x_emergence - u) / depth),
+            &c.y_emergence,
+            &c.beta_deg,
+            &c.force,
+            &c.force_norm,
+            &(c.force / least),
+            &c.friction_deg,
+            &c.dilation_deg,
+        ]);
     }
-    out
+    out.finish()
 }
 
 /// Columns of `landscape_map.csv`, in order.
@@ -56,12 +51,11 @@ pub const LANDSCAPE_MAP_HEADER: &str = "u_over_d,distance_over_d,force_over_leas
 /// One row per landscape and distance bin: u/d of the landscape, the bin's
 /// start / d, and the least P / P* of its candidates.
 pub fn landscape_map_csv(columns: &[(f64, Vec<(f64, f64)>)]) -> String {
-    let mut out = String::from(LANDSCAPE_MAP_HEADER);
-    out.push('\n');
+    let mut out = CsvText::new(LANDSCAPE_MAP_HEADER);
     for (u, bins) in columns {
         for (start, ratio) in bins {
-            writeln!(out, "{u},{start},{ratio}").expect("writing to a String");
+            out.row(&[u, start, ratio]);
         }
     }
-    out
+    out.finish()
 }

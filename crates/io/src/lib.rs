@@ -7,7 +7,8 @@
 //!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
 //! * [`landscape_csv`]: every candidate mechanism of one increment;
 //!   [`landscape_map_csv`]: landscapes through a run, binned by distance.
-//! * [`read_measured`]: a measured force-displacement curve (`u,force`).
+//! * [`read_measured_curve`]: a measured force-displacement curve (`u,force`,
+//!   optionally `weight`), read with the `csv` crate.
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
 //!   reads a finished run's files back for drawing; [`record_run`] runs a
 //!   simulation capturing the frames.
@@ -17,6 +18,7 @@
 #![warn(missing_docs)]
 
 mod case_file;
+mod csv_text;
 mod error;
 mod finished;
 mod landscape;
@@ -35,7 +37,9 @@ pub use finished::{
 pub use landscape::{
     landscape_at, landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
 };
-pub use measured::{parse_measured, read_measured};
+pub use measured::{
+    parse_measured, parse_measured_curve, read_measured, read_measured_curve, MeasuredCurve,
+};
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,
     HISTORY_HEADER, PROFILE_HEADER,

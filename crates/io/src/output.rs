@@ -4,6 +4,7 @@
 //! case gives bit-identical `history.csv` and `profile.csv`.
 
 use crate::case_file::LoadedCase;
+use crate::csv_text::CsvText;
 use crate::error::OutputError;
 use serde::Serialize;
 use soilcut_model::analytic::{Baseline, Wedge};
@@ -11,7 +12,6 @@ use soilcut_model::summary::{
     sheared_fraction, JUMP_DEPTHS, PEAK_PROMINENCE, SHEARED_REACH_DEPTHS, SHEARED_THRESHOLD,
 };
 use soilcut_model::{ProfilePoint, StepRecord, Summary};
-use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
@@ -52,49 +52,37 @@ impl RunOutput<'_> {
     /// in the README).
     pub fn history_csv(&self) -> String {
         let d = self.loaded.case.blade.depth;
-        let mut out = String::with_capacity(200 * (self.history.len() + 1));
-        out.push_str(HISTORY_HEADER);
-        out.push('\n');
+        let mut out = CsvText::new(HISTORY_HEADER);
         for r in self.history {
-            let u_over_d = r.u / d;
-            writeln!(
-                out,
-                "{},{},{u_over_d},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-                r.step,
-                r.u,
-                r.force,
-                r.force_norm,
-                r.force_h,
-                r.force_v,
-                r.beta_deg,
-                r.x_emergence,
-                r.mass,
-                r.y_emergence,
-                r.friction_deg,
-                r.slip,
-                r.dilation_deg,
-                r.dilation_area,
-                r.depth
-            )
-            .expect("writing to a String");
+            out.row(&[
+                &r.step,
+                &r.u,
+                &(r.u / d),
+                &r.force,
+                &r.force_norm,
+                &r.force_h,
+                &r.force_v,
+                &r.beta_deg,
+                &r.x_emergence,
+                &r.mass,
+                &r.y_emergence,
+                &r.friction_deg,
+                &r.slip,
+                &r.dilation_deg,
+                &r.dilation_area,
+                &r.depth,
+            ]);
         }
-        out
+        out.finish()
     }
 
     /// `profile.csv`: the final surface, one row per node from the face on.
     pub fn profile_csv(&self) -> String {
-        let mut out = String::with_capacity(80 * (self.profile.len() + 1));
-        out.push_str(PROFILE_HEADER);
-        out.push('\n');
+        let mut out = CsvText::new(PROFILE_HEADER);
         for p in self.profile {
-            writeln!(
-                out,
-                "{},{},{},{}",
-                p.x, p.y, p.accumulated_shear, p.unit_weight
-            )
-            .expect("writing to a String");
+            out.row(&[&p.x, &p.y, &p.accumulated_shear, &p.unit_weight]);
         }
-        out
+        out.finish()
     }
 
     /// `summary.json`: the run's figures, the analytical baselines, cost and

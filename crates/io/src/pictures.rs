@@ -15,7 +15,9 @@ pub const ANIMATION: &str = "animation.gif";
 /// A failure: reading the run's files (bad input) or drawing (I/O).
 #[derive(Debug)]
 pub enum PictureError {
+    /// The run's files could not be read.
     Read(RunFilesError),
+    /// A picture could not be drawn or written.
     Draw(PlotError),
 }
 

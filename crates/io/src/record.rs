@@ -46,6 +46,7 @@ pub struct RecordedRun {
     /// (name, contents): history.csv, profile.csv, summary.json,
     /// case.resolved.toml, frames.csv.
     pub files: Vec<(&'static str, String)>,
+    /// The run's summary (as in summary.json).
     pub summary: Summary,
 }
 

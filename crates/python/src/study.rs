@@ -9,7 +9,7 @@ use pyo3::types::{PyDict, PyString, PyTuple};
 use soilcut_io::{landscape_at, landscape_csv};
 use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::Simulation;
-use soilcut_study::fit::Fit;
+use soilcut_study::fit::{Compare, Fit, Test};
 use soilcut_study::sample::{Sample, Values, Vary};
 use soilcut_study::sweep::{Sweep, SweepResult};
 use soilcut_study::{no_progress, BaseCase, StudyError};
@@ -168,8 +168,10 @@ pub fn sweep_row(
     Ok((line.to_string(), wall_time_s))
 }
 
-/// A calibration as `soilcut fit` makes it: the best values, the RMS
-/// errors and the files `fit.md`, `fit.csv`, `curves.csv`, `best.toml`.
+/// A calibration as `soilcut fit` makes it: the best values, their
+/// intervals and verdicts, the RMS errors, and the files `soilcut fit`
+/// writes (`fit.md`, `fit.csv`, `curves.csv`, `profiles.csv`, `search.csv`,
+/// `best.toml`).
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -178,38 +180,58 @@ pub fn fit<'py>(
     measured: Vec<(f64, f64)>,
     free: Vec<String>,
     bounds: Vec<(String, f64, f64)>,
-    starts: usize,
+    objective: &str,
+    budget: (usize, usize, u64, usize),
     seed: u64,
-    iterations: u64,
     jobs: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
     let title = load(py, text)?.case.title;
+    let compare: Compare = objective
+        .parse()
+        .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
+    let (evaluations, population, polish_iterations, profile_grid) = budget;
+    let weights = vec![1.0; measured.len()];
     let fit = Fit {
-        base: base(py, text)?,
+        tests: vec![Test {
+            name: "measured".to_string(),
+            base: base(py, text)?,
+            measured,
+            weights,
+        }],
         free,
         bounds,
-        measured,
-        starts,
+        compare,
+        evaluations,
+        population,
         seed,
-        max_iters: iterations,
+        polish_iterations,
+        profile_grid,
         jobs,
     };
     let r = py
         .detach(|| fit.run(&no_progress))
         .map_err(|e| study_error(py, e))?;
     let out = PyDict::new(py);
-    let best = PyDict::new(py);
-    for (p, x) in r.params.iter().zip(&r.best) {
-        best.set_item(&p.key, x)?;
+    let (best, intervals, verdicts) = (PyDict::new(py), PyDict::new(py), PyDict::new(py));
+    for (j, p) in r.params.iter().enumerate() {
+        best.set_item(&p.key, r.best.x[j])?;
+        intervals.set_item(&p.key, r.interval_text(j))?;
+        verdicts.set_item(&p.key, r.verdict(j))?;
     }
     out.set_item("best", best)?;
-    out.set_item("best_rms", r.best_rms)?;
-    out.set_item("start_rms", r.start_rms)?;
+    out.set_item("intervals", intervals)?;
+    out.set_item("verdicts", verdicts)?;
+    out.set_item("best_rms", r.best.rms)?;
+    out.set_item("start_rms", r.start.rms)?;
     let files = PyDict::new(py);
     files.set_item("fit.md", r.markdown(&title))?;
     files.set_item("fit.csv", r.csv())?;
     files.set_item("curves.csv", r.curves_csv())?;
-    files.set_item("best.toml", r.best_toml())?;
+    files.set_item("profiles.csv", r.profiles_csv())?;
+    files.set_item("search.csv", r.search_csv())?;
+    for (name, toml) in r.best_tomls() {
+        files.set_item(name, toml)?;
+    }
     out.set_item("files", files)?;
     Ok(out)
 }

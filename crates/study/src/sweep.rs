@@ -120,7 +120,7 @@ impl SweepResult {
     /// `error`, then the figures of [`NAMES`] (empty for a failed run).
     pub fn csv(&self) -> String {
         let mut header = vec!["run".to_string()];
-        header.extend(self.keys.iter().map(|k| csv::field(k)));
+        header.extend(self.keys.iter().cloned());
         header.extend(["status".to_string(), "error".to_string()]);
         header.extend(NAMES.iter().map(|n| n.to_string()));
         let mut out = csv::line(&header);
@@ -133,7 +133,7 @@ impl SweepResult {
                     fields.extend(figures.values().iter().map(|&x| csv::number(x)));
                 }
                 Err(e) => {
-                    fields.extend(["failed".to_string(), csv::field(e)]);
+                    fields.extend(["failed".to_string(), e.clone()]);
                     fields.extend(NAMES.iter().map(|_| String::new()));
                 }
             }
