@@ -6,10 +6,10 @@ Usage: python3 validation/compare.py OUT
 OUT holds, for every cut NAME of CUTS, the soilcut runs OUT/NAME-u1 ... OUT/NAME-u5
 (travel 1 d ... 5 d, or fewer: as far as the cut goes), written by
 validation/run.sh. Prints the figures docs/validation.md quotes (markdown
-tables), writes validation/dem/results/cut_NAME_measured.csv (the DEM's
+tables), writes validation/dem/results/cut_*_measured.csv (the DEM's
 resultant force as `soilcut compare` and `soilcut fit` read it: u in mm, force
 per unit width in units of gamma0 mm^2 with gamma0 = 1) and the surface
-pictures docs/img/validation_surface_NAME.svg.
+pictures docs/img/validation_surface_*.svg.
 
 Definitions (the same for soilcut and the DEM):
 - force: resultant blade force per unit width over gamma0 d^2;

@@ -2,7 +2,7 @@
 # The calibration example of issue 12: a synthetic measured curve from
 # Fig. 8b over 2 d (truth φc = 22°, φp = 34°, up = 0.8 with φr = 30°,
 # ur = 2.0), 100 points with 2 % noise, fitted from (26.4°, 40.8°, 0.96)
-# with --seed 1 on 2 threads. Writes docs/studies/calibration-fig8b/
+# with --seed 1 on 2 threads. Writes docs/studies/calibration-fig8b-<increment>/
 # and its measured curve calibration-fig8b.measured.csv.
 # Usage: [INCREMENT=0.254] sh docs/studies/calibration-fig8b.sh [path/to/soilcut] [extra fit options]
 # (INCREMENT: run.increment of truth and fit; default the case's d/500;

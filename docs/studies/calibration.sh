@@ -12,14 +12,14 @@ set -eu
 soilcut=${1:-target/release/soilcut}
 shift || true
 here=docs/studies
-cases=$here/calibration-cases
+case_dir=$here/calibration-cases
 tmp=$(mktemp -d)
 truth="--set soil.friction.initial=22 --set soil.friction.peak=34 --set soil.peak_shear=0.8"
 seed=1
 for depth in shallow deep; do
     # shellcheck disable=SC2086
-    "$soilcut" run "$cases/$depth.toml" $truth --no-plots -q --out "$tmp/$depth"
-    python3 "$here/synthetic_curve.py" "$tmp/$depth/history.csv" "$cases/$depth.measured.csv" \
+    "$soilcut" run "$case_dir/$depth.toml" $truth --no-plots -q --out "$tmp/$depth"
+    python3 "$here/synthetic_curve.py" "$tmp/$depth/history.csv" "$case_dir/$depth.measured.csv" \
         --points 100 --noise 0.02 --seed $seed --weights
     seed=$((seed + 1))
 done
@@ -31,7 +31,7 @@ fit() {
     /usr/bin/time -f "$out: wall %e s, user %U s" "$soilcut" fit "$@" --free $free \
         --seed 1 --jobs 2 --quiet --out "$here/$out" --force
 }
-fit calibration-shallow "$cases/shallow.toml" --measured "$cases/shallow.measured.csv" "$@"
-fit calibration-deep "$cases/deep.toml" --measured "$cases/deep.measured.csv" "$@"
-fit calibration-two-depths "$cases/shallow.toml" --measured "$cases/shallow.measured.csv" \
-    --also "$cases/deep.toml=$cases/deep.measured.csv" "$@"
+fit calibration-shallow "$case_dir/shallow.toml" --measured "$case_dir/shallow.measured.csv" "$@"
+fit calibration-deep "$case_dir/deep.toml" --measured "$case_dir/deep.measured.csv" "$@"
+fit calibration-two-depths "$case_dir/shallow.toml" --measured "$case_dir/shallow.measured.csv" \
+    --also "$case_dir/deep.toml=$case_dir/deep.measured.csv" "$@"

@@ -91,7 +91,7 @@ pub fn default_bounds(key: &str, x: f64) -> Result<(f64, f64), String> {
 }
 
 /// Rules of a case between two keys, (smaller, larger): the first may not
-/// exceed the second (MODEL.md's checks of the soil: φc ≤ φp, φr ≤ φp,
+/// exceed the second (the case's checks of the soil, docs/model.md §4: φc ≤ φp, φr ≤ φp,
 /// up ≤ ur). A proposal that breaks one is an infeasible point of the
 /// search; default bounds keep a free key on the valid side of a fixed one.
 pub const ORDERED: [(&str, &str); 3] = [
