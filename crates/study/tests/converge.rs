@@ -1,6 +1,6 @@
 //! Convergence studies on a short, coarse case.
 
-use soilcut_study::converge::{Converge, Refine, QUANTITIES};
+use soilcut_study::converge::{Converge, ConvergeResult, Refine, QUANTITIES};
 use soilcut_study::{no_progress, BaseCase};
 
 const REFINED: &str = include_str!("../../io/testdata/refined.toml");
@@ -83,25 +83,21 @@ fn the_increment_or_the_node_spacing_alone() {
             .collect(),
     )
     .unwrap();
+    let grid = |r: &ConvergeResult| -> Vec<(f64, f64)> {
+        r.levels
+            .iter()
+            .map(|l| (l.increment, l.node_spacing))
+            .collect()
+    };
     study.refine = Refine::NodeSpacing;
     let r = study.run(&no_progress).unwrap();
-    let grid: Vec<(f64, f64)> = r
-        .levels
-        .iter()
-        .map(|l| (l.increment, l.node_spacing))
-        .collect();
-    assert_eq!(grid, [(0.25, 1.0), (0.25, 0.5), (0.25, 0.25)]);
+    assert_eq!(grid(&r), [(0.25, 1.0), (0.25, 0.5), (0.25, 0.25)]);
     assert!(r
         .markdown()
         .contains("node spacing h/2^k at the case's increment v0"));
     study.refine = Refine::Increment;
     let r = study.run(&no_progress).unwrap();
-    let grid: Vec<(f64, f64)> = r
-        .levels
-        .iter()
-        .map(|l| (l.increment, l.node_spacing))
-        .collect();
-    assert_eq!(grid, [(0.25, 1.0), (0.125, 1.0), (0.0625, 1.0)]);
+    assert_eq!(grid(&r), [(0.25, 1.0), (0.125, 1.0), (0.0625, 1.0)]);
     // h / 8 is below v0: no longer a whole multiple of it.
     study.refine = Refine::NodeSpacing;
     study.levels = 4;
