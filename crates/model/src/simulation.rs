@@ -474,15 +474,16 @@ impl Simulation {
             .collect())
     }
 
-    /// Where the face goes in the next increment: one node every k
-    /// increments, in between offset by a whole number of increments.
-    fn advance(&self) -> Advance {
+    /// How the face moves in the next increment, in which the tip goes
+    /// `deepening` deeper: one node every k increments, in between offset
+    /// by a whole number of increments.
+    fn advance(&self, deepening: f64) -> Advance {
         let k = self.increments_per_node;
         let sub = (self.done + 1) % k;
         let face = self.surface.face;
         Advance {
             increment: self.case.run.increment,
-            deepening: 0.0,
+            deepening,
             face: if sub == 0 { face + 1 } else { face },
             face_offset: sub as f64 / k as f64,
         }
@@ -511,10 +512,7 @@ impl Simulation {
             self.surface.spacing,
             self.surface.offset_of(b),
         );
-        let advance = Advance {
-            deepening,
-            ..self.advance()
-        };
+        let advance = self.advance(deepening);
         let update = self.kinematics.apply(
             &mut self.surface,
             &band,
