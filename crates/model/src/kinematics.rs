@@ -102,20 +102,9 @@ impl Kinematics {
         if advance.increment != surface.spacing {
             return self.coarse(surface, band, choice, choices, rake, advance);
         }
+        let (trench_mass, mass_before) = self.start(surface, band, advance);
         surface.face = advance.face;
         let deepening = advance.deepening;
-        // The strip the blade moves through: soil below the tip's path
-        // (from depth d to d + Δd) stays behind; what lies between that path
-        // and the slip line is pushed up the face (`deepening` adds to the
-        // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
-        // the face less).
-        let trench_area = surface.spacing * (-surface.floor - band.depth - 0.5 * deepening);
-        let trench_mass = surface.unit_weight[band.blade] * trench_area;
-        let mass_before =
-            region_mass(surface, band.blade, band.blade..band.emergence + 1) - trench_mass;
-        self.old_unit_weight.clear();
-        self.old_unit_weight
-            .extend_from_slice(&surface.unit_weight[band.blade..=band.emergence]);
         let motion = BandMotion::new(choice, rake, surface.spacing);
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
@@ -130,6 +119,25 @@ impl Kinematics {
         self.mix_block_columns(surface, band, update.first_band_node);
         band_unit_weight(surface, band, choice, choices, &update, mass_before);
         update
+    }
+
+    /// Before the update: the weight of the soil the tip passes over (left
+    /// in the trench) and the weight from the face to j less it, which the
+    /// update keeps; the unit weights of the face to j are saved.
+    fn start(&mut self, surface: &Surface, band: &Band, advance: Advance) -> (f64, f64) {
+        let (b, j) = (band.blade, band.emergence);
+        // The strip the blade moves through: soil below the tip's path
+        // (from depth d to d + Δd) stays behind; what lies between that path
+        // and the slip line is pushed up the face (`deepening` adds to the
+        // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
+        // the face less).
+        let depth_below = -surface.floor - band.depth - 0.5 * advance.deepening;
+        let trench_mass = surface.unit_weight[b] * (advance.increment * depth_below);
+        let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
+        self.old_unit_weight.clear();
+        self.old_unit_weight
+            .extend_from_slice(&surface.unit_weight[b..=j]);
+        (trench_mass, mass_before)
     }
 
     /// The shear band update; `None` (nothing changed) where the band is too
@@ -231,13 +239,12 @@ impl Kinematics {
         Some(last_block_x)
     }
 
-    /// Heights of nodes after the face `first` and before j from the image
-    /// polyline (linear interpolation).
-    fn resample(&self, surface: &mut Surface, first: usize, j: usize) {
+    /// Heights of nodes b+1..j from the image polyline (linear interpolation).
+    fn resample(&self, surface: &mut Surface, b: usize, j: usize) {
         let mut k = 0;
-        for i in first + 1..j {
+        for i in b + 1..j {
             let x = surface.x(i);
-            while k + 2 < self.image.len() && self.image[k + 1].0 < x {
+            while self.image[k + 1].0 < x {
                 k += 1;
             }
             let ((x0, y0), (x1, y1)) = (self.image[k], self.image[k + 1]);

@@ -17,7 +17,7 @@
 //! that the area is exactly the old area plus the dilation, and the band's
 //! unit weight keeps the weight of soil exact, as on the reference grid.
 
-use super::{band_unit_weight, region_area, region_mass, Advance, BandMotion, Kinematics, Update};
+use super::{band_unit_weight, region_area, Advance, BandMotion, Kinematics, Update};
 use crate::band::Band;
 use crate::case::{BandShearRule, Choices};
 use crate::rake::Rake;
@@ -36,9 +36,7 @@ impl Kinematics {
     ) -> Update {
         let (b, j, v0) = (band.blade, band.emergence, advance.increment);
         let deepening = advance.deepening;
-        let trench_area = v0 * (-surface.floor - band.depth - 0.5 * deepening);
-        let trench_mass = surface.unit_weight[b] * trench_area;
-        let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
+        let (trench_mass, mass_before) = self.start(surface, band, advance);
         let area_before = region_area(surface, b, j + 1);
         self.save(surface, b, j);
         let old_face = (surface.x(b), surface.segment(b));
@@ -116,9 +114,6 @@ impl Kinematics {
         self.old_shear.clear();
         self.old_shear
             .extend_from_slice(&surface.accumulated_shear[b..=j]);
-        self.old_unit_weight.clear();
-        self.old_unit_weight
-            .extend_from_slice(&surface.unit_weight[b..=j]);
     }
 
     /// The block's nodes after its translation by (v0, rise): height,
