@@ -22,10 +22,10 @@ for case in fig5 table1-hs table1-s; do
   run "cases/paper/$case.toml" --out "$out/$case-per-node-formula" --set choices.unit_weight=per-node-formula
 done
 
-# Convergence: the shipped increment (d/500), half and double of it.
+# Convergence: the default increment (d/1000), double and half of it.
 for case in original fig5 table1-hs table1-s; do
   d=$(grep -E '^depth' "cases/paper/$case.toml" | sed 's/[^0-9.]*\([0-9.]*\).*/\1/')
-  for per in 250 1000; do
+  for per in 500 2000; do
     run "cases/paper/$case.toml" --out "$out/$case-d$per" --set "run.increment=$(python3 -c "print($d/$per)")"
   done
 done

@@ -9,8 +9,8 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, Model, Run, Soil,
-    UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
+    default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
+    Choices, Model, Run, Soil, UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 use std::path::Path;
 
@@ -347,7 +347,6 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         .run
         .increment
         .get_or_insert(file.blade.depth / DEFAULT_INCREMENTS_PER_DEPTH);
-    let node_spacing = *file.run.node_spacing.get_or_insert(increment);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
@@ -372,6 +371,26 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             .get_or_insert_with(ChoicesFile::default)
             .choices(),
     };
+    let soil = Soil {
+        unit_weight: soil.unit_weight,
+        friction: AngleLaw {
+            initial,
+            peak: soil.friction.peak,
+            residual: soil.friction.residual,
+        },
+        dilation,
+        peak_shear,
+        residual_shear: soil.residual_shear,
+        repose,
+        band_width,
+        cohesion,
+        surcharge,
+    };
+    let depth = file.blade.depth;
+    let node_spacing = *file
+        .run
+        .node_spacing
+        .get_or_insert_with(|| default_node_spacing(&soil, depth, increment));
     let case = Case {
         name: file.name.clone(),
         title,
@@ -383,21 +402,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             adhesion,
             depth_path: file.blade.depth_path.clone().unwrap_or_default(),
         },
-        soil: Soil {
-            unit_weight: soil.unit_weight,
-            friction: AngleLaw {
-                initial,
-                peak: soil.friction.peak,
-                residual: soil.friction.residual,
-            },
-            dilation,
-            peak_shear,
-            residual_shear: soil.residual_shear,
-            repose,
-            band_width,
-            cohesion,
-            surcharge,
-        },
+        soil,
         run: Run {
             travel: file.run.travel,
             increment,
@@ -503,7 +508,7 @@ mod tests {
     }
 
     #[test]
-    fn increment_and_node_spacing_default_to_a_thousandth_of_the_depth() {
+    fn increment_defaults_to_a_thousandth_of_the_depth_and_nodes_by_the_soil() {
         let text: String = ORIGINAL
             .lines()
             .filter(|l| !l.starts_with("increment"))
@@ -522,6 +527,14 @@ mod tests {
             resolved.contains(&format!("node_spacing = {:?}", d / 1000.0)),
             "{resolved}"
         );
+        // Where the soil does not soften, the nodes default to d / 25 in
+        // whole increments.
+        let hardening = parse_case(&text, &["soil.friction.residual=35".parse().unwrap()]).unwrap();
+        let h = hardening.case.run.node_spacing;
+        assert_eq!(h, 40.0 * d / 1000.0);
+        assert!(hardening
+            .resolved_toml()
+            .contains(&format!("node_spacing = {h:?}")));
         let coarse = parse_case(&text, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
         assert_eq!(coarse.case.run.node_spacing, 0.08);
         assert_eq!(coarse.case.run.increment, d / 1000.0);

@@ -104,8 +104,33 @@ pub struct Soil {
 /// `run.increment` when a case does not give it: v0 = d / 1000, which puts
 /// every unit-window mean force of every paper case within 1 % of the
 /// converged value (docs/performance.md, "Time to accuracy"); the node
-/// spacing defaults to the increment (the reference grid).
+/// spacing defaults to `default_node_spacing`.
 pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1000.0;
+
+/// Node spacings per blade depth of the default coarse grid, used where
+/// the soil never softens: h = d / 25 is within 0.1 % of the converged
+/// window means of Fig. 8b at v0 = d / 1000 (docs/performance.md).
+pub const COARSE_NODES_PER_DEPTH: f64 = 25.0;
+
+/// `run.node_spacing` when a case does not give it, for the increment v0:
+/// the reference grid (h = v0) where the soil softens, as only there does
+/// a coarse grid converge to a limit of its own (docs/model.md §9); else
+/// the whole number of increments nearest below d / 25 (at least one).
+pub fn default_node_spacing(soil: &Soil, depth: f64, increment: f64) -> f64 {
+    if soil.softens() {
+        return increment;
+    }
+    let per_node = (depth / COARSE_NODES_PER_DEPTH / increment).floor();
+    per_node.max(1.0) * increment
+}
+
+impl Soil {
+    /// Whether φ(ut) falls anywhere along the law (φr < φp, or φp < φc).
+    pub fn softens(&self) -> bool {
+        let f = &self.friction;
+        f.residual < f.peak || f.peak < f.initial
+    }
+}
 
 /// How far the blade goes and in what increments.
 #[derive(Clone, Debug, PartialEq)]

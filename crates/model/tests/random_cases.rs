@@ -7,7 +7,9 @@
 mod common;
 
 use soilcut_model::search::TIE_TOLERANCE;
-use soilcut_model::{AngleLaw, Case, Model, Simulation, DEFAULT_INCREMENTS_PER_DEPTH};
+use soilcut_model::{
+    default_node_spacing, AngleLaw, Case, Model, Simulation, DEFAULT_INCREMENTS_PER_DEPTH,
+};
 
 /// A small linear congruential generator: deterministic, no dependency.
 struct Lcg(u64);
@@ -186,5 +188,33 @@ fn the_default_increment_is_converged_on_random_cases() {
         let (default, fine) = (mean_at(DEFAULT_INCREMENTS_PER_DEPTH), mean_at(2000.0));
         let change = (default / fine - 1.0).abs();
         assert!(change < 0.01, "case {k}: {default} vs {fine}: {case:?}");
+    }
+}
+
+/// Where the soil does not soften, the default grid (v0 = d/1000, nodes
+/// every d/25, `default_node_spacing`) is within 1 % of the reference grid
+/// at d/2000 in the mean force of each depth of travel, on random cases.
+#[test]
+fn the_default_coarse_grid_is_converged_where_the_soil_does_not_soften() {
+    let mut rng = Lcg(25);
+    for k in 0..4 {
+        let mut case = random_case(&mut rng);
+        case.soil.friction.residual = case.soil.friction.peak;
+        let d = case.blade.depth;
+        case.run.travel = 2.0 * d;
+        let v0 = d / DEFAULT_INCREMENTS_PER_DEPTH;
+        let h = default_node_spacing(&case.soil, d, v0);
+        assert!(h >= 10.0 * v0, "case {k}: h = {h}");
+        let means_at = |increment: f64, node_spacing: f64| {
+            let mut c = case.clone();
+            c.run.increment = increment;
+            c.run.node_spacing = node_spacing;
+            let (history, _) = common::run(&c);
+            common::window_means(&history, d, 2)
+        };
+        let (default, fine) = (means_at(v0, h), means_at(d / 2000.0, d / 2000.0));
+        for (a, b) in default.iter().zip(&fine) {
+            assert!((a / b - 1.0).abs() < 0.01, "case {k}: {a} vs {b}: {case:?}");
+        }
     }
 }
