@@ -39,8 +39,8 @@ Examples:
 
 pub const CONVERGE_EXAMPLES: &str = "\
 Examples:
-  soilcut converge cases/paper/fig5.toml --levels 4
-      increments v0, v0/2, v0/4, v0/8; writes out/fig5-converge/{converge.md,converge.csv,converge.png,timing.csv}
+  soilcut converge cases/paper/fig5.toml --set run.increment=0.04 --levels 3
+      increments v0, v0/2, v0/4 (d/500 to d/2000); writes out/fig5-converge/{converge.md,converge.csv,converge.png,timing.csv}
   soilcut converge cases/paper/fig5.toml --levels 3 --set run.increment=0.08";
 
 /// Options every study takes.

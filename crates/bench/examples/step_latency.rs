@@ -1,0 +1,45 @@
+//! Latency of one `step()` on a developed pile, as a controller calling
+//! soilcut once per control tick would see it: each paper case at its
+//! defaults is run to u = 3 d, then the next 500 steps are timed one by
+//! one; prints the median, the 99th percentile and the largest, in µs.
+//!
+//! ```sh
+//! cargo run --release -p soilcut-bench --example step_latency
+//! ```
+
+use soilcut_bench::shipped_case;
+use soilcut_model::Simulation;
+use std::time::Instant;
+
+const CASES: [&str; 5] = ["original", "table1-s", "table1-hs", "fig5", "fig8b"];
+const STEPS: usize = 500;
+
+fn main() {
+    println!("| case | d/v0 | d/h | median µs | 99th percentile µs | largest µs |");
+    println!("|---|---|---|---|---|---|");
+    for name in CASES {
+        let case = shipped_case(&format!("paper/{name}.toml"), &[]);
+        let d = case.blade.depth;
+        let mut sim = Simulation::new(&case).expect("a valid shipped case");
+        while sim.blade_position() < 3.0 * d {
+            sim.step().expect("a shipped case runs");
+        }
+        let mut micros: Vec<f64> = (0..STEPS)
+            .map(|_| {
+                let start = Instant::now();
+                sim.step().expect("a shipped case runs");
+                start.elapsed().as_secs_f64() * 1e6
+            })
+            .collect();
+        micros.sort_by(f64::total_cmp);
+        let at = |q: f64| micros[((STEPS - 1) as f64 * q).round() as usize];
+        println!(
+            "| {name} | {:.0} | {:.0} | {:.1} | {:.1} | {:.1} |",
+            d / case.run.increment,
+            d / case.run.node_spacing,
+            at(0.5),
+            at(0.99),
+            at(1.0)
+        );
+    }
+}
