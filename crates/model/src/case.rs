@@ -316,11 +316,6 @@ impl Case {
         self.validate_bin()
     }
 
-    /// `validate` and what the simulation needs beyond the baselines.
-    pub fn validate_simulation(&self) -> Result<(), CaseError> {
-        self.validate()
-    }
-
     /// The end wall must leave the blade room to travel and a mechanism
     /// ahead of it; on the sheared grid of a raked blade a vertical wall is
     /// no fixed node, so it needs a vertical blade.

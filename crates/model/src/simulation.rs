@@ -276,7 +276,7 @@ pub struct Simulation {
 impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
-        case.validate_simulation()?;
+        case.validate()?;
         let (d, dx) = (case.deepest(), case.run.node_spacing);
         let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
