@@ -19,7 +19,7 @@ use soilcut_io::{
     read_case, record_files, write_run_dir, LoadedCase, OutputError, Override, PictureError,
     RecordedRun,
 };
-use soilcut_model::Simulation;
+use soilcut_model::{Case, Simulation};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -247,6 +247,7 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     // Loading validates the case.
     let case = load(path, set)?.case;
+    warn_accuracy(&case, false);
     println!(
         "ok: {}: name {}, model {}, {} steps",
         path.display(),
@@ -257,6 +258,13 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     Ok(())
 }
 
+/// A case that runs but whose grid is known to cost accuracy.
+fn warn_accuracy(case: &Case, quiet: bool) {
+    if let Some(warning) = case.accuracy_warning().filter(|_| !quiet) {
+        eprintln!("warning: {warning}");
+    }
+}
+
 fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let path = target.case.as_path();
     let loaded = load(path, &target.set)?;
@@ -265,6 +273,7 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let force = target.force;
     soilcut_io::check_output_dir(&out, force).map_err(Failure::output)?;
 
+    warn_accuracy(case, quiet);
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
     let RecordedRun { files, summary } =

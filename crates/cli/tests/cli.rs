@@ -472,6 +472,30 @@ fn case_files(dir: &Path, found: &mut Vec<PathBuf>) {
     }
 }
 
+/// Nodes coarser than the increment in softening soil run, with a warning
+/// naming the key; where the soil does not soften they are the default.
+#[test]
+fn coarse_nodes_in_softening_soil_are_warned_about() {
+    let check = |case: &str, set: &[&str]| {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_soilcut"));
+        command.arg("check").arg(workspace().join(case));
+        for s in set {
+            command.args(["--set", s]);
+        }
+        let o = command.output().unwrap();
+        assert_ok(&o);
+        stderr(&o)
+    };
+    let softening = "cases/paper/table1-s.toml";
+    let warned = check(softening, &["run.node_spacing=0.4"]);
+    assert!(
+        warned.starts_with("warning: run.node_spacing = 0.4"),
+        "{warned}"
+    );
+    assert_eq!(check(softening, &[]), "");
+    assert_eq!(check("cases/paper/fig8b.toml", &[]), "");
+}
+
 #[test]
 fn check_accepts_every_case_file() {
     let mut found = Vec::new();
