@@ -16,12 +16,13 @@ degrees, forces per unit width.
 """
 
 from ._case import Case
-from ._errors import CaseError, StepError
+from ._errors import AccuracyWarning, CaseError, StepError
 from ._run import Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
 from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
 
 __all__ = [
+    "AccuracyWarning",
     "Case",
     "CaseError",
     "FitResult",

@@ -31,3 +31,11 @@ class StepError(ValueError):
 
     def __reduce__(self):
         return (type(self), (str(self), self.key))
+
+
+class AccuracyWarning(UserWarning):
+    """A case that runs, on a grid known to cost accuracy: nodes coarser
+    than the increment (``run.node_spacing`` > ``run.increment``) in soil
+    that softens converge to a limit of their own, off the reference grid's
+    by 1-5 % in the window mean forces (``docs/model.md`` §9). ``soilcut
+    run`` prints the same message on stderr."""

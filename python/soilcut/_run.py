@@ -120,7 +120,8 @@ def run(case: Case) -> RunResult:
 
     Raises :class:`soilcut.CaseError` for a case the model cannot simulate
     and :class:`soilcut.StepError` if an increment has no admissible
-    mechanism.
+    mechanism; warns with :class:`soilcut.AccuracyWarning` where the case's
+    grid is known to cost accuracy, as ``soilcut run`` warns on stderr.
     """
     files = dict(_soilcut.run(text_of(case)))
     return RunResult(case if isinstance(case, Case) else Case(case), files)

@@ -71,7 +71,8 @@ class Simulation:
     def __init__(self, case: Case | str) -> None:
         """Flat ground for ``case`` (a :class:`soilcut.Case` or a case file's
         text); raises :class:`soilcut.CaseError` for a case the model cannot
-        simulate."""
+        simulate, and warns with :class:`soilcut.AccuracyWarning` where its
+        grid is known to cost accuracy (as ``soilcut run`` warns)."""
     def step(self) -> Step:
         """Advances the blade by one increment (``run.increment``) and
         returns its record. Raises :class:`soilcut.StepError` if no

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import pickle
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -176,3 +177,14 @@ def test_a_blade_flatter_than_the_repose_runs_in_both_front_ends(cli, original):
     assert soilcut.Simulation(case).step().force > 0
     with pytest.raises(soilcut.CaseError, match="line 1"):
         soilcut.Simulation("name = = 2")
+
+
+def test_coarse_nodes_in_softening_soil_warn_as_the_cli_does(original):
+    coarse = original.update({"run.increment": 0.2, "run.node_spacing": 0.4, "run.travel": 4})
+    with pytest.warns(soilcut.AccuracyWarning, match="run.node_spacing = 0.4"):
+        soilcut.run(coarse)
+    with pytest.warns(soilcut.AccuracyWarning):
+        soilcut.Simulation(coarse)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        soilcut.Simulation(coarse.set("run.node_spacing", 0.2))

@@ -20,6 +20,17 @@ fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> P
     }
 }
 
+/// Warns with `soilcut.AccuracyWarning` where the command line warns on
+/// stderr (`Case::accuracy_warning`).
+pub fn warn_accuracy(py: Python<'_>, case: &soilcut_model::Case) -> PyResult<()> {
+    let Some(message) = case.accuracy_warning() else {
+        return Ok(());
+    };
+    let class = py.import("soilcut._errors")?.getattr("AccuracyWarning")?;
+    let message = std::ffi::CString::new(message)?;
+    PyErr::warn(py, &class, &message, 1)
+}
+
 /// `soilcut.CaseError(message, key)`: the message is the command line's.
 pub fn case_error(py: Python<'_>, e: &InputError) -> PyErr {
     let key = match e {

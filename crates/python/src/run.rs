@@ -18,6 +18,7 @@ use std::path::{Path, PathBuf};
 #[pyfunction]
 pub fn run(py: Python<'_>, text: &str) -> PyResult<Vec<(&'static str, String)>> {
     let loaded = load(py, text)?;
+    crate::errors::warn_accuracy(py, &loaded.case)?;
     let mut sim =
         Simulation::new(&loaded.case).map_err(|e| crate::errors::case_error(py, &e.into()))?;
     detached(py, || Ok(record_files(&loaded, &mut sim, || {})?.files))

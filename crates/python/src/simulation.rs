@@ -32,6 +32,7 @@ impl Simulation {
             Err(_) => case.call_method0("to_toml")?.extract()?,
         };
         let loaded = load(py, &text)?;
+        crate::errors::warn_accuracy(py, &loaded.case)?;
         let sim =
             soilcut_model::Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
         Ok(Simulation {
