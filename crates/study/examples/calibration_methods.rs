@@ -3,8 +3,8 @@
 //! recovery problems of the test suite (`tests/synthetic`): for each
 //! seeded truth (3 to 5 free keys of the refined case, 2 % noise, a start
 //! anywhere in the bounds) and each search seed, the search alone (no
-//! polish, no profiles) with each method's default population, at each
-//! budget of runs.
+//! polish, no profiles) with each method's default population, and CMA-ES
+//! with the population of differential evolution, at each budget of runs.
 //!
 //! A search with a smaller budget is the first runs of the one with the
 //! largest (both methods stop at the last whole generation that fits, and
@@ -34,9 +34,14 @@ use std::fmt::Write as _;
 use std::time::Instant;
 use synthetic::{recovered, Case};
 
-const METHODS: [(Method, &str); 2] = [
-    (Method::DifferentialEvolution, "de"),
-    (Method::CmaEs, "cmaes"),
+/// The searches compared: each method at its default population, and
+/// CMA-ES with the population of differential evolution (`--method cmaes
+/// --population N`), which explores more before it first converges.
+/// (name, method, with the population of differential evolution)
+const METHODS: [(&str, Method, bool); 3] = [
+    ("de", Method::DifferentialEvolution, false),
+    ("cmaes", Method::CmaEs, false),
+    ("cmaes-large", Method::CmaEs, true),
 ];
 
 /// One search cut at one budget.
@@ -54,6 +59,8 @@ struct Row {
     /// Wall time of the whole search (the largest budget).
     wall_s: f64,
     best: Vec<f64>,
+    free: String,
+    truth_values: Vec<f64>,
 }
 
 fn list<T: std::str::FromStr>(text: &str) -> Vec<T> {
@@ -62,7 +69,8 @@ fn list<T: std::str::FromStr>(text: &str) -> Vec<T> {
         .collect()
 }
 
-/// The runs of a search with a budget: its whole generations that fit.
+/// The runs of a search with a budget: its whole generations that fit
+/// (the first generation whatever the budget, as the searches do).
 fn cut(search: &Search, budget: usize) -> usize {
     search
         .generations
@@ -70,7 +78,7 @@ fn cut(search: &Search, budget: usize) -> usize {
         .map(|g| g.evaluations)
         .filter(|&n| n <= budget)
         .max()
-        .unwrap_or(0)
+        .unwrap_or(search.generations[0].evaluations)
 }
 
 /// Runs until the best RMS so far is within 1 % of `reference`.
@@ -89,11 +97,15 @@ fn search(
     pool: &ThreadPool,
     c: &Case,
     problem: &Problem,
-    method: Method,
+    (method, de_sized): (Method, bool),
     seed: u64,
     budget: usize,
 ) -> (Search, f64) {
     let mut fit = c.fit.clone();
+    if de_sized {
+        // The case's fit is by differential evolution: its population.
+        fit.population = c.fit.population(c.keys.len());
+    }
     fit.method = method;
     fit.seed = seed;
     fit.evaluations = budget;
@@ -125,12 +137,12 @@ fn main() {
         let problem = Problem::new(&c.fit.tests, c.fit.compare, &params);
         let truth_rms = problem.evaluate(&c.truth).rms;
         let mut searches = Vec::new();
-        for (method, name) in METHODS {
+        for (name, method, de_sized) in METHODS {
             for &seed in &seeds {
-                let (s, wall) = search(&pool, &c, &problem, method, seed, largest);
+                let (s, wall) = search(&pool, &c, &problem, (method, de_sized), seed, largest);
                 if t == truths[0] && seed == seeds[0] {
                     let least = *budgets.iter().min().expect("a budget");
-                    let (short, _) = search(&pool, &c, &problem, method, seed, least);
+                    let (short, _) = search(&pool, &c, &problem, (method, de_sized), seed, least);
                     assert_eq!(short.points, s.points[..cut(&s, least)], "{name}: a prefix");
                 }
                 eprintln!(
@@ -168,6 +180,8 @@ fn main() {
                     to_one_percent: to_one_percent(points, reference),
                     wall_s: *wall,
                     best: best.x.clone(),
+                    free: c.keys.iter().map(|k| k.0).collect::<Vec<_>>().join(" "),
+                    truth_values: c.truth.clone(),
                 });
             }
         }
@@ -193,10 +207,15 @@ fn runs_csv(rows: &[Row]) -> String {
         "success",
         "runs_to_1pct",
         "search_wall_s",
+        "free",
+        "truth_values",
         "best",
     ]);
     for r in rows {
-        let best: Vec<String> = r.best.iter().map(|x| format!("{x:.4}")).collect();
+        let four = |v: &[f64]| {
+            let v: Vec<String> = v.iter().map(|x| format!("{x:.4}")).collect();
+            v.join(" ")
+        };
         s.push_str(&csv::line(&[
             r.truth.to_string(),
             r.keys.to_string(),
@@ -210,7 +229,9 @@ fn runs_csv(rows: &[Row]) -> String {
             r.success.to_string(),
             r.to_one_percent.map_or(String::new(), |n| n.to_string()),
             format!("{:.2}", r.wall_s),
-            best.join(" "),
+            r.free.clone(),
+            four(&r.truth_values),
+            four(&r.best),
         ]));
     }
     s
@@ -241,7 +262,7 @@ fn summary(rows: &[Row], budgets: &[usize]) -> String {
         "| method | budget | searches | success | best RMS / truth's RMS: median | worst | within 1 % of the least RMS found | runs to get there: median | worst | wall time of the searches (s) |\n|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for &budget in budgets {
-        for (_, name) in METHODS {
+        for (name, ..) in METHODS {
             let these: Vec<&Row> = rows
                 .iter()
                 .filter(|r| r.method == name && r.budget == budget)

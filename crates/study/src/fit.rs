@@ -167,7 +167,9 @@ impl Fit {
         Ok(params)
     }
 
-    fn population(&self, keys: usize) -> usize {
+    /// The population of the search for `keys` free keys (its first
+    /// run's for CMA-ES).
+    pub fn population(&self, keys: usize) -> usize {
         match (self.population, self.method) {
             (0, Method::DifferentialEvolution) => (8 * keys).max(16),
             (0, Method::CmaEs) => cmaes::default_lambda(keys),
