@@ -1,7 +1,7 @@
 //! The measured comparison of the global searches of `soilcut fit`,
 //! differential evolution (`de`) and CMA-ES (`cmaes`), on the synthetic
-//! recovery problems of the test suite (`tests/synthetic`): for each
-//! seeded truth (3 to 5 free keys of the refined case, 2 % noise, a start
+//! recovery problems of the test suite (`crates/study/tests/synthetic`):
+//! for each seeded truth (3 to 5 free keys of the refined case, 2 % noise, a start
 //! anywhere in the bounds) and each search seed, the search alone (no
 //! polish, no profiles) with each method's default population, and CMA-ES
 //! with the population of differential evolution, at each budget of runs.

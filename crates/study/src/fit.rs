@@ -74,6 +74,14 @@ impl FromStr for Method {
 }
 
 impl Method {
+    /// Its name, for the picture of the search.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Method::DifferentialEvolution => "differential evolution",
+            Method::CmaEs => "CMA-ES",
+        }
+    }
+
     /// In words, for the report.
     pub fn describe(&self) -> &'static str {
         match self {

@@ -311,7 +311,7 @@ impl FitResult {
             ],
         };
         draw_panels(
-            &format!("Search: {}", self.method.describe()),
+            &format!("Search: {}", self.method.name()),
             &[panel],
             1,
             &dir.join("search.png"),

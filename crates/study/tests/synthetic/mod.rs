@@ -1,9 +1,9 @@
 //! Synthetic-truth calibration problems, shared by the recovery test
 //! (`tests/fit.rs`) and the comparison of the global searches
-//! (`examples/calibration_methods.rs`): curves made by soilcut from seeded
-//! random values of 3 to 5 free keys of the refined model, with 2 % seeded
-//! noise (weighted 1/P², as a user with such noise would), to be fitted
-//! from a start anywhere in the bounds.
+//! (`crates/study/examples/calibration_methods.rs`): curves made by
+//! soilcut from seeded random values of 3 to 5 free keys of the refined
+//! model, with 2 % seeded noise (weighted 1/P², as a user with such
+//! noise would), to be fitted from a start anywhere in the bounds.
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
