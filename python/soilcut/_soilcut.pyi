@@ -134,6 +134,7 @@ def fit(
     free: list[str],
     bounds: list[tuple[str, float, float]],
     objective: str,
+    method: str,
     budget: tuple[int, int, int, int],
     seed: int,
     jobs: int,

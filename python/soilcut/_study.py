@@ -159,6 +159,7 @@ def fit(
     bounds: Mapping[str, tuple[float, float]] | None = None,
     width: float | None = None,
     objective: str = "raw",
+    method: str = "de",
     evaluations: int = 1200,
     population: int = 0,
     polish: int = 60,
@@ -167,8 +168,9 @@ def fit(
     jobs: int = 0,
 ) -> FitResult:
     """Fits the ``free`` keys of ``case`` to a measured force-displacement
-    curve, as ``soilcut fit`` does: a seeded differential evolution of
-    ``evaluations`` runs over the bounds (``population`` 0: max(16, 8 × keys)),
+    curve, as ``soilcut fit`` does: a seeded global search of
+    ``evaluations`` runs over the bounds (``population`` 0: the method's
+    default),
     a Nelder-Mead polish of ``polish`` iterations, then each key's profile
     on ``profile_points`` values for its interval (0: none), on ``jobs``
     threads; the result does not depend on ``jobs``.
@@ -183,6 +185,8 @@ def fit(
             it is divided by it.
         objective: ``raw``, ``smooth:W`` or ``means:W`` (W a length), as
             ``soilcut fit --objective``.
+        method: the global search, ``de`` (differential evolution) or
+            ``cmaes`` (CMA-ES with restarts), as ``soilcut fit --method``.
     """
     points = _measured(measured)
     if width is not None:
@@ -191,7 +195,9 @@ def fit(
         points = [(u, p / width) for u, p in points]
     bounds_list = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
     budget = (evaluations, population, polish, profile_points)
-    d = _soilcut.fit(text_of(case), points, list(free), bounds_list, objective, budget, seed, jobs)
+    d = _soilcut.fit(
+        text_of(case), points, list(free), bounds_list, objective, method, budget, seed, jobs
+    )
     return FitResult(d)
 
 

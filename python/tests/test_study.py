@@ -151,6 +151,29 @@ def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
     assert without_test_column(python) == without_test_column(command_line)
 
 
+def test_fit_by_cma_es_is_the_cli_fit(tmp_path, cli, refined):
+    case = short(refined)
+    truth = soilcut.run(case.set("soil.friction.peak", 37.0)).history
+    measured = pd.DataFrame({"u": truth["u"], "force": truth["force"]})
+    budget = dict(evaluations=40, population=0, polish=10, profile_points=0)
+    result = soilcut.fit(
+        case, measured, ["soil.friction.peak"], method="cmaes", **budget, seed=5, jobs=2
+    )
+    assert result.best_rms < 0.05 * result.start_rms
+    assert "CMA-ES" in result.files["fit.md"]
+    csv = tmp_path / "measured.csv"
+    measured.to_csv(csv, index=False)
+    out = tmp_path / "fit"
+    args = ["--measured", str(csv), "--free", "soil.friction.peak", "--method", "cmaes"]
+    args += ["--evaluations", "40", "--polish", "10", "--profile-points", "0", "--seed", "5"]
+    args += ["--jobs", "1", "--set", "run.travel=10", "--set", "run.increment=1"]
+    run_cli(cli, "fit", str(REFINED), *args, "--out", str(out))
+    for name in ["fit.csv", "search.csv", "best.toml"]:
+        assert result.files[name] == (out / name).read_text(), name
+    with pytest.raises(ValueError, match="--method pso: expected de .* or cmaes"):
+        soilcut.fit(case, measured, ["soil.friction.peak"], method="pso")
+
+
 def test_fit_width_divides_the_measured_force(refined):
     case = short(refined)
     truth = soilcut.run(case).history

@@ -10,7 +10,7 @@ use soilcut_io::{
     check_output_dir, read_measured_curve, write_output_dir_then, OutputError, Override,
 };
 use soilcut_study::converge::{Converge, Refine};
-use soilcut_study::fit::{parse_bounds, Compare, Fit};
+use soilcut_study::fit::{parse_bounds, Compare, Fit, Method};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::Sweep;
 use soilcut_study::{BaseCase, StudyError};
@@ -99,10 +99,15 @@ pub struct FitArgs {
     /// (means over consecutive windows W); W in the case length unit.
     #[arg(long, value_name = "raw|smooth:W|means:W", default_value = "raw")]
     objective: String,
-    /// Runs of the global search (differential evolution).
+    /// The global search: de (differential evolution) or cmaes (CMA-ES
+    /// with restarts).
+    #[arg(long, value_name = "de|cmaes", default_value = "de")]
+    method: String,
+    /// Runs of the global search.
     #[arg(long, value_name = "N", default_value_t = soilcut_study::fit::EVALUATIONS)]
     evaluations: usize,
-    /// Population of the search [default: max(16, 8 × free keys)].
+    /// Population of the search [default: max(16, 8 × free keys) for de,
+    /// 4 + ⌊3 ln(free keys)⌋ for cmaes's first run, doubled at each restart].
     #[arg(long, value_name = "N", default_value_t = 0)]
     population: usize,
     /// Seed of the search. Results do not depend on --jobs.
@@ -314,6 +319,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         .collect::<Result<Vec<_>, _>>()
         .map_err(fail)?;
     let compare: Compare = args.objective.parse().map_err(fail)?;
+    let method: Method = args.method.parse().map_err(fail)?;
     if let Some(w) = args.width {
         if !(w.is_finite() && w > 0.0) {
             return Err(Failure::input(
@@ -342,6 +348,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         free: args.free.clone(),
         bounds,
         compare,
+        method,
         evaluations: args.evaluations,
         population: args.population,
         seed: args.seed,

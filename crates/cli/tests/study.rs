@@ -91,6 +91,18 @@ fn bad_study_arguments_exit_2() {
     let tmp = tempfile::tempdir().unwrap();
     let case = refined();
     let out = tmp.path().join("x").display().to_string();
+    let bad_method = vec![
+        "fit",
+        &case,
+        "--measured",
+        "lab.csv",
+        "--free",
+        "soil.friction.peak",
+        "--method",
+        "pso",
+        "--out",
+        &out,
+    ];
     for args in [
         vec![
             "sweep",
@@ -112,6 +124,7 @@ fn bad_study_arguments_exit_2() {
             "sweep", &case, "--vary", "x=1,2", "--sample", "lhs:0", "--out", &out,
         ],
         vec!["converge", &case, "--levels", "0", "--out", &out],
+        bad_method.clone(),
     ] {
         let o = soilcut(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
@@ -121,6 +134,11 @@ fn bad_study_arguments_exit_2() {
             "{err}"
         );
     }
+    let err = String::from_utf8_lossy(&soilcut(&bad_method).stderr).to_string();
+    assert!(
+        err.contains("--method pso: expected de (differential evolution) or cmaes (CMA-ES)"),
+        "{err}"
+    );
     assert!(!tmp.path().join("x").exists());
 }
 

@@ -9,7 +9,7 @@ use pyo3::types::{PyDict, PyString, PyTuple};
 use soilcut_io::{landscape_at, landscape_csv};
 use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::Simulation;
-use soilcut_study::fit::{Compare, Fit, Test};
+use soilcut_study::fit::{Compare, Fit, Method, Test};
 use soilcut_study::sample::{Sample, Values, Vary};
 use soilcut_study::sweep::{Sweep, SweepResult};
 use soilcut_study::{no_progress, BaseCase, StudyError};
@@ -181,12 +181,16 @@ pub fn fit<'py>(
     free: Vec<String>,
     bounds: Vec<(String, f64, f64)>,
     objective: &str,
+    method: &str,
     budget: (usize, usize, u64, usize),
     seed: u64,
     jobs: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
     let title = load(py, text)?.case.title;
     let compare: Compare = objective
+        .parse()
+        .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
+    let method: Method = method
         .parse()
         .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
     let (evaluations, population, polish_iterations, profile_grid) = budget;
@@ -201,6 +205,7 @@ pub fn fit<'py>(
         free,
         bounds,
         compare,
+        method,
         evaluations,
         population,
         seed,

@@ -6,21 +6,24 @@
 //! * [`bounds`]: the free keys and their bounds;
 //! * [`search`]: differential evolution over the bounds, in parallel and
 //!   seeded, then a Nelder-Mead polish;
+//! * [`cmaes`]: CMA-ES with restarts, the other global search
+//!   ([`Method`]);
 //! * [`profile`]: profile likelihood of each key (intervals, determined or
 //!   not) and the keys' correlation near the optimum;
 //! * [`calibrate`]: the intervals' threshold, calibrated for the rough
-//!   objective by a parametric bootstrap;
+//!   objective by a wild bootstrap of the best fit's residuals;
 //! * [`report`]: `fit.md`, the CSV files and the pictures.
 
 pub mod bounds;
 pub mod calibrate;
+pub mod cmaes;
 pub mod objective;
 pub mod problem;
 pub mod profile;
 pub mod report;
 pub mod search;
 
-pub use bounds::{default_bounds, free_keys, parse_bounds, Free};
+pub use bounds::{default_bounds, free_keys, is_angle, parse_bounds, Free};
 pub use objective::{interpolate, Compare, Test};
 
 use crate::error::StudyError;
@@ -28,7 +31,8 @@ use crate::run::RunResult;
 use crate::Progress;
 use problem::{Point, Problem};
 use profile::{Noise, Profile};
-use search::{best_of, evolve, polish, Budget, Generation};
+use search::{best_of, evolve, polish, Budget, Generation, Search};
+use std::str::FromStr;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Default runs of the global search (per test).
@@ -44,6 +48,49 @@ const PROFILE_ROUNDS: usize = 2;
 /// Simplex steps of the polish (scaled coordinates).
 const POLISH_STEP: f64 = 0.02;
 
+/// The global search of a fit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// Differential evolution ([`search::evolve`]).
+    #[default]
+    DifferentialEvolution,
+    /// CMA-ES with restarts ([`cmaes::cma_es`]).
+    CmaEs,
+}
+
+impl FromStr for Method {
+    type Err = StudyError;
+
+    /// `de` or `cmaes`.
+    fn from_str(text: &str) -> Result<Self, StudyError> {
+        match text {
+            "de" => Ok(Method::DifferentialEvolution),
+            "cmaes" => Ok(Method::CmaEs),
+            _ => Err(StudyError::Spec(format!(
+                "--method {text}: expected de (differential evolution) or cmaes (CMA-ES)"
+            ))),
+        }
+    }
+}
+
+impl Method {
+    /// Its name, for the picture of the search.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Method::DifferentialEvolution => "differential evolution",
+            Method::CmaEs => "CMA-ES",
+        }
+    }
+
+    /// In words, for the report.
+    pub fn describe(&self) -> &'static str {
+        match self {
+            Method::DifferentialEvolution => "Differential evolution (current-to-pbest/1/bin)",
+            Method::CmaEs => "CMA-ES (restarted with twice the population when converged)",
+        }
+    }
+}
+
 /// A calibration to run.
 #[derive(Clone, Debug)]
 pub struct Fit {
@@ -56,9 +103,13 @@ pub struct Fit {
     pub bounds: Vec<(String, f64, f64)>,
     /// How the simulated and measured curves are compared (the objective).
     pub compare: Compare,
+    /// The global search.
+    pub method: Method,
     /// Runs of the global search (each runs every test).
     pub evaluations: usize,
-    /// Population of the search; 0: max(16, 8 p) for p free keys.
+    /// Population of the search; 0: the method's default, max(16, 8 p)
+    /// for differential evolution and 4 + ⌊3 ln p⌋ for CMA-ES's first
+    /// run, for p free keys.
     pub population: usize,
     /// Seed of the search: the same seed gives the same result.
     pub seed: u64,
@@ -80,6 +131,8 @@ pub struct FitResult {
     pub tests: Vec<Test>,
     /// The objective used.
     pub compare: Compare,
+    /// The global search used.
+    pub method: Method,
     /// At the first case's own values.
     pub start: Point,
     /// The best point found (after the polish).
@@ -122,11 +175,30 @@ impl Fit {
         Ok(params)
     }
 
-    fn population(&self, keys: usize) -> usize {
-        if self.population == 0 {
-            (8 * keys).max(16)
-        } else {
-            self.population
+    /// The population of the search for `keys` free keys (its first
+    /// run's for CMA-ES).
+    pub fn population(&self, keys: usize) -> usize {
+        match (self.population, self.method) {
+            (0, Method::DifferentialEvolution) => (8 * keys).max(16),
+            (0, Method::CmaEs) => cmaes::default_lambda(keys),
+            (n, _) => n,
+        }
+    }
+
+    /// The global search of [`Fit::method`] over `problem` from the free
+    /// keys' starts (the first point run), on the current rayon pool.
+    /// `progress` is called with the number of runs made.
+    pub fn search(&self, problem: &Problem, progress: &(dyn Fn(usize) + Sync)) -> Search {
+        let start: Vec<f64> = problem.params.iter().map(|p| p.start).collect();
+        let first = problem.scaled(&start);
+        let budget = Budget {
+            population: self.population(problem.params.len()),
+            evaluations: self.evaluations,
+            seed: self.seed,
+        };
+        match self.method {
+            Method::DifferentialEvolution => evolve(problem, budget, &first, progress),
+            Method::CmaEs => cmaes::cma_es(problem, budget, &first, progress),
         }
     }
 
@@ -138,7 +210,6 @@ impl Fit {
             t.check()?;
         }
         let problem = Problem::new(&self.tests, self.compare, &params);
-        let start_x: Vec<f64> = params.iter().map(|p| p.start).collect();
         let chains = if self.profile_grid > 0 {
             2 * params.len()
         } else {
@@ -148,14 +219,7 @@ impl Fit {
         progress(0, total);
         let pool = crate::pool(self.jobs)?;
         pool.install(|| {
-            let budget = Budget {
-                population: self.population(params.len()),
-                evaluations: self.evaluations,
-                seed: self.seed,
-            };
-            let search = evolve(&problem, budget, &problem.scaled(&start_x), &|n| {
-                progress(n.min(self.evaluations), total)
-            });
+            let search = self.search(&problem, &|n| progress(n.min(self.evaluations), total));
             let start = search.points[0].clone();
             let mut points = search.points;
             let all_keys: Vec<usize> = (0..params.len()).collect();
@@ -290,6 +354,7 @@ impl Fit {
             params,
             tests: self.tests.clone(),
             compare: self.compare,
+            method: self.method,
             start,
             best,
             search_rms,

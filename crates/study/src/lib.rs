@@ -3,8 +3,8 @@
 //! * [`sweep`]: every combination (grid) or a seeded Latin-hypercube sample
 //!   of case keys, run in parallel, one row of summary figures per run.
 //! * [`fit`]: the free case keys that best match one or more measured
-//!   force-displacement curves (seeded differential evolution, a
-//!   Nelder-Mead polish), with profile-likelihood intervals and which keys
+//!   force-displacement curves (seeded differential evolution or CMA-ES,
+//!   a Nelder-Mead polish), with profile-likelihood intervals and which keys
 //!   the curves determine.
 //! * [`converge`]: one case with the increment halved level after level,
 //!   and which averaged quantities converge (docs/model.md §12).

@@ -1,5 +1,6 @@
-//! The threshold of the intervals, calibrated by a parametric bootstrap
-//! of the likelihood-ratio statistic over the evaluated points.
+//! The threshold of the intervals, calibrated by a wild bootstrap of the
+//! best fit's residuals: the likelihood-ratio statistic over the
+//! evaluated points and a few local refits.
 //!
 //! The objective is rough: a small change of a key moves a band jump by
 //! an increment and the curve with it, so among the many points a search

@@ -32,9 +32,19 @@ impl FitResult {
         let free = &self.params[j];
         match (p.lower, p.upper) {
             (Some(a), Some(b)) => format!("{a:.4} to {b:.4}"),
-            (None, Some(b)) => format!("≤ {b:.4} (reaches the lower bound {})", free.lo),
-            (Some(a), None) => format!("≥ {a:.4} (reaches the upper bound {})", free.hi),
-            (None, None) => format!("the whole range {} to {}", free.lo, free.hi),
+            (None, Some(b)) => format!(
+                "≤ {b:.4} (reaches the lower bound {})",
+                significant(free.lo)
+            ),
+            (Some(a), None) => format!(
+                "≥ {a:.4} (reaches the upper bound {})",
+                significant(free.hi)
+            ),
+            (None, None) => format!(
+                "the whole range {} to {}",
+                significant(free.lo),
+                significant(free.hi)
+            ),
         }
     }
 
@@ -176,14 +186,14 @@ impl FitResult {
                 self.best.x[j],
                 self.interval_text(j),
                 self.verdict(j),
-                p.lo,
-                p.hi,
+                significant(p.lo),
+                significant(p.hi),
                 p.rule
             );
         }
         let _ = writeln!(
             w,
-            "\nRMS error {:.6} at the best values ({} at the case's own values).",
+            "\nRMS error {:.6} at the best values ({:.6} at the case's own values).",
             self.best.rms, self.start.rms
         );
         self.noise_section(w);
@@ -203,7 +213,7 @@ impl FitResult {
         };
         let _ = writeln!(
             w,
-            "\nIntervals by profile likelihood: χ² = Σ_t S_t/σ_t² with each test's noise level σ_t estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {:.2}: the threshold, calibrated for the roughness of the objective by a parametric bootstrap of the best fit's curve with that noise (at least the χ²ₚ 95 % quantile of a smooth model with p free keys: the intervals are the projections of the joint 95 % region). A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n",
+            "\nIntervals by profile likelihood: χ² = Σ_t S_t/σ_t² with each test's noise level σ_t estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {:.2}: the threshold, calibrated for the roughness of the objective by a wild bootstrap (replicate curves made of the best fit's curve plus its residuals with random signs, and how far the evaluated points and short refits undercut each replicate's truth), at least the χ²ₚ 95 % quantile of a smooth model with p free keys: the intervals are the projections of the joint 95 % region. A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n",
             self.threshold.unwrap_or(f64::NAN)
         );
         let _ = writeln!(w, "| test | points | noise level σ (from the residuals) | RMS at best |\n|---|---|---|---|");
@@ -250,7 +260,8 @@ impl FitResult {
         );
         let _ = writeln!(
             w,
-            "Differential evolution (current-to-pbest/1/bin) over the bounds: {} generations, {} runs; best RMS {:.6} in the first generation, {:.6} at the end ({} infeasible members at the start, {} at the end). Nelder-Mead polish: RMS {:.6}. Runs in all (search, polish, profiles): {}.",
+            "{} over the bounds: {} generations, {} runs; best RMS {:.6} in the first generation, {:.6} at the end ({} infeasible points in the first generation, {} in the last). Nelder-Mead polish: RMS {:.6}. Runs in all (search, polish, profiles): {}.",
+            self.method.describe(),
             self.generations.len(),
             last.evaluations,
             first.best_rms,
@@ -295,12 +306,12 @@ impl FitResult {
             x_label: "runs".to_string(),
             y_label: "RMS error".to_string(),
             series: vec![
-                Series::line("best of the population", best),
+                Series::line("best so far", best),
                 Series::line("median", median),
             ],
         };
         draw_panels(
-            "Search: differential evolution",
+            &format!("Search: {}", self.method.name()),
             &[panel],
             1,
             &dir.join("search.png"),
@@ -361,5 +372,36 @@ impl FitResult {
                 }
             })
             .collect()
+    }
+}
+
+/// `x` to 4 significant digits, without trailing zeros: a bound such as
+/// 40.8 − 10 reads 30.8, not 30.799999999999997.
+fn significant(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return x.to_string();
+    }
+    let decimals = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::significant;
+
+    #[test]
+    fn bounds_read_to_four_significant_digits() {
+        assert_eq!(significant(40.8 - 10.0), "30.8");
+        assert_eq!(significant(0.96 * 0.5), "0.48");
+        assert_eq!(significant(-12.345678), "-12.35");
+        assert_eq!(significant(1234567.0), "1234567");
+        assert_eq!(significant(0.000123456), "0.0001235");
+        assert_eq!(significant(90.0), "90");
+        assert_eq!(significant(0.0), "0");
     }
 }

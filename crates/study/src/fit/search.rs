@@ -33,7 +33,7 @@ const PBEST_SHARE: f64 = 0.2;
 const CROSSOVER: f64 = 0.9;
 /// The search stops early when every coordinate of the population lies
 /// within this width (scaled coordinates).
-const SPREAD_STOP: f64 = 1e-4;
+pub(super) const SPREAD_STOP: f64 = 1e-4;
 /// Range of the differential weight F.
 const WEIGHT: (f64, f64) = (0.4, 0.9);
 
@@ -186,7 +186,8 @@ fn spread(members: &[Vec<f64>]) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn generation(points: &[Point], evaluations: usize) -> Generation {
+/// The figures of a generation's points after `evaluations` runs.
+pub(super) fn generation(points: &[Point], evaluations: usize) -> Generation {
     let mut rms: Vec<f64> = points.iter().map(|p| p.rms).collect();
     rms.sort_by(f64::total_cmp);
     Generation {
