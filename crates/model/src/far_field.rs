@@ -93,6 +93,17 @@ where
     }
     let dx = surface.spacing;
     let spacings = (j - input.blade) as f64 - surface.offset_of(input.blade);
+    // The footprint below is at least dB / (tan β Δx) + 2 with
+    // 1 / tan β = Δx (x_j − x_b) / d − cot α (`Rake`): a test without
+    // a square root for the many nodes that fail it.
+    let (least, cut) = (
+        input.band_width * spacings / input.depth,
+        input.band_width * input.rake.cot / dx,
+    );
+    let ahead = (j - undisturbed) as f64;
+    if ahead <= least - cut + 2.0 - 1e-9 * (least + cut + 2.0) {
+        return false;
+    }
     let grid = (input.depth / spacings) / dx;
     let Some(tan_beta) = input.rake.physical(grid) else {
         return false;

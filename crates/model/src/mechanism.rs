@@ -127,7 +127,10 @@ impl FactorTable {
     /// [0, π/2)), with +φw if `rising` and −φw otherwise.
     #[inline]
     pub fn below(&self, phi: f64, rising: bool) -> &ForceFactor {
-        let k = ((phi / Self::STEP) as usize).min(self.entries.len() - 1);
+        // A multiplication, not a division; shrunk by 1e-12 so that
+        // rounding never takes the entry above φ.
+        const BELOW: f64 = (1.0 - 1e-12) / FactorTable::STEP;
+        let k = ((phi * BELOW) as usize).min(self.entries.len() - 1);
         let entry = &self.entries[k];
         if rising {
             &entry.0
