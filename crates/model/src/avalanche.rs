@@ -35,13 +35,16 @@ struct Pool {
 }
 
 impl Pool {
-    fn new(start: usize, weight: f64, weighted: f64) -> Self {
+    /// One node of weight w and value g.
+    fn new(start: usize, w: f64, g: f64) -> Self {
+        let weighted = w * g;
         Pool {
             start,
             len: 1,
-            weight,
+            weight: w,
             weighted,
-            mean: weighted / weight,
+            // (1 · g) / 1 = g exactly: no division for an inner node.
+            mean: if w == 1.0 { g } else { weighted / w },
         }
     }
 
@@ -171,7 +174,7 @@ impl Avalanche {
         for i in window {
             let w = surface.node_weight(i, first);
             let g = sign * surface.height[i] + s * surface.spacings_from(i, first);
-            let mut top = Pool::new(i, w, w * g);
+            let mut top = Pool::new(i, w, g);
             while self.pools.len() > bottom {
                 let below = self.pools.last_mut().expect("a pool below");
                 if below.mean <= top.mean + tolerance {

@@ -44,7 +44,7 @@ impl Band {
         spacing: f64,
         face_offset: f64,
     ) -> Self {
-        let stretch = grid_slope / tan_beta;
+        let stretch = stretch(grid_slope, tan_beta);
         Band {
             blade,
             emergence,
@@ -136,6 +136,17 @@ impl Band {
         } else {
             m as usize
         }
+    }
+}
+
+/// grid slope / tan β, the grid's horizontal stretch of a raked blade; 1
+/// for a vertical blade, taken without a division (x / x = 1 exactly).
+#[inline]
+pub(crate) fn stretch(grid_slope: f64, tan_beta: f64) -> f64 {
+    if grid_slope == tan_beta && tan_beta > 0.0 {
+        1.0
+    } else {
+        grid_slope / tan_beta
     }
 }
 

@@ -3,6 +3,7 @@
 //! γ0, so a candidate's weight is a function of its distance alone and its
 //! band has the fresh soil's angles.
 
+use crate::band::stretch;
 use crate::mechanism::ForceFactor;
 use crate::rake::Rake;
 use crate::search::{BandAngles, Scan, SearchInput, Slope};
@@ -108,7 +109,7 @@ where
     let Some(tan_beta) = input.rake.physical(grid) else {
         return false;
     };
-    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * (grid / tan_beta);
+    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * stretch(grid, tan_beta);
     let footprint = thickness / grid / dx + 2.0;
     (j - undisturbed) as f64 > footprint
 }

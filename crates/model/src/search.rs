@@ -50,9 +50,9 @@
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
 
-use crate::band::Band;
+use crate::band::{stretch, Band};
 use crate::far_field::{far_field_from, FarField};
-use crate::mechanism::{FactorTable, ForceFactor, Loads};
+use crate::mechanism::{Face, FactorTable, ForceFactor, Loads};
 use crate::rake::Rake;
 use crate::surface::Surface;
 
@@ -138,9 +138,10 @@ where
     /// plus α − 90° for a raked blade), radians, and the tan β below which a
     /// block may sink (β + ψ ≤ 0 for some reachable ψ): for the bounds.
     pub walls: (f64, f64),
-    /// tan β below which a block may sink relative to the face (§2.6 of
-    /// docs/model.md): where the sinking face friction must be bounded too.
-    pub sinking_below: f64,
+    /// How the face moves (§2.6 of docs/model.md): below
+    /// `face.sinking_below` a block may sink relative to it, and the
+    /// sinking face friction must be bounded too.
+    pub face: Face,
     /// The shear of coordinates of a raked blade.
     pub rake: Rake,
     /// Band angles of undisturbed ground.
@@ -447,8 +448,13 @@ impl Search {
                     .can_beat(line.weight, t, scan.bar)
             };
             // Which face friction is the lesser depends on the rake (see
-            // `Lower`): where the block may sink, either may be.
-            let may_win = can_beat(true) | (t <= input.sinking_below && can_beat(false));
+            // `Lower`). With the band's dilation known, a block that rises
+            // (`Face::rises`, taken only where it decides) has the rising
+            // one in Eq. (1).
+            let may_win = can_beat(true)
+                || (t <= input.face.sinking_below
+                    && can_beat(false)
+                    && !input.face.rises(t, angles.dilation));
             self.block.kept[kept] = (line, angles);
             kept += usize::from(angles.fresh | !scan.prune | may_win);
         }
@@ -663,7 +669,7 @@ impl Search {
                 let bound =
                     |factor: &ForceFactor| input.loads.force(factor, far.weight(n1), length, t2);
                 let below = |p: Option<f64>| p.is_some_and(|p| p <= scan.bar);
-                let could_sink = t2 <= input.sinking_below;
+                let could_sink = t2 <= input.face.sinking_below;
                 if !scan.prune
                     || below(bound(&fresh_walls.rising))
                     || (could_sink && below(bound(&fresh_walls.sinking)))
@@ -696,7 +702,7 @@ impl Slope {
     /// Physical horizontal length of the slip line reaching `spacings`
     /// node spacings ahead of the tip on the grid.
     pub(crate) fn length(&self, spacings: f64, dx: f64) -> f64 {
-        spacings * dx * (self.grid / self.tan_beta)
+        spacings * dx * stretch(self.grid, self.tan_beta)
     }
 
     fn band(&self, scan: &Scan, j: usize, band_width: f64) -> Band {
@@ -749,7 +755,7 @@ impl Lower {
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         self.rising.can_beat(weight, tan_beta, bar)
-            | (tan_beta <= input.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
+            | (tan_beta <= input.face.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
     }
 }
 
