@@ -115,6 +115,7 @@ impl Band {
     /// surface of slope s at a distance e / (tan β − s) behind j; s is the
     /// secant slope over the flat-ground footprint e / tan β. Exact where the
     /// surface is straight over the footprint.
+    #[inline]
     pub fn footprint(&self, height: &[f64]) -> usize {
         let (j, b) = (self.emergence, self.blade);
         if self.thickness == 0.0 {

@@ -558,6 +558,7 @@ impl Search {
 
     /// Mean angles over the band's footprint, nodes j − m ..= j (the prefix
     /// sums must cover the nodes before j).
+    #[inline]
     fn band_angles(&self, surface: &Surface, band: &Band, fresh: BandAngles) -> BandAngles {
         let (b, j) = (band.blade, band.emergence);
         let m = band.footprint(&surface.height);
