@@ -318,9 +318,14 @@ impl Search {
         if let Some(force) = seed.and_then(|j| self.seed(surface, input, &scan, j)) {
             scan.improve(force);
         }
+        // The least friction angle seen so far and Eq. (1) at it.
         let phi_lo = surface.friction[b];
         let mut bounds = (phi_lo, Lower::new(phi_lo, input));
         let mut j = b + 1;
+        // A block ends before the domain grows or the far field starts, and
+        // both happen only once the block is settled and the scan goes on:
+        // where the scan node by node would have done them (the profile
+        // holds every node the domain grew by).
         loop {
             let end = self.lines(surface, input, &mut scan, &mut bounds, j, max_nodes);
             self.footprints(surface, input, &scan);
