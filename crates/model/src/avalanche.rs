@@ -23,18 +23,37 @@ const SLOPE_TOLERANCE: f64 = 1e-9;
 /// Alternating passes before giving up on the last round-off residue.
 const MAX_PASSES: usize = 64;
 
-/// A pooled run of nodes: first node, node count, Σw, Σw g.
+/// A pooled run of nodes: first node, node count, Σw, Σw g and their
+/// quotient, the pool's mean of g (kept, not recomputed per comparison).
 #[derive(Clone, Copy, Debug)]
 struct Pool {
     start: usize,
     len: usize,
     weight: f64,
     weighted: f64,
+    mean: f64,
 }
 
 impl Pool {
-    fn mean(&self) -> f64 {
-        self.weighted / self.weight
+    /// One node of weight w and value g.
+    fn new(start: usize, w: f64, g: f64) -> Self {
+        let weighted = w * g;
+        Pool {
+            start,
+            len: 1,
+            weight: w,
+            weighted,
+            // (1 · g) / 1 = g exactly: no division for an inner node.
+            mean: if w == 1.0 { g } else { weighted / w },
+        }
+    }
+
+    /// This pool and the run `next` that follows it.
+    fn merge(&mut self, next: &Pool) {
+        self.len += next.len;
+        self.weight += next.weight;
+        self.weighted += next.weighted;
+        self.mean = self.weighted / self.weight;
     }
 }
 
@@ -155,24 +174,16 @@ impl Avalanche {
         for i in window {
             let w = surface.node_weight(i, first);
             let g = sign * surface.height[i] + s * surface.spacings_from(i, first);
-            self.pools.push(Pool {
-                start: i,
-                len: 1,
-                weight: w,
-                weighted: w * g,
-            });
-            while self.pools.len() >= bottom + 2 {
-                let top = self.pools[self.pools.len() - 1];
-                let below = self.pools[self.pools.len() - 2];
-                if below.mean() <= top.mean() + tolerance {
+            let mut top = Pool::new(i, w, g);
+            while self.pools.len() > bottom {
+                let below = self.pools.last_mut().expect("a pool below");
+                if below.mean <= top.mean + tolerance {
                     break;
                 }
-                self.pools.pop();
-                let merged = self.pools.last_mut().expect("two pools");
-                merged.len += top.len;
-                merged.weight += top.weight;
-                merged.weighted += top.weighted;
+                below.merge(&top);
+                top = self.pools.pop().expect("the merged pool");
             }
+            self.pools.push(top);
         }
     }
 
@@ -205,12 +216,13 @@ impl Avalanche {
     /// Replaces the pooled run by the repose line and moves state with soil.
     fn level(&mut self, surface: &mut Surface, first: usize, pool: Pool, s: f64, sign: f64) {
         let range = pool.start..pool.start + pool.len;
+        let mean = pool.mean;
         self.old_height.clear();
         self.old_height
             .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
-            let new = sign * (pool.mean() - s * surface.spacings_from(i, first));
+            let new = sign * (mean - s * surface.spacings_from(i, first));
             let w = surface.node_weight(i, first) * surface.spacing;
             let delta = (new - surface.height[i]) * w;
             if delta < 0.0 {

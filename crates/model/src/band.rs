@@ -44,7 +44,7 @@ impl Band {
         spacing: f64,
         face_offset: f64,
     ) -> Self {
-        let stretch = grid_slope / tan_beta;
+        let stretch = stretch(grid_slope, tan_beta);
         Band {
             blade,
             emergence,
@@ -115,6 +115,7 @@ impl Band {
     /// surface of slope s at a distance e / (tan β − s) behind j; s is the
     /// secant slope over the flat-ground footprint e / tan β. Exact where the
     /// surface is straight over the footprint.
+    #[inline]
     pub fn footprint(&self, height: &[f64]) -> usize {
         let (j, b) = (self.emergence, self.blade);
         if self.thickness == 0.0 {
@@ -136,6 +137,17 @@ impl Band {
         } else {
             m as usize
         }
+    }
+}
+
+/// grid slope / tan β, the grid's horizontal stretch of a raked blade; 1
+/// for a vertical blade, taken without a division (x / x = 1 exactly).
+#[inline]
+pub(crate) fn stretch(grid_slope: f64, tan_beta: f64) -> f64 {
+    if grid_slope == tan_beta && tan_beta > 0.0 {
+        1.0
+    } else {
+        grid_slope / tan_beta
     }
 }
 

@@ -3,6 +3,7 @@
 //! γ0, so a candidate's weight is a function of its distance alone and its
 //! band has the fresh soil's angles.
 
+use crate::band::stretch;
 use crate::mechanism::ForceFactor;
 use crate::rake::Rake;
 use crate::search::{BandAngles, Scan, SearchInput, Slope};
@@ -93,11 +94,22 @@ where
     }
     let dx = surface.spacing;
     let spacings = (j - input.blade) as f64 - surface.offset_of(input.blade);
+    // The footprint below is at least dB / (tan β Δx) + 2 with
+    // 1 / tan β = Δx (x_j − x_b) / d − cot α (`Rake`): a test without
+    // a square root for the many nodes that fail it.
+    let (least, cut) = (
+        input.band_width * spacings / input.depth,
+        input.band_width * input.rake.cot / dx,
+    );
+    let ahead = (j - undisturbed) as f64;
+    if ahead <= least - cut + 2.0 - 1e-9 * (least + cut + 2.0) {
+        return false;
+    }
     let grid = (input.depth / spacings) / dx;
     let Some(tan_beta) = input.rake.physical(grid) else {
         return false;
     };
-    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * (grid / tan_beta);
+    let thickness = input.band_width * (1.0 + tan_beta * tan_beta).sqrt() * stretch(grid, tan_beta);
     let footprint = thickness / grid / dx + 2.0;
     (j - undisturbed) as f64 > footprint
 }

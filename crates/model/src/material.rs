@@ -47,6 +47,11 @@ impl PiecewiseLaw {
     pub fn min(&self) -> f64 {
         self.initial.min(self.peak).min(self.residual)
     }
+
+    /// The largest angle the law can take (radians).
+    pub fn max(&self) -> f64 {
+        self.initial.max(self.peak).max(self.residual)
+    }
 }
 
 /// Friction and dilation laws of one soil.

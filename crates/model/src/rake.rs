@@ -45,6 +45,10 @@ impl Rake {
     /// `None` where the line would not go forward (β ≥ 90°).
     #[inline]
     pub fn physical(&self, grid_slope: f64) -> Option<f64> {
+        if self.cot == 0.0 {
+            // The identity; the same value as the division below gives.
+            return Some(grid_slope);
+        }
         let run = 1.0 - self.cot * grid_slope;
         (run > 0.0).then(|| grid_slope / run)
     }

@@ -37,13 +37,22 @@
 //! blocks (`far_field`), each skipped whole when W(n₁) (P/W)(β(n₂)) cannot
 //! beat the best.
 //!
+//! Blocks (speed without changing the result): the scan takes `BLOCK`
+//! nodes at a time in three passes: the running sums and each line's
+//! weight and first bound; the footprints and the second bound of the
+//! lines that passed; Eq. (1) for those left, in order, up to the stopping
+//! rule. The first two passes use the best force at the block's start,
+//! which the third only lowers, so they reject no line that the scan node
+//! by node would have kept; they hold no branch on their bounds (which
+//! lines pass is data), so the processor overlaps candidates.
+//!
 //! Ties: candidates whose force is within `TIE_TOLERANCE` (relative) of the
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
 
-use crate::band::Band;
+use crate::band::{stretch, Band};
 use crate::far_field::{far_field_from, FarField};
-use crate::mechanism::{FactorTable, ForceFactor, Loads};
+use crate::mechanism::{Face, FactorTable, ForceFactor, Loads};
 use crate::rake::Rake;
 use crate::surface::Surface;
 
@@ -95,6 +104,8 @@ pub struct Search {
     prefix: Vec<[f64; 3]>,
     /// Emergence node of the previous increment (seeds the best force).
     previous: Option<usize>,
+    /// The block of nodes being scanned.
+    block: Block,
     /// Candidates evaluated in full since creation (for benchmarks).
     pub evaluations: u64,
     /// Set while a landscape is being taken.
@@ -127,9 +138,10 @@ where
     /// plus α − 90° for a raked blade), radians, and the tan β below which a
     /// block may sink (β + ψ ≤ 0 for some reachable ψ): for the bounds.
     pub walls: (f64, f64),
-    /// tan β below which a block may sink relative to the face (§2.6 of
-    /// docs/model.md): where the sinking face friction must be bounded too.
-    pub sinking_below: f64,
+    /// How the face moves (§2.6 of docs/model.md): below
+    /// `face.sinking_below` a block may sink relative to it, and the
+    /// sinking face friction must be bounded too.
+    pub face: Face,
     /// The shear of coordinates of a raked blade.
     pub rake: Rake,
     /// Band angles of undisturbed ground.
@@ -191,6 +203,54 @@ impl Scan {
     /// No candidate from weight W on can beat the best (stopping rule).
     fn beyond_reach(&self, weight: f64, min_factor: f64) -> bool {
         weight * min_factor > self.bar
+    }
+}
+
+/// Nodes scanned per block (see `Search::scan`).
+const BLOCK: usize = 128;
+
+/// A candidate's slip line: emergence node, slope and block weight.
+#[derive(Clone, Copy, Debug, Default)]
+struct Line {
+    node: usize,
+    slope: Slope,
+    weight: f64,
+}
+
+/// Where a block of the scan ended.
+enum BlockEnd {
+    /// After `BLOCK` nodes: the next block starts at this node.
+    Next(usize),
+    /// At a node with no neighbour ahead: grow the domain, then go on from it.
+    Grow(usize),
+    /// At the first node of the far field (`far_field`).
+    FarField(usize),
+    /// At the end of the domain, which may not grow.
+    Domain,
+}
+
+/// One block of the scan (see `Search::scan`), reused from step to step.
+#[derive(Clone, Debug, Default)]
+struct Block {
+    /// Its first node.
+    start: usize,
+    /// W_j of each node from `start`, −∞ where the line is not admissible.
+    weight: Vec<f64>,
+    /// The lines of the first pass; the first `near` passed its bound.
+    lines: Vec<Line>,
+    near: usize,
+    /// The lines that passed the second pass's bound, with their band angles.
+    kept: Vec<(Line, BandAngles)>,
+}
+
+impl Block {
+    /// The first node from block index `from` at which the stopping rule
+    /// ends the scan (as an index; the block's length if none).
+    fn first_stop(&self, from: usize, scan: &Scan, min_factor: f64) -> usize {
+        self.weight[from..]
+            .iter()
+            .position(|&w| scan.beyond_reach(w, min_factor))
+            .map_or(self.weight.len(), |k| from + k)
     }
 }
 
@@ -258,47 +318,32 @@ impl Search {
         if let Some(force) = seed.and_then(|j| self.seed(surface, input, &scan, j)) {
             scan.improve(force);
         }
-        let mut phi_lo = surface.friction[b];
-        let mut lower = Lower::new(phi_lo, input);
+        // The least friction angle seen so far and Eq. (1) at it.
+        let phi_lo = surface.friction[b];
+        let mut bounds = (phi_lo, Lower::new(phi_lo, input));
         let mut j = b + 1;
+        // A block ends before the domain grows or the far field starts, and
+        // both happen only once the block is settled and the scan goes on:
+        // where the scan node by node would have done them (the profile
+        // holds every node the domain grew by).
         loop {
-            if far_field_from(surface, input, j) {
-                self.far_field(surface.ground_unit_weight, input, &mut scan, j, max_nodes);
+            let end = self.lines(surface, input, &mut scan, &mut bounds, j, max_nodes);
+            self.footprints(surface, input, &scan);
+            if self.settle(input, &mut scan) {
                 break;
             }
-            // The emergence node always has a neighbour ahead of it.
-            if j + 1 >= surface.len() {
-                if surface.len() >= max_nodes {
+            match end {
+                BlockEnd::Next(next) => j = next,
+                BlockEnd::Grow(next) => {
+                    surface.grow(input.grow_nodes.max(GROW_NODES_MIN));
+                    j = next;
+                }
+                BlockEnd::FarField(j0) => {
+                    self.far_field(surface.ground_unit_weight, input, &mut scan, j0, max_nodes);
                     break;
                 }
-                surface.grow(input.grow_nodes.max(GROW_NODES_MIN));
+                BlockEnd::Domain => break,
             }
-            self.push_prefix(surface, j - 1);
-            if surface.friction[j] < phi_lo || surface.friction[j - 1] < phi_lo {
-                phi_lo = phi_lo.min(surface.friction[j]).min(surface.friction[j - 1]);
-                lower = Lower::new(phi_lo, input);
-            }
-            let k = scan.spacings(j);
-            let rise = surface.height[j] + d;
-            if rise <= scan.r_min * k {
-                let r = rise / k;
-                scan.r_min = r;
-                let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
-                let grid = r / dx;
-                if let Some(tan_beta) = input.rake.physical(grid) {
-                    if !scan.prune || lower.can_beat(weight, tan_beta, scan.bar, input) {
-                        let slope = Slope { grid, tan_beta };
-                        self.evaluate(surface, input, &mut scan, j, slope, weight);
-                    }
-                }
-                if scan.beyond_reach(weight, input.min_factor) {
-                    break;
-                }
-            }
-            let g = surface.unit_weight[j] * scan.node_weight(j);
-            scan.sum_gh += g * rise;
-            scan.sum_gk += g * k;
-            j += 1;
         }
         let choice = self.select(scan.bar);
         self.previous = choice.map(|c| c.node);
@@ -310,35 +355,144 @@ impl Search {
         self.admissible.iter().find(|c| c.force <= bar).copied()
     }
 
-    /// Full evaluation of candidate j: band angles and Eq. (1).
-    fn evaluate<A, F>(
+    /// First pass over a block of up to `BLOCK` nodes from j: the running
+    /// sums, each node's line (admissible or not, and W_j) and the lines that
+    /// pass the bound before the footprint (`Lower`, with the best force at
+    /// the block's start). Stops before a node where the scan must first do
+    /// something else (`BlockEnd`).
+    fn lines<A, F>(
         &mut self,
         surface: &Surface,
         input: &SearchInput<A, F>,
         scan: &mut Scan,
-        j: usize,
-        slope: Slope,
-        weight: f64,
-    ) where
+        (phi_lo, lower): &mut (f64, Lower),
+        mut j: usize,
+        max_nodes: usize,
+    ) -> BlockEnd
+    where
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        self.evaluations += 1;
-        let band = slope.band(scan, j, input.band_width);
-        let angles = (input.angles)(self.band_angles(surface, &band, input.fresh));
-        let t = slope.tan_beta;
-        let can_beat = |rising| {
-            input
-                .table
-                .below(angles.friction, rising)
-                .can_beat(weight, t, scan.bar)
-        };
-        // Which face friction is the lesser depends on the rake (see
-        // `Lower`): where the block may sink, either may be.
-        let may_win = || can_beat(true) || (t <= input.sinking_below && can_beat(false));
-        if angles.fresh || !scan.prune || may_win() {
-            self.consider(input, scan, j, slope, weight, angles);
+        let (d, dx) = (scan.d, scan.dx);
+        self.block.start = j;
+        self.block.weight.clear();
+        self.block.lines.resize(BLOCK, Line::default());
+        let mut near = 0;
+        let limit = j + BLOCK;
+        while j < limit {
+            if far_field_from(surface, input, j) {
+                self.block.near = near;
+                return BlockEnd::FarField(j);
+            }
+            // The emergence node always has a neighbour ahead of it.
+            if j + 1 >= surface.len() {
+                self.block.near = near;
+                return if surface.len() >= max_nodes {
+                    BlockEnd::Domain
+                } else {
+                    BlockEnd::Grow(j)
+                };
+            }
+            self.push_prefix(surface, j - 1);
+            if surface.friction[j] < *phi_lo || surface.friction[j - 1] < *phi_lo {
+                *phi_lo = phi_lo.min(surface.friction[j]).min(surface.friction[j - 1]);
+                *lower = Lower::new(*phi_lo, input);
+            }
+            let k = scan.spacings(j);
+            let rise = surface.height[j] + d;
+            // Inadmissible lines never stop the scan.
+            let mut stop_weight = f64::NEG_INFINITY;
+            if rise <= scan.r_min * k {
+                let r = rise / k;
+                scan.r_min = r;
+                let weight = dx * (scan.base + scan.sum_gh - r * scan.sum_gk);
+                stop_weight = weight;
+                let grid = r / dx;
+                if let Some(tan_beta) = input.rake.physical(grid) {
+                    let slope = Slope { grid, tan_beta };
+                    self.block.lines[near] = Line {
+                        node: j,
+                        slope,
+                        weight,
+                    };
+                    // Kept without a branch: which lines pass is data.
+                    let pass = !scan.prune || lower.can_beat(weight, tan_beta, scan.bar, input);
+                    near += usize::from(pass);
+                }
+            }
+            self.block.weight.push(stop_weight);
+            let g = surface.unit_weight[j] * scan.node_weight(j);
+            scan.sum_gh += g * rise;
+            scan.sum_gk += g * k;
+            j += 1;
         }
+        self.block.near = near;
+        BlockEnd::Next(j)
+    }
+
+    /// Second pass: the footprint and band angles of each line kept by the
+    /// first, and the bound after the footprint (`FactorTable`, with the best
+    /// force at the block's start); keeps those that pass, in order.
+    fn footprints<A, F>(&mut self, surface: &Surface, input: &SearchInput<A, F>, scan: &Scan)
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        let near = self.block.near;
+        self.block.kept.resize(near, (Line::default(), input.fresh));
+        let mut kept = 0;
+        for i in 0..near {
+            let line = self.block.lines[i];
+            let band = line.slope.band(scan, line.node, input.band_width);
+            let angles = (input.angles)(self.band_angles(surface, &band, input.fresh));
+            let t = line.slope.tan_beta;
+            let can_beat = |rising| {
+                input
+                    .table
+                    .below(angles.friction, rising)
+                    .can_beat(line.weight, t, scan.bar)
+            };
+            // Which face friction is the lesser depends on the rake (see
+            // `Lower`). With the band's dilation known, a block that rises
+            // (`Face::rises`, taken only where it decides) has the rising
+            // one in Eq. (1).
+            let may_win = can_beat(true)
+                || (t <= input.face.sinking_below
+                    && can_beat(false)
+                    && !input.face.rises(t, angles.dilation));
+            self.block.kept[kept] = (line, angles);
+            kept += usize::from(angles.fresh | !scan.prune | may_win);
+        }
+        self.evaluations += near as u64;
+        self.block.kept.truncate(kept);
+    }
+
+    /// Third pass: Eq. (1) for the lines kept, in order, with the best force
+    /// as it improves, up to the node where the stopping rule ends the scan
+    /// (W_j f_min above the best force then); returns whether it did. The
+    /// bounds of the first two passes used the best force at the block's
+    /// start, no lower than the best force now: they rejected only lines
+    /// that could not beat it.
+    fn settle<A, F>(&mut self, input: &SearchInput<A, F>, scan: &mut Scan) -> bool
+    where
+        A: Fn(BandAngles) -> BandAngles,
+        F: Fn(BandAngles, f64) -> ForceFactor,
+    {
+        let min_factor = input.min_factor;
+        let mut stop = self.block.first_stop(0, scan, min_factor);
+        for k in 0..self.block.kept.len() {
+            let (line, angles) = self.block.kept[k];
+            let i = line.node - self.block.start;
+            if i > stop {
+                return true;
+            }
+            let bar = scan.bar;
+            self.consider(input, scan, line.node, line.slope, line.weight, angles);
+            if scan.bar != bar {
+                stop = self.block.first_stop(i, scan, min_factor);
+            }
+        }
+        stop < self.block.weight.len()
     }
 
     fn consider<A, F>(
@@ -409,6 +563,7 @@ impl Search {
 
     /// Mean angles over the band's footprint, nodes j − m ..= j (the prefix
     /// sums must cover the nodes before j).
+    #[inline]
     fn band_angles(&self, surface: &Surface, band: &Band, fresh: BandAngles) -> BandAngles {
         let (b, j) = (band.blade, band.emergence);
         let m = band.footprint(&surface.height);
@@ -520,7 +675,7 @@ impl Search {
                 let bound =
                     |factor: &ForceFactor| input.loads.force(factor, far.weight(n1), length, t2);
                 let below = |p: Option<f64>| p.is_some_and(|p| p <= scan.bar);
-                let could_sink = t2 <= input.sinking_below;
+                let could_sink = t2 <= input.face.sinking_below;
                 if !scan.prune
                     || below(bound(&fresh_walls.rising))
                     || (could_sink && below(bound(&fresh_walls.sinking)))
@@ -543,7 +698,7 @@ impl Search {
 }
 
 /// The slope of a candidate's slip line on the grid and physically.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Slope {
     pub(crate) grid: f64,
     pub(crate) tan_beta: f64,
@@ -553,7 +708,7 @@ impl Slope {
     /// Physical horizontal length of the slip line reaching `spacings`
     /// node spacings ahead of the tip on the grid.
     pub(crate) fn length(&self, spacings: f64, dx: f64) -> f64 {
-        spacings * dx * (self.grid / self.tan_beta)
+        spacings * dx * stretch(self.grid, self.tan_beta)
     }
 
     fn band(&self, scan: &Scan, j: usize, band_width: f64) -> Band {
@@ -571,6 +726,7 @@ impl Slope {
 
 /// Eq. (1) at the least friction angle seen so far: a lower bound of P/W,
 /// with the face friction of a rising block above `sinking_below`.
+#[derive(Clone, Copy)]
 struct Lower {
     rising: ForceFactor,
     sinking: ForceFactor,
@@ -605,7 +761,7 @@ impl Lower {
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
         self.rising.can_beat(weight, tan_beta, bar)
-            || (tan_beta <= input.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
+            | (tan_beta <= input.face.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
     }
 }
 

@@ -12,7 +12,7 @@ use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
 use crate::material::Material;
 use crate::mechanism::Loads;
-use crate::mechanism::{FactorTable, ForceFactor};
+use crate::mechanism::{Face, FactorTable, ForceFactor};
 use crate::rake::Rake;
 use crate::search::{BandAngles, Choice, Search, SearchInput};
 use crate::surface::Surface;
@@ -160,7 +160,7 @@ impl Laws {
             min_factor,
             least_dilation: case.soil.dilation.min().to_radians(),
             wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
-            table: FactorTable::new(walls),
+            table: FactorTable::new(walls, (material.friction.min(), material.friction.max())),
             fresh: BandAngles {
                 friction: phi0,
                 dilation: material.dilation.at(0.0),
@@ -192,16 +192,10 @@ impl Laws {
     }
 
     /// Whether a block on a band at tan β with dilation ψ rises along the
-    /// face: its direction β + ψ climbs faster than the tip,
-    /// tan(β + ψ) > climb, which sets the sign of the face friction.
+    /// face, which sets the sign of the face friction (`Face::rises`, where
+    /// the search takes it too).
     fn rises(&self, tan_beta: f64, dilation: f64, face: Face) -> bool {
-        tan_beta > face.sinking_below || {
-            // Both sides of tan(β + ψ) > climb times
-            // cos ψ − tan β sin ψ, which is positive below β + ψ = 90°.
-            let (sin_psi, cos_psi) = trig::sin_cos(dilation);
-            let run = cos_psi - tan_beta * sin_psi;
-            run <= 0.0 || tan_beta * cos_psi + sin_psi > face.climb * run
-        }
+        face.rises(tan_beta, dilation)
     }
 
     /// Eq. (1) coefficients for a candidate band at tan β.
@@ -242,15 +236,6 @@ impl Laws {
             surface.dilation[i] = self.material.dilation.at(ut);
         }
     }
-}
-
-/// How the face moves in one increment, for the sign of its friction.
-#[derive(Clone, Copy, Debug)]
-struct Face {
-    /// Rise of the tip per unit of travel: −Δd / v0 (0 at constant depth).
-    climb: f64,
-    /// tan β below which some band may sink relative to the face.
-    sinking_below: f64,
 }
 
 /// A running simulation of one case.
@@ -414,7 +399,7 @@ impl Simulation {
             band_width: self.case.soil.band_width,
             min_factor: laws.min_factor,
             walls: laws.walls,
-            sinking_below: face.sinking_below,
+            face,
             rake: self.rake,
             fresh: laws.fresh,
             table: &laws.table,

@@ -193,11 +193,14 @@ pub fn compensated_sum(values: impl Iterator<Item = f64>) -> f64 {
     let (mut sum, mut c) = (0.0f64, 0.0f64);
     for v in values {
         let t = sum + v;
-        c += if sum.abs() >= v.abs() {
-            (sum - t) + v
+        // The larger and the smaller of the two by magnitude: a select,
+        // not a branch.
+        let (large, small) = if sum.abs() >= v.abs() {
+            (sum, v)
         } else {
-            (v - t) + sum
+            (v, sum)
         };
+        c += (large - t) + small;
         sum = t;
     }
     sum + c
