@@ -191,16 +191,9 @@ impl Laws {
         }
     }
 
-    /// Whether a block on a band at tan β with dilation ψ rises along the
-    /// face, which sets the sign of the face friction (`Face::rises`, where
-    /// the search takes it too).
-    fn rises(&self, tan_beta: f64, dilation: f64, face: Face) -> bool {
-        face.rises(tan_beta, dilation)
-    }
-
     /// Eq. (1) coefficients for a candidate band at tan β.
     fn factor(&self, angles: BandAngles, tan_beta: f64, face: Face) -> ForceFactor {
-        let rising = self.rises(tan_beta, angles.dilation, face);
+        let rising = face.rises(tan_beta, angles.dilation);
         match (angles.fresh, rising) {
             (true, true) => self.fresh_rising,
             (true, false) => self.fresh_sinking,
@@ -526,7 +519,7 @@ impl Simulation {
         // Face friction opposes the block's motion along the face. The
         // reaction is at φw (with its sign) from the face normal, which is
         // α − 90° from the horizontal: ω = ±φw + α − 90°.
-        let omega = if self.laws.rises(choice.tan_beta, choice.dilation, face) {
+        let omega = if face.rises(choice.tan_beta, choice.dilation) {
             self.laws.walls.0
         } else {
             self.laws.walls.1
