@@ -307,9 +307,9 @@ impl Case {
             format!(
                 "run.node_spacing = {h} is coarser than run.increment = {v0} in soil that \
                  softens: such a grid converges to a limit of its own, off the reference \
-                 grid's by 1-5 % in the unit-window mean forces of the paper's softening \
-                 cases, up to 16 % in Fig. 5 (docs/model.md §9); leave run.node_spacing \
-                 out for the reference grid"
+                 grid's by 1.5-9 % in the unit-window mean forces of Table 1 S and HS \
+                 and 17-20 % in Fig. 5 (docs/model.md §9); leave run.node_spacing out \
+                 for the reference grid"
             )
         })
     }
