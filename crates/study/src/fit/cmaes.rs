@@ -22,7 +22,7 @@
 //! while the budget allows a whole generation.
 //!
 //! Bounds: a point drawn outside the box is drawn again (up to
-//! [`RESAMPLES`] times, then projected onto the box), so that no run is
+//! `RESAMPLES` times, then projected onto the box), so that no run is
 //! spent outside the bounds and the mean, a weighted mean of points in the
 //! box, stays in it. (Running the projection of an outside point instead
 //! makes the objective flat outside the box, and the mean drifts out and
