@@ -15,6 +15,8 @@ pd = pytest.importorskip("pandas")
 
 REFINED = ROOT / "crates/io/testdata/refined.toml"
 SHORT = {"run.travel": 10, "run.increment": 1}
+# The same settings as the command line's options.
+SHORT_SETS = [arg for key, value in SHORT.items() for arg in ("--set", f"{key}={value}")]
 VARY = {"soil.friction.peak": "31:40", "soil.friction.initial": [20, 33]}
 
 
@@ -41,10 +43,7 @@ def test_sweep_is_the_cli_sweep(cli, tmp_path, refined):
         "lhs:6",
         "--seed",
         "4",
-        "--set",
-        "run.travel=10",
-        "--set",
-        "run.increment=1",
+        *SHORT_SETS,
         "--out",
         str(out),
     )
@@ -133,10 +132,7 @@ def test_fit_recovers_the_friction_of_a_synthetic_curve(tmp_path, cli, refined):
         "3",
         "--jobs",
         "1",
-        "--set",
-        "run.travel=10",
-        "--set",
-        "run.increment=1",
+        *SHORT_SETS,
         "--out",
         str(out),
     )
@@ -166,7 +162,7 @@ def test_fit_by_cma_es_is_the_cli_fit(tmp_path, cli, refined):
     out = tmp_path / "fit"
     args = ["--measured", str(csv), "--free", "soil.friction.peak", "--method", "cmaes"]
     args += ["--evaluations", "40", "--polish", "10", "--profile-points", "0", "--seed", "5"]
-    args += ["--jobs", "1", "--set", "run.travel=10", "--set", "run.increment=1"]
+    args += ["--jobs", "1", *SHORT_SETS]
     run_cli(cli, "fit", str(REFINED), *args, "--out", str(out))
     for name in ["fit.csv", "search.csv", "best.toml"]:
         assert result.files[name] == (out / name).read_text(), name

@@ -4,7 +4,7 @@
 
 use divan::counter::ItemsCount;
 use divan::Bencher;
-use soilcut_bench::{run, shipped_case};
+use soilcut_bench::{developed, run, shipped_case};
 use soilcut_model::Simulation;
 
 fn main() {
@@ -38,10 +38,7 @@ fn original_run(bencher: Bencher) {
 #[divan::bench(sample_count = 20, sample_size = 20)]
 fn fig5_step_on_developed_pile(bencher: Bencher) {
     let case = shipped_case("paper/fig5.toml", &["run.increment=0.02"]);
-    let mut developed = Simulation::new(&case).unwrap();
-    while developed.blade_position() < 3.0 * case.blade.depth {
-        developed.step().unwrap();
-    }
+    let developed = developed(&case, 3.0);
     let mut probe = Simulation::clone(&developed);
     let before = probe.evaluations();
     probe.step().unwrap();

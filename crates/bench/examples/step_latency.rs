@@ -7,8 +7,7 @@
 //! cargo run --release -p soilcut-bench --example step_latency
 //! ```
 
-use soilcut_bench::shipped_case;
-use soilcut_model::Simulation;
+use soilcut_bench::{developed, shipped_case};
 use std::time::Instant;
 
 const CASES: [&str; 5] = ["original", "table1-s", "table1-hs", "fig5", "fig8b"];
@@ -20,10 +19,7 @@ fn main() {
     for name in CASES {
         let case = shipped_case(&format!("paper/{name}.toml"), &[]);
         let d = case.blade.depth;
-        let mut sim = Simulation::new(&case).expect("a valid shipped case");
-        while sim.blade_position() < 3.0 * d {
-            sim.step().expect("a shipped case runs");
-        }
+        let mut sim = developed(&case, 3.0);
         let mut micros: Vec<f64> = (0..STEPS)
             .map(|_| {
                 let start = Instant::now();

@@ -15,6 +15,16 @@ pub fn shipped_case(path: &str, overrides: &[&str]) -> Case {
         .case
 }
 
+/// A simulation of `case` stepped to u = `depths` blade depths: a
+/// developed pile, for timing single steps.
+pub fn developed(case: &Case, depths: f64) -> Simulation {
+    let mut sim = Simulation::new(case).expect("valid case");
+    while sim.blade_position() < depths * case.blade.depth {
+        sim.step().expect("admissible mechanism");
+    }
+    sim
+}
+
 /// Runs a case to the end; returns the candidate evaluations it took.
 pub fn run(case: &Case) -> u64 {
     let mut sim = Simulation::new(case).expect("valid case");

@@ -10,14 +10,16 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// An instance of the package's exception `class`: `class(message, key)`.
 fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> PyErr {
-    let made = py
-        .import("soilcut._errors")
-        .and_then(|m| m.getattr(class))
-        .and_then(|c| c.call1((message, key)));
+    let made = package_class(py, class).and_then(|c| c.call1((message, key)));
     match made {
         Ok(e) => PyErr::from_value(e),
         Err(e) => e,
     }
+}
+
+/// The class `name` of `soilcut/_errors.py`.
+fn package_class<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+    py.import("soilcut._errors")?.getattr(name)
 }
 
 /// Warns with `soilcut.AccuracyWarning` where the command line warns on
@@ -26,7 +28,7 @@ pub fn warn_accuracy(py: Python<'_>, case: &soilcut_model::Case) -> PyResult<()>
     let Some(message) = case.accuracy_warning() else {
         return Ok(());
     };
-    let class = py.import("soilcut._errors")?.getattr("AccuracyWarning")?;
+    let class = package_class(py, "AccuracyWarning")?;
     let message = std::ffi::CString::new(message)?;
     PyErr::warn(py, &class, &message, 1)
 }
