@@ -135,8 +135,7 @@ where
     /// Lower bound of P/W over every candidate (see the stopping rule).
     pub min_factor: f64,
     /// The wall friction in Eq. (1) for a rising and a sinking block (±φw,
-    /// plus α − 90° for a raked blade), radians, and the tan β below which a
-    /// block may sink (β + ψ ≤ 0 for some reachable ψ): for the bounds.
+    /// plus α − 90° for a raked blade), radians: for the bounds.
     pub walls: (f64, f64),
     /// How the face moves (§2.6 of docs/model.md): below
     /// `face.sinking_below` a block may sink relative to it, and the
