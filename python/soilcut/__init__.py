@@ -7,6 +7,9 @@
     result.history["force_norm"]          # NumPy array, P/(γ0 d²)
     result.save("out/original")           # the folder `soilcut run` writes
 
+    spread = soilcut.run(case, ensemble=7)  # 7 perturbed members: the spread
+    spread.windows["std"]                 # of every unit-window mean force
+
     sim = soilcut.Simulation(case)        # step by step, for a control loop
     for step in sim:
         step.force, step.beta_deg
@@ -17,7 +20,7 @@ degrees, forces per unit width.
 
 from ._case import Case
 from ._errors import AccuracyWarning, CaseError, StepError
-from ._run import Frame, RunResult, run
+from ._run import Ensemble, Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
 from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
 
@@ -25,6 +28,7 @@ __all__ = [
     "AccuracyWarning",
     "Case",
     "CaseError",
+    "Ensemble",
     "FitResult",
     "Landscape",
     "Frame",

@@ -114,14 +114,84 @@ class RunResult:
         )
 
 
-def run(case: Case) -> RunResult:
+class Ensemble:
+    """A case run N times with imperceptible perturbations (member k:
+    ``soil.d50`` × (1 + 0.001 k) in the refined model, ``blade.wall_friction``
+    + 0.01° × k in the original; k = −3 … 3 for N = 7, k = 0 the case
+    itself), and the spread its own chaos puts on the results: what
+    ``soilcut run CASE --ensemble N`` writes.
+
+    Attributes:
+        members: each member's :class:`RunResult`, in the order of k.
+        folders: the members' folder names (``k-3`` … ``k+3``).
+        windows: per unit window k ≤ u/d < k + 1, NumPy arrays of
+            ``ensemble.csv``'s columns: ``u_over_d_from``, ``u_over_d_to``,
+            ``members``, ``mean``, ``std`` (sample standard deviation over the
+            members), ``min``, ``max`` of the members' window means of
+            P/(γ0 d²), then one column per member.
+        summary: the content of the ensemble's ``summary.json`` (the
+            perturbation, the spread of the whole-run mean, of the largest
+            and the first force and of every window mean, wall times).
+    """
+
+    def __init__(self, case: Case, native: _soilcut.EnsembleRun) -> None:
+        self.case = case
+        self._native = native
+        files = dict(native.files())
+        self.windows: dict[str, np.ndarray] = _soilcut.csv_columns(
+            "ensemble.csv", files["ensemble.csv"]
+        )
+        self.summary: dict[str, Any] = json.loads(files["summary.json"])
+        members = native.members()
+        self.folders: list[str] = [name for name, _ in members]
+        self.members: list[RunResult] = [
+            RunResult(Case(dict(f)["case.resolved.toml"]), dict(f)) for _, f in members
+        ]
+
+    def windows_frame(self):
+        """``windows`` as a pandas DataFrame (needs pandas)."""
+        return _frame_of(self.windows)
+
+    def save(self, folder: PathLike, *, pictures: bool = True, force: bool = False) -> pathlib.Path:
+        """Writes the folder ``soilcut run --ensemble`` writes:
+        ``ensemble.csv``, ``summary.json``, each member's run folder and,
+        with ``pictures``, ``plots/envelope.{png,svg}`` and the members'
+        pictures. The files appear together or not at all; an existing,
+        non-empty folder is replaced only with ``force=True`` (else
+        ``FileExistsError``). Returns the folder."""
+        folder = pathlib.Path(folder)
+        self._native.write(os.fspath(folder), force, pictures)
+        return folder
+
+    def __repr__(self) -> str:
+        m = self.summary["mean_force_norm"]
+        return (
+            f"Ensemble({self.case.name!r}: {len(self.members)} members, mean force_norm "
+            f"{m['mean']:.4f} ± {m['std']:.4f} (sd))"
+        )
+
+
+def run(
+    case: Case, *, ensemble: int | None = None, jobs: int = 0
+) -> Union[RunResult, Ensemble]:
     """Runs ``case`` to its end, as ``soilcut run`` does, and returns the
     result. The interpreter is released while it runs (other threads go on).
+
+    With ``ensemble=N``, runs the case's N perturbed members in parallel on
+    ``jobs`` threads (0: one per core; the result does not depend on it) and
+    returns an :class:`Ensemble`, as ``soilcut run CASE --ensemble N`` does.
 
     Raises :class:`soilcut.CaseError` for a case the model cannot simulate
     and :class:`soilcut.StepError` if an increment has no admissible
     mechanism; warns with :class:`soilcut.AccuracyWarning` where the case's
     grid is known to cost accuracy, as ``soilcut run`` warns on stderr.
     """
+    the_case = case if isinstance(case, Case) else Case(case)
+    if ensemble is not None:
+        if isinstance(ensemble, bool) or not isinstance(ensemble, int) or ensemble < 2:
+            raise ValueError(f"ensemble: expected an int >= 2 (members; 7 is the rule's), got {ensemble!r}")
+        if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0:
+            raise ValueError(f"jobs: expected an int >= 0 (0: one per core), got {jobs!r}")
+        return Ensemble(the_case, _soilcut.ensemble(text_of(case), ensemble, jobs))
     files = dict(_soilcut.run(text_of(case)))
-    return RunResult(case if isinstance(case, Case) else Case(case), files)
+    return RunResult(the_case, files)

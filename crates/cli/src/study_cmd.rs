@@ -154,7 +154,7 @@ impl From<RefineArg> for Refine {
     }
 }
 
-fn study_failure(path: &Path, e: StudyError) -> Failure {
+pub fn study_failure(path: &Path, e: StudyError) -> Failure {
     match e {
         StudyError::Output(e) => Failure::output(e),
         StudyError::Plot(message) => Failure {
@@ -193,23 +193,29 @@ impl Common {
 
     /// A progress callback: a bar on stderr when it is a terminal.
     fn progress(&self, unit: &'static str) -> impl Fn(usize, usize) + Sync {
-        let show = !self.quiet && std::io::stderr().is_terminal();
-        let bar: OnceLock<ProgressBar> = OnceLock::new();
-        move |done, total| {
-            if !show {
-                return;
-            }
-            let bar = bar.get_or_init(|| {
-                let style = ProgressStyle::with_template(&format!(
-                    "{{bar:40}} {{pos}}/{{len}} {unit} [{{elapsed_precise}}, eta {{eta}}]"
-                ))
-                .expect("a valid template");
-                ProgressBar::new(total as u64).with_style(style)
-            });
-            bar.set_position(done as u64);
-            if done == total {
-                bar.finish_and_clear();
-            }
+        progress(self.quiet, unit)
+    }
+}
+
+/// A progress callback over `unit`s (runs, levels, members): a bar on
+/// stderr when it is a terminal and not `quiet`.
+pub fn progress(quiet: bool, unit: &'static str) -> impl Fn(usize, usize) + Sync {
+    let show = !quiet && std::io::stderr().is_terminal();
+    let bar: OnceLock<ProgressBar> = OnceLock::new();
+    move |done, total| {
+        if !show {
+            return;
+        }
+        let bar = bar.get_or_init(|| {
+            let style = ProgressStyle::with_template(&format!(
+                "{{bar:40}} {{pos}}/{{len}} {unit} [{{elapsed_precise}}, eta {{eta}}]"
+            ))
+            .expect("a valid template");
+            ProgressBar::new(total as u64).with_style(style)
+        });
+        bar.set_position(done as u64);
+        if done == total {
+            bar.finish_and_clear();
         }
     }
 }

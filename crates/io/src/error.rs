@@ -71,7 +71,8 @@ pub enum OutputError {
 }
 
 impl OutputError {
-    pub(crate) fn io(path: impl Into<PathBuf>) -> impl FnOnce(std::io::Error) -> Self {
+    /// A closure turning an I/O error on `path` into an [`OutputError::Io`].
+    pub fn io(path: impl Into<PathBuf>) -> impl FnOnce(std::io::Error) -> Self {
         let path = path.into();
         move |source| OutputError::Io { path, source }
     }

@@ -42,12 +42,17 @@ pub fn record_run(
 }
 
 /// A finished run: the files of its output folder and its summary.
+#[derive(Clone, Debug)]
 pub struct RecordedRun {
     /// (name, contents): history.csv, profile.csv, summary.json,
     /// case.resolved.toml, frames.csv.
     pub files: Vec<(&'static str, String)>,
     /// The run's summary (as in summary.json).
     pub summary: Summary,
+    /// One record per increment (history.csv's rows).
+    pub history: Vec<StepRecord>,
+    /// Wall time of the increments, s (as in summary.json).
+    pub wall_time_s: f64,
 }
 
 /// Runs the remaining increments of `sim` (set up from `loaded`) with
@@ -73,5 +78,10 @@ pub fn record_files(
     };
     let mut files = output.files();
     files.push(("frames.csv", frames_csv(&frames, case.blade.depth)));
-    Ok(RecordedRun { files, summary })
+    Ok(RecordedRun {
+        files,
+        summary,
+        history,
+        wall_time_s,
+    })
 }

@@ -9,6 +9,8 @@
 //! * [`draw_deformation`]: the pattern of deformation (Figs. 4 and 6).
 //! * [`draw_animation`]: an animated GIF of the cutting process.
 //! * [`draw_compare`]: force and β* of several runs overlaid (Fig. 7).
+//! * [`draw_envelope`]: the force of an ensemble's members, its mean and
+//!   spread.
 //! * [`draw_landscape`]: the force of every candidate band of one increment.
 //! * [`draw_landscape_map`]: how near each place comes to the least force,
 //!   increment after increment.
@@ -26,6 +28,7 @@ mod animation;
 mod blade;
 mod curves;
 mod deformation;
+mod envelope;
 mod landscape;
 mod panels;
 mod render;
@@ -34,6 +37,7 @@ mod style;
 pub use animation::draw_animation;
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
+pub use envelope::{draw_envelope, Envelope};
 pub use landscape::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap};
 pub use panels::{draw_panels, Panel, Series, SeriesMark};
 pub use render::{Format, PlotError};

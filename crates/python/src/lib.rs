@@ -5,6 +5,7 @@
 
 mod case;
 mod convert;
+mod ensemble;
 mod errors;
 mod run;
 mod simulation;
@@ -28,6 +29,8 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
+    m.add_function(wrap_pyfunction!(ensemble::ensemble, m)?)?;
+    m.add_class::<ensemble::EnsembleRun>()?;
     m.add_class::<simulation::Simulation>()?;
     m.add_class::<simulation::Step>()?;
     Ok(())

@@ -52,14 +52,18 @@ pub fn write_run_dir(
 ) -> PyResult<()> {
     let files: Vec<(&str, String)> = files.iter().map(|(n, c)| (n.as_str(), c.clone())).collect();
     py.detach(|| soilcut_io::write_run_dir(&folder, &files, force, pictures))
-        .map_err(|e| {
-            let path = e.path().display();
-            match e {
-                OutputError::Exists(_) => PyFileExistsError::new_err(format!(
-                    "{path}: the folder exists and is not empty; pass force=True to replace it"
-                )),
-                OutputError::Unnamed(_) => PyValueError::new_err(format!("{path}: {e}")),
-                OutputError::Io { .. } => PyOSError::new_err(format!("{path}: {e}")),
-            }
-        })
+        .map_err(output_error)
+}
+
+/// An output folder's error as Python's: `FileExistsError` for an occupied
+/// folder, `ValueError` for one without a name, `OSError` for I/O.
+pub fn output_error(e: OutputError) -> PyErr {
+    let path = e.path().display();
+    match e {
+        OutputError::Exists(_) => PyFileExistsError::new_err(format!(
+            "{path}: the folder exists and is not empty; pass force=True to replace it"
+        )),
+        OutputError::Unnamed(_) => PyValueError::new_err(format!("{path}: {e}")),
+        OutputError::Io { .. } => PyOSError::new_err(format!("{path}: {e}")),
+    }
 }

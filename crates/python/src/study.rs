@@ -14,14 +14,14 @@ use soilcut_study::sample::{Sample, Values, Vary};
 use soilcut_study::sweep::{Sweep, SweepResult};
 use soilcut_study::{no_progress, BaseCase, StudyError};
 
-fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
+pub fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
     match e {
         StudyError::Case(message) => case_message(py, message),
         e => PyValueError::new_err(e.to_string()),
     }
 }
 
-fn base(py: Python<'_>, text: &str) -> PyResult<BaseCase> {
+pub fn base(py: Python<'_>, text: &str) -> PyResult<BaseCase> {
     BaseCase::new(text.to_string(), vec![]).map_err(|e| crate::errors::case_error(py, &e))
 }
 

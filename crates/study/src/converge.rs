@@ -17,7 +17,7 @@
 
 use crate::csv;
 use crate::error::StudyError;
-use crate::figures::mean;
+use crate::figures::{in_window, mean, unit_windows, window_means};
 use crate::fit::interpolate;
 use crate::run::{override_of, BaseCase, RunResult};
 use crate::Progress;
@@ -193,16 +193,9 @@ pub struct ConvergeResult {
 fn level_of(level: usize, run: &RunResult, depth: f64, windows: usize) -> Level {
     let h = &run.history;
     let force: Vec<(f64, f64)> = h.iter().map(|r| (r.u / depth, r.force_norm)).collect();
-    let in_window = |k: usize| {
-        force
-            .iter()
-            .filter(move |p| p.0 >= k as f64 && p.0 < (k + 1) as f64)
-            .map(|p| p.1)
-            .collect::<Vec<f64>>()
-    };
-    let window_mean: Vec<f64> = (0..windows).map(|k| mean(&in_window(k))).collect();
+    let window_mean = window_means(&force, windows);
     let window_max: Vec<f64> = (0..windows)
-        .map(|k| in_window(k).into_iter().fold(f64::NAN, f64::max))
+        .map(|k| in_window(&force, k).into_iter().fold(f64::NAN, f64::max))
         .collect();
     let jumps = band_jumps(h, JUMP_DEPTHS * depth);
     let spacings: Vec<f64> = jumps
@@ -263,7 +256,7 @@ impl Converge {
         let case = &loaded.case;
         let depth = case.blade.depth;
         let grid = (case.run.increment, case.run.node_spacing);
-        let windows = ((case.run.travel / depth) * (1.0 + 1e-9)).floor().max(1.0) as usize;
+        let windows = unit_windows(case.run.travel, depth);
         let finished = AtomicUsize::new(0);
         progress(0, self.levels);
         let runs: Vec<Result<Level, StudyError>> = crate::pool(self.jobs)?.install(|| {

@@ -86,7 +86,30 @@ impl Figures {
     }
 }
 
-/// Arithmetic mean; NaN for no values.
+/// The number of unit windows k ≤ u/d < k + 1 in a run of `travel` at
+/// depth `depth` (a last, partial window is left out).
+pub fn unit_windows(travel: f64, depth: f64) -> usize {
+    ((travel / depth) * (1.0 + 1e-9)).floor().max(1.0) as usize
+}
+
+/// The forces of `force`, pairs (u/d, P/(γ0 d²)), in the window
+/// k ≤ u/d < k + 1.
+pub fn in_window(force: &[(f64, f64)], k: usize) -> Vec<f64> {
+    let (lo, hi) = (k as f64, (k + 1) as f64);
+    force
+        .iter()
+        .filter(|p| p.0 >= lo && p.0 < hi)
+        .map(|p| p.1)
+        .collect()
+}
+
+/// The mean P/(γ0 d²) of `force` over each of the first `windows` unit
+/// windows (NaN for an empty one).
+pub fn window_means(force: &[(f64, f64)], windows: usize) -> Vec<f64> {
+    (0..windows).map(|k| mean(&in_window(force, k))).collect()
+}
+
+/// The arithmetic mean (NaN for no values).
 pub fn mean(values: &[f64]) -> f64 {
     if values.is_empty() {
         f64::NAN

@@ -6,6 +6,9 @@
 //!   force-displacement curves (seeded differential evolution or CMA-ES,
 //!   a Nelder-Mead polish), with profile-likelihood intervals and which keys
 //!   the curves determine.
+//! * [`ensemble`]: one case run with imperceptible perturbations, the
+//!   spread of its window means; [`accuracy`]: the rule that judges a
+//!   scheme's ensemble against the reference grid's.
 //! * [`converge`]: one case with the increment halved level after level,
 //!   and which averaged quantities converge (docs/model.md §12).
 //!
@@ -21,8 +24,10 @@
 
 #![warn(missing_docs)]
 
+pub mod accuracy;
 pub mod converge;
 pub mod csv;
+pub mod ensemble;
 mod error;
 pub mod figures;
 pub mod fit;

@@ -1,6 +1,6 @@
 //! One run of a case with overrides: the unit every study is made of.
 
-use soilcut_io::{parse_case, InputError, LoadedCase, Override};
+use soilcut_io::{parse_case, record_files, InputError, LoadedCase, Override, RecordedRun};
 use soilcut_model::{ProfilePoint, Simulation, StepRecord, Summary};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
@@ -70,31 +70,20 @@ impl BaseCase {
 
 /// Runs a loaded case to its end.
 pub fn run_loaded(loaded: LoadedCase) -> Result<RunResult, String> {
-    let outcome = catch_unwind(AssertUnwindSafe(|| {
+    let (history, profile, summary, evaluations, wall_time_s) = caught(|| {
         let mut sim = Simulation::new(&loaded.case).map_err(|e| e.to_string())?;
         let start = Instant::now();
         let history = sim.run_to_end(|_| {}).map_err(|e| e.to_string())?;
         let wall_time_s = start.elapsed().as_secs_f64();
         let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
-        Ok::<_, String>((
+        Ok((
             history,
             sim.profile(),
             summary,
             sim.evaluations(),
             wall_time_s,
         ))
-    }));
-    let (history, profile, summary, evaluations, wall_time_s) = match outcome {
-        Ok(result) => result?,
-        Err(panic) => {
-            let text = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".to_string());
-            return Err(format!("the model panicked: {text}"));
-        }
-    };
+    })?;
     Ok(RunResult {
         loaded,
         history,
@@ -103,6 +92,30 @@ pub fn run_loaded(loaded: LoadedCase) -> Result<RunResult, String> {
         evaluations,
         wall_time_s,
     })
+}
+
+/// Runs a loaded case to its end as `soilcut run` does: every file of its
+/// output folder (frames.csv included) and its history.
+pub fn run_recorded(loaded: &LoadedCase) -> Result<RecordedRun, String> {
+    caught(|| {
+        let mut sim = Simulation::new(&loaded.case).map_err(|e| e.to_string())?;
+        record_files(loaded, &mut sim, || {}).map_err(|e| e.to_string())
+    })
+}
+
+/// `f`'s result, with a panic of the model turned into its message.
+fn caught<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(result) => result,
+        Err(panic) => {
+            let text = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".to_string());
+            Err(format!("the model panicked: {text}"))
+        }
+    }
 }
 
 /// An `Override` setting `key` to `value`, as `--set key=value` would.

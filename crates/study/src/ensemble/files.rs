@@ -1,0 +1,204 @@
+//! What an ensemble writes: `ensemble.csv`, `summary.json`, every member's
+//! run folder and the force envelope picture.
+
+use super::{member_folder, EnsembleResult, Member};
+use crate::accuracy::{Spread, WHOLE_RUN, WINDOW_CEILING, WINDOW_FLOOR};
+use crate::csv;
+use serde_json::{json, Value};
+use soilcut_io::OutputError;
+use soilcut_plot::Envelope;
+use std::path::Path;
+
+/// Where the envelope pictures go in the ensemble's folder.
+pub const ENVELOPE: [&str; 2] = ["plots/envelope.png", "plots/envelope.svg"];
+
+/// The accuracy rule in words (docs/model.md §12).
+pub fn accuracy_rule() -> String {
+    format!(
+        "a scheme is accurate on a case when every unit-window ensemble mean of P/(γ0 d²) is \
+         within clamp(2 standard errors of the difference of the two ensemble means, {} %, {} %) \
+         of the reference grid's ensemble, and the whole-run ensemble mean within {} %",
+        WINDOW_FLOOR * 100.0,
+        WINDOW_CEILING * 100.0,
+        WHOLE_RUN * 100.0
+    )
+}
+
+fn spread_json(s: &Spread) -> Value {
+    json!({
+        "mean": s.mean,
+        "std": s.std,
+        "standard_error": s.standard_error(),
+        "min": s.min,
+        "max": s.max,
+    })
+}
+
+impl EnsembleResult {
+    /// `ensemble.csv`: one row per unit window k ≤ u/d < k + 1: the
+    /// members' window means of P/(γ0 d²), their mean, sample standard
+    /// deviation, least and largest, then each member's value.
+    pub fn ensemble_csv(&self) -> String {
+        let mut header: Vec<String> = [
+            "u_over_d_from",
+            "u_over_d_to",
+            "members",
+            "mean",
+            "std",
+            "min",
+            "max",
+        ]
+        .map(String::from)
+        .to_vec();
+        header.extend(self.members.iter().map(|m| member_folder(m.k)));
+        let mut out = csv::line(&header);
+        for (w, s) in self.windows.iter().enumerate() {
+            let mut row = vec![
+                w.to_string(),
+                (w + 1).to_string(),
+                s.n.to_string(),
+                csv::number(s.mean),
+                csv::number(s.std),
+                csv::number(s.min),
+                csv::number(s.max),
+            ];
+            row.extend(self.members.iter().map(|m| csv::number(m.window_means[w])));
+            out.push_str(&csv::line(&row));
+        }
+        out
+    }
+
+    /// `summary.json`: the perturbation, the spread of the whole-run mean,
+    /// of the largest and the first force and of every window mean. The
+    /// same on any number of threads (wall times are in [`Self::timing_csv`]).
+    pub fn summary_json(&self) -> String {
+        let p = &self.perturbation;
+        let windows: Vec<Value> = self
+            .windows
+            .iter()
+            .enumerate()
+            .map(|(w, s)| {
+                let mut v = spread_json(s);
+                v["u_over_d_from"] = json!(w);
+                v["u_over_d_to"] = json!(w + 1);
+                v
+            })
+            .collect();
+        let json = json!({
+            "name": self.name,
+            "title": self.title,
+            "members": self.members.len(),
+            "perturbation": {
+                "key": p.key,
+                "base": p.base,
+                "rule": p.rule(),
+                "k": self.members.iter().map(|m| m.k).collect::<Vec<_>>(),
+                "values": self.members.iter().map(|m| m.value).collect::<Vec<_>>(),
+                "folders": self.members.iter().map(|m| member_folder(m.k)).collect::<Vec<_>>(),
+            },
+            "mean_force_norm": spread_json(&self.whole_run),
+            "max_force_norm": spread_json(&self.max_force),
+            "initial_force_norm": spread_json(&self.initial_force),
+            "windows": windows,
+            "accuracy_rule": accuracy_rule(),
+        });
+        let mut text = serde_json::to_string_pretty(&json).expect("a summary serialises");
+        text.push('\n');
+        text
+    }
+
+    /// `timing.csv`: each member's k and the wall time of its simulation, s
+    /// (the only figure that changes between identical ensembles).
+    pub fn timing_csv(&self) -> String {
+        let mut out = csv::line(&["k", "folder", "wall_time_s"]);
+        for m in &self.members {
+            out.push_str(&csv::line(&[
+                m.k.to_string(),
+                member_folder(m.k),
+                m.wall_time_s.to_string(),
+            ]));
+        }
+        out
+    }
+
+    /// What the envelope picture draws.
+    pub fn envelope(&self) -> Envelope {
+        let steps = self
+            .members
+            .iter()
+            .map(|m| m.force.len())
+            .min()
+            .unwrap_or(0);
+        let at = |i: usize| -> Spread {
+            Spread::of(
+                &self
+                    .members
+                    .iter()
+                    .map(|m| m.force[i].1)
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let u = |i: usize| self.members[0].force[i].0;
+        let spreads: Vec<Spread> = (0..steps).map(at).collect();
+        Envelope {
+            title: format!("{}: ensemble of {}", self.title, self.members.len()),
+            members: self.members.iter().map(|m| m.force.clone()).collect(),
+            mean: (0..steps).map(|i| (u(i), spreads[i].mean)).collect(),
+            band: (0..steps)
+                .map(|i| {
+                    (
+                        u(i),
+                        spreads[i].mean - spreads[i].std,
+                        spreads[i].mean + spreads[i].std,
+                    )
+                })
+                .collect(),
+            windows: self
+                .windows
+                .iter()
+                .enumerate()
+                .map(|(w, s)| (w as f64, (w + 1) as f64, s.mean))
+                .collect(),
+        }
+    }
+
+    /// Writes the ensemble's folder `dir`: `ensemble.csv`, `summary.json`,
+    /// `timing.csv`,
+    /// each member's run folder (`k-3` … `k+3`, as `soilcut run` writes it)
+    /// and, with `pictures`, the members' pictures and
+    /// `plots/envelope.{png,svg}`; all of it appears together or not at all.
+    pub fn write(&self, dir: &Path, force: bool, pictures: bool) -> Result<(), OutputError> {
+        let files = [
+            ("ensemble.csv", self.ensemble_csv()),
+            ("summary.json", self.summary_json()),
+            ("timing.csv", self.timing_csv()),
+        ];
+        soilcut_io::write_output_dir_then(dir, &files, force, |staged| {
+            for m in &self.members {
+                write_member(staged, m, pictures)?;
+            }
+            if pictures {
+                self.draw_envelope(staged)?;
+            }
+            Ok(())
+        })
+    }
+
+    fn draw_envelope(&self, dir: &Path) -> Result<(), OutputError> {
+        let plots = dir.join("plots");
+        std::fs::create_dir_all(&plots).map_err(OutputError::io(&plots))?;
+        let envelope = self.envelope();
+        for name in ENVELOPE {
+            let path = dir.join(name);
+            soilcut_plot::draw_envelope(&envelope, &path).map_err(|e| OutputError::Io {
+                path: e.path,
+                source: std::io::Error::other(e.message),
+            })?;
+        }
+        Ok(())
+    }
+}
+
+fn write_member(dir: &Path, m: &Member, pictures: bool) -> Result<(), OutputError> {
+    soilcut_io::write_run_dir(&dir.join(member_folder(m.k)), &m.run.files, false, pictures)
+}
