@@ -171,9 +171,7 @@ class Ensemble:
         )
 
 
-def run(
-    case: Case, *, ensemble: int | None = None, jobs: int = 0
-) -> Union[RunResult, Ensemble]:
+def run(case: Case, *, ensemble: int | None = None, jobs: int = 0) -> RunResult | Ensemble:
     """Runs ``case`` to its end, as ``soilcut run`` does, and returns the
     result. The interpreter is released while it runs (other threads go on).
 
@@ -189,7 +187,9 @@ def run(
     the_case = case if isinstance(case, Case) else Case(case)
     if ensemble is not None:
         if isinstance(ensemble, bool) or not isinstance(ensemble, int) or ensemble < 2:
-            raise ValueError(f"ensemble: expected an int >= 2 (members; 7 is the rule's), got {ensemble!r}")
+            raise ValueError(
+                f"ensemble: expected an int >= 2 (members; 7 is the rule's), got {ensemble!r}"
+            )
         if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0:
             raise ValueError(f"jobs: expected an int >= 0 (0: one per core), got {jobs!r}")
         return Ensemble(the_case, _soilcut.ensemble(text_of(case), ensemble, jobs))

@@ -9,6 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
     check_output_dir, read_measured_curve, write_output_dir_then, OutputError, Override,
 };
+use soilcut_study::converge::ensembles::EnsembleConverge;
 use soilcut_study::converge::{Converge, Refine};
 use soilcut_study::fit::{parse_bounds, Compare, Fit, Method};
 use soilcut_study::sample::{Sample, Vary};
@@ -41,7 +42,9 @@ pub const CONVERGE_EXAMPLES: &str = "\
 Examples:
   soilcut converge cases/paper/fig5.toml --set run.increment=0.04 --levels 3
       increments v0, v0/2, v0/4 (d/500 to d/2000); writes out/fig5-converge/{converge.md,converge.csv,converge.png,timing.csv}
-  soilcut converge cases/paper/fig5.toml --levels 3 --set run.increment=0.08";
+  soilcut converge cases/paper/fig5.toml --levels 3 --set run.increment=0.08
+  soilcut converge cases/paper/table1-s.toml --levels 3 --set run.increment=0.08 --ensemble 7
+      each level an ensemble of 7 perturbed runs, judged against the finest by the ensemble rule";
 
 /// Options every study takes.
 #[derive(Args)]
@@ -134,6 +137,10 @@ pub struct ConvergeArgs {
     /// Relative change between the two finest levels under which a quantity counts as converged.
     #[arg(long, default_value_t = 0.02)]
     tolerance: f64,
+    /// Make every level an ensemble of N perturbed runs (as `soilcut run --ensemble N`) and
+    /// judge each level against the finest by the ensemble rule (docs/model.md §12).
+    #[arg(long, value_name = "N")]
+    ensemble: Option<usize>,
 }
 
 /// `--refine` of `soilcut converge`.
@@ -407,6 +414,16 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     let path = &c.target.case;
     let fail = |e| study_failure(path, e);
     let (base, out) = c.start("converge")?;
+    if let Some(members) = args.ensemble {
+        let study = EnsembleConverge {
+            base,
+            levels: args.levels,
+            refine: args.refine.into(),
+            members,
+            jobs: c.jobs,
+        };
+        return converge_ensembles(&study, c, &out).map_err(fail);
+    }
     let study = Converge {
         base,
         levels: args.levels,
@@ -435,5 +452,37 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     })
     .map_err(fail)?;
     println!("converge: {}, outputs in {}", verdicts, out.display());
+    Ok(())
+}
+
+/// `soilcut converge --ensemble N`: the levels' ensembles and their verdicts.
+fn converge_ensembles(study: &EnsembleConverge, c: &Common, out: &Path) -> Result<(), StudyError> {
+    let mut verdicts = String::new();
+    write_study(out, c.target.force, |dir| {
+        let r = study.run(&c.progress("members"))?;
+        text_files(
+            dir,
+            &[
+                ("converge.csv", r.csv()),
+                ("converge.md", r.markdown()),
+                ("timing.csv", r.timing_csv()),
+            ],
+        )?;
+        let accurate: Vec<String> = r
+            .agreements()
+            .iter()
+            .zip(&r.levels)
+            .map(|(a, l)| {
+                format!(
+                    "level {} {}",
+                    l.level,
+                    if a.accurate() { "yes" } else { "no" }
+                )
+            })
+            .collect();
+        verdicts = format!("accurate against the finest level: {}", accurate.join(", "));
+        Ok(())
+    })?;
+    println!("converge: {verdicts}; outputs in {}", out.display());
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! Pictures: `soilcut run` draws them for every shipped case, `soilcut plot`
-//! redraws the same bytes, `--no-plots` leaves the results unchanged, and
-//! `soilcut compare` overlays runs.
+//! redraws the same bytes, `--no-plots` leaves the results unchanged,
+//! `soilcut compare` overlays runs, and `soilcut run --ensemble` draws its
+//! members and their envelope.
 
 use std::fs;
 use std::io::Cursor;
@@ -178,7 +179,18 @@ fn compare_overlays_runs_and_a_measured_curve() {
     let case = workspace().join("cases/paper/original.toml");
     let (a, b) = (tmp.path().join("a"), tmp.path().join("b"));
     run_short(&case, &a, &["--no-plots"]);
-    run_short(&case, &b, &["--no-plots", "--set", "soil.friction.peak=38"]);
+    let title = "title=\"Original model, peak 38\"";
+    run_short(
+        &case,
+        &b,
+        &[
+            "--no-plots",
+            "--set",
+            "soil.friction.peak=38",
+            "--set",
+            title,
+        ],
+    );
     fs::write(
         tmp.path().join("m.csv"),
         "u,force\n0,1000\n10,1800\n20,2500\n",
@@ -210,6 +222,87 @@ fn compare_overlays_runs_and_a_measured_curve() {
     assert_eq!(o.status.code(), Some(2), "only .png and .svg");
     assert!(!tmp.path().join("cmp.pdf").exists());
     let o = soilcut(&["compare", "a", "--measured", "nope.csv"], tmp.path());
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn compare_names_runs_of_one_title_by_their_folders() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/paper/original.toml");
+    let (a, b) = (tmp.path().join("coarse"), tmp.path().join("fine"));
+    run_short(&case, &a, &["--no-plots"]);
+    run_short(&case, &b, &["--no-plots", "--set", "run.increment=0.1"]);
+    assert_ok(&soilcut(
+        &["compare", "coarse", "fine", "--out", "c.svg"],
+        tmp.path(),
+    ));
+    let text = fs::read_to_string(tmp.path().join("c.svg")).unwrap();
+    assert!(
+        text.contains("\ncoarse\n") && text.contains("\nfine\n"),
+        "legend by folder"
+    );
+    assert!(!text.contains("Original model"), "not by the shared title");
+}
+
+#[test]
+fn an_ensemble_writes_its_members_and_their_envelope() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/paper/table1-s.toml");
+    let case = case.to_str().unwrap();
+    let mut args = vec![
+        "run",
+        case,
+        "--ensemble",
+        "3",
+        "--jobs",
+        "2",
+        "--out",
+        "ens",
+    ];
+    args.extend(SHORT);
+    assert_ok(&soilcut(&args, tmp.path()));
+    let ens = tmp.path().join("ens");
+    for k in ["k-1", "k+0", "k+1"] {
+        for picture in PICTURES {
+            assert!(ens.join(k).join(picture).is_file(), "{k}/{picture}");
+        }
+    }
+    assert_png(&ens.join("plots/envelope.png"));
+    assert_svg(&ens.join("plots/envelope.svg"));
+    let csv = fs::read_to_string(ens.join("ensemble.csv")).unwrap();
+    assert!(csv.starts_with("u_over_d_from,u_over_d_to,members,mean,std,min,max,k-1,k+0,k+1\n"));
+    // Member k = 0 is `soilcut run` of the case itself, bit for bit.
+    let mut plain = vec!["run", case, "--no-plots", "--out", "plain"];
+    plain.extend(SHORT);
+    assert_ok(&soilcut(&plain, tmp.path()));
+    let history = |dir: &Path| fs::read(dir.join("history.csv")).unwrap();
+    assert_eq!(
+        history(&ens.join("k+0")),
+        history(&tmp.path().join("plain"))
+    );
+    // One thread: the same files.
+    let mut one = vec!["run", case, "--ensemble", "3", "--jobs", "1", "--no-plots"];
+    one.extend(["--out", "one"]);
+    one.extend(SHORT);
+    assert_ok(&soilcut(&one, tmp.path()));
+    for name in [
+        "ensemble.csv",
+        "summary.json",
+        "k+1/history.csv",
+        "k-1/profile.csv",
+    ] {
+        let read = |d: &str| fs::read(tmp.path().join(d).join(name)).unwrap();
+        assert_eq!(read("ens"), read("one"), "{name}");
+    }
+    // Bad input: one member, and --jobs without --ensemble.
+    let o = soilcut(
+        &["run", case, "--ensemble", "1", "--out", "bad"],
+        tmp.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("at least 2 members"));
+    assert!(!tmp.path().join("bad").exists(), "nothing written");
+    let o = soilcut(&["run", case, "--jobs", "2", "--out", "bad"], tmp.path());
     assert_eq!(o.status.code(), Some(2));
 }
 

@@ -73,12 +73,14 @@ pub fn write_run_dir(
 }
 
 /// Overlays the force and β* curves of the runs in `dirs` (and a measured
-/// curve, columns `u,force`) into `out`.
+/// curve, columns `u,force`) into `out`. The legend names each run by its
+/// case title, or by its folder where titles are equal.
 pub fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<(), PictureError> {
-    let runs = dirs
+    let mut runs = dirs
         .iter()
         .map(|d| read_finished_run(d).and_then(|r| run_data(&r)))
         .collect::<Result<Vec<_>, _>>()?;
+    label_by_folder(&mut runs, dirs);
     let measured = match measured {
         Some(path) => Some(Measured {
             label: format!(
@@ -94,6 +96,17 @@ pub fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<
     };
     soilcut_plot::draw_compare(&runs, measured.as_ref(), out)?;
     Ok(())
+}
+
+/// Where two runs share a title, each run's legend entry becomes its folder
+/// (as given), so that runs of one case can be told apart.
+fn label_by_folder(runs: &mut [RunData], dirs: &[PathBuf]) {
+    let titles: Vec<String> = runs.iter().map(|r| r.title.clone()).collect();
+    for (run, dir) in runs.iter_mut().zip(dirs) {
+        if titles.iter().filter(|t| **t == run.title).count() > 1 {
+            run.title = dir.display().to_string();
+        }
+    }
 }
 
 /// The columns of `table` named in `names`, in that order.

@@ -27,6 +27,8 @@ use std::fmt::Write as _;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+pub mod ensembles;
+
 /// Length ahead of the blade's final position, in depths, over which the
 /// final surfaces are compared.
 pub const PROFILE_REACH_DEPTHS: f64 = 5.0;
@@ -47,7 +49,7 @@ pub enum Refine {
 
 impl Refine {
     /// (v0, h) of level k from the case's (v0, h).
-    fn level(self, level: usize, (v0, h): (f64, f64)) -> (f64, f64) {
+    pub fn level(self, level: usize, (v0, h): (f64, f64)) -> (f64, f64) {
         let f = 2f64.powi(level as i32);
         match self {
             Refine::Both => (v0 / f, h / f),
@@ -56,7 +58,8 @@ impl Refine {
         }
     }
 
-    fn describe(self) -> &'static str {
+    /// What level k runs at, in words.
+    pub fn describe(self) -> &'static str {
         match self {
             Refine::Both => "increment v0/2^k and node spacing h/2^k",
             Refine::Increment => "increment v0/2^k at the case's node spacing h",

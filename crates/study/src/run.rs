@@ -29,6 +29,16 @@ impl BaseCase {
         BaseCase::new(text, overrides)
     }
 
+    /// This base case with `extra` overrides after its own, for every run.
+    pub fn with(&self, extra: &[Override]) -> BaseCase {
+        let mut overrides = self.overrides.clone();
+        overrides.extend_from_slice(extra);
+        BaseCase {
+            text: self.text.clone(),
+            overrides,
+        }
+    }
+
     /// The case with `extra` overrides applied after the base ones.
     pub fn load(&self, extra: &[Override]) -> Result<LoadedCase, InputError> {
         let all: Vec<Override> = self.overrides.iter().chain(extra).cloned().collect();
