@@ -23,6 +23,21 @@ fn fig5_run(bencher: Bencher, per_depth: u32) {
         .bench(|| run(divan::black_box(&case)));
 }
 
+/// Whole run of each paper case at its defaults (the targets of issue 19:
+/// `docs/performance.md`, "Time to accuracy in the ensemble sense").
+#[divan::bench(
+    args = ["original", "table1-s", "fig8b", "table1-hs", "fig5"],
+    sample_count = 3,
+    sample_size = 1
+)]
+fn paper_case_at_defaults(bencher: Bencher, name: &str) {
+    let case = shipped_case(&format!("paper/{name}.toml"), &[]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
 /// Whole run of the original model's case at d/500 (its increment until
 /// the defaults of issue 11), for comparison with earlier figures.
 #[divan::bench(sample_count = 5, sample_size = 1)]

@@ -9,6 +9,7 @@
 // they are written (`out/<name>`), not rustdoc markup.
 #![allow(rustdoc::invalid_html_tags)]
 
+mod accuracy_cmd;
 mod analytic_cmd;
 mod ensemble_cmd;
 mod landscape_cmd;
@@ -148,6 +149,9 @@ enum Command {
     /// Run a case with the increment halved level after level and report what converges.
     #[command(after_help = study_cmd::CONVERGE_EXAMPLES)]
     Converge(study_cmd::ConvergeArgs),
+    /// Judge one ensemble folder against a reference ensemble folder by the ensemble rule.
+    #[command(after_help = accuracy_cmd::EXAMPLES)]
+    Accuracy(accuracy_cmd::AccuracyArgs),
 }
 
 /// The case and the folder its outputs go to: the options of every command
@@ -247,6 +251,7 @@ fn main() -> ExitCode {
         Command::Sweep(args) => study_cmd::sweep(args),
         Command::Fit(args) => study_cmd::fit(args),
         Command::Converge(args) => study_cmd::converge(args),
+        Command::Accuracy(args) => accuracy_cmd::accuracy(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

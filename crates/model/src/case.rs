@@ -101,15 +101,16 @@ pub struct Soil {
     pub surcharge: f64,
 }
 
-/// `run.increment` when a case does not give it: v0 = d / 1000, which puts
-/// every unit-window mean force of every paper case within 1 % of the
-/// converged value (docs/performance.md, "Time to accuracy"); the node
+/// `run.increment` when a case does not give it: v0 = d / 500, the
+/// coarsest of d/250, d/500 and d/1000 that is accurate by the ensemble rule
+/// (docs/model.md §12.1, (M40)) on every paper case, against the reference
+/// grid's ensemble at d/2000 (`docs/studies/ensemble-accuracy/`); the node
 /// spacing defaults to `default_node_spacing`.
-pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1000.0;
+pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 
 /// Node spacings per blade depth of the default coarse grid, used where
-/// the soil never softens: h = d / 25 is within 0.1 % of the converged
-/// window means of Fig. 8b at v0 = d / 1000 (docs/performance.md).
+/// the soil never softens: h = d / 25 at v0 = d / 500 is accurate by the
+/// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`).
 pub const COARSE_NODES_PER_DEPTH: f64 = 25.0;
 
 /// `run.node_spacing` when a case does not give it, for the increment v0:

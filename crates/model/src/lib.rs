@@ -7,6 +7,7 @@
 
 #![warn(missing_docs)]
 
+pub mod accuracy;
 pub mod analytic;
 pub mod avalanche;
 pub mod band;

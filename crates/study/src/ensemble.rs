@@ -25,7 +25,7 @@ use soilcut_model::Model;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod files;
-pub use files::{accuracy_rule, ENVELOPE};
+pub use files::{accuracy_rule, RecordedSpread, ENVELOPE};
 
 /// Members of an ensemble by default (k = −3 … 3).
 pub const DEFAULT_MEMBERS: usize = 7;
@@ -77,7 +77,7 @@ impl Perturbation {
         })
     }
 
-    /// The key's value in member k.
+    /// The key's value in member k (M39).
     pub fn value(&self, k: i32) -> f64 {
         if k == 0 {
             self.base

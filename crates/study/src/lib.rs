@@ -7,8 +7,8 @@
 //!   a Nelder-Mead polish), with profile-likelihood intervals and which keys
 //!   the curves determine.
 //! * [`ensemble`]: one case run with imperceptible perturbations, the
-//!   spread of its window means; [`accuracy`]: the rule that judges a
-//!   scheme's ensemble against the reference grid's.
+//!   spread of its window means, judged by the rule of [`accuracy`]
+//!   (defined in `soilcut-model`).
 //! * [`converge`]: one case with the increment halved level after level,
 //!   and which averaged quantities converge (docs/model.md §12).
 //!
@@ -24,7 +24,6 @@
 
 #![warn(missing_docs)]
 
-pub mod accuracy;
 pub mod converge;
 pub mod csv;
 pub mod ensemble;
@@ -37,6 +36,8 @@ pub mod sweep;
 
 pub use error::StudyError;
 pub use run::{BaseCase, RunResult};
+/// The ensemble rule (docs/model.md §12.1), defined with the model.
+pub use soilcut_model::accuracy;
 
 /// Progress of a study: called with (runs finished, runs in all), once
 /// with 0 before the first run and then after each run, from the worker

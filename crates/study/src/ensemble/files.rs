@@ -202,3 +202,72 @@ impl EnsembleResult {
 fn write_member(dir: &Path, m: &Member, pictures: bool) -> Result<(), OutputError> {
     soilcut_io::write_run_dir(&dir.join(member_folder(m.k)), &m.run.files, false, pictures)
 }
+
+/// The spreads an ensemble's folder records: what the accuracy rule needs
+/// to judge one ensemble against another without rerunning either.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordedSpread {
+    /// The case's title.
+    pub title: String,
+    /// Each unit window's spread (`ensemble.csv`).
+    pub windows: Vec<Spread>,
+    /// The whole-run mean's spread (`summary.json`).
+    pub whole_run: Spread,
+}
+
+impl RecordedSpread {
+    /// Reads `dir/ensemble.csv` and `dir/summary.json`.
+    pub fn read(dir: &Path) -> Result<RecordedSpread, soilcut_io::RunFilesError> {
+        let table = soilcut_io::Table::read(&dir.join("ensemble.csv"))?;
+        let [n, mean, std, min, max] =
+            ["members", "mean", "std", "min", "max"].map(|c| table.column(c));
+        let (n, mean, std, min, max) = (n?, mean?, std?, min?, max?);
+        let windows = (0..table.len())
+            .map(|i| Spread {
+                n: n[i] as usize,
+                mean: mean[i],
+                std: std[i],
+                min: min[i],
+                max: max[i],
+            })
+            .collect();
+        let path = dir.join("summary.json");
+        let bad = |message: String| soilcut_io::RunFilesError {
+            path: path.clone(),
+            message,
+        };
+        let text = std::fs::read_to_string(&path).map_err(|e| bad(e.to_string()))?;
+        let json: Value = serde_json::from_str(&text).map_err(|e| bad(e.to_string()))?;
+        let number = |v: &Value, key: &str| {
+            v[key]
+                .as_f64()
+                .ok_or_else(|| bad(format!("mean_force_norm.{key}: expected a number")))
+        };
+        let whole = &json["mean_force_norm"];
+        let whole_run = Spread {
+            n: json["members"]
+                .as_u64()
+                .ok_or_else(|| bad("members: expected a whole number".into()))?
+                as usize,
+            mean: number(whole, "mean")?,
+            std: number(whole, "std")?,
+            min: number(whole, "min")?,
+            max: number(whole, "max")?,
+        };
+        Ok(RecordedSpread {
+            title: json["title"].as_str().unwrap_or_default().to_string(),
+            windows,
+            whole_run,
+        })
+    }
+
+    /// This ensemble judged against `reference` by the rule.
+    pub fn agreement(&self, reference: &RecordedSpread) -> crate::accuracy::Agreement {
+        crate::accuracy::agreement(
+            &self.windows,
+            &self.whole_run,
+            &reference.windows,
+            &reference.whole_run,
+        )
+    }
+}

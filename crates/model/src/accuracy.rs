@@ -1,9 +1,10 @@
-//! When a scheme is accurate: the ensemble rule (docs/model.md §12).
+//! When a scheme is accurate: the ensemble rule (docs/model.md §12.1,
+//! (M40)).
 //!
 //! The model is chaotic: an imperceptible change of the input moves a late
 //! unit-window mean force by 1-2 %, so one run against one reference run
 //! asks more than the model decides. A scheme is judged by ensembles
-//! ([`crate::ensemble`]): it is **accurate** on a case when every unit-window
+//! of perturbed runs: it is **accurate** on a case when every unit-window
 //! ensemble mean of P/(γ0 d²) lies within
 //!
 //! ```text
@@ -105,7 +106,7 @@ impl Agreement {
 }
 
 /// The window tolerance of a scheme's spread `a` against the reference's
-/// `r`: two standard errors of the difference of the means, relative,
+/// `r` (M40): two standard errors of the difference of the means, relative,
 /// clamped to [[`WINDOW_FLOOR`], [`WINDOW_CEILING`]].
 pub fn window_tolerance(a: &Spread, r: &Spread) -> f64 {
     let se = (a.standard_error().powi(2) + r.standard_error().powi(2)).sqrt();
@@ -117,7 +118,7 @@ fn deviation(a: &Spread, r: &Spread) -> f64 {
 }
 
 /// Judges the scheme's window spreads and whole-run spread against the
-/// reference's (windows beyond the shorter list are not judged).
+/// reference's by (M40) (windows beyond the shorter list are not judged).
 pub fn agreement(
     windows: &[Spread],
     whole_run: &Spread,

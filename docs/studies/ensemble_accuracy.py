@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Time to accuracy in the ensemble sense (docs/performance.md, docs/model.md §12).
+
+For each paper case, runs an ensemble of 7 perturbed runs (`soilcut run
+--ensemble 7`) for each scheme below and judges it against the reference
+grid's ensemble at d/2000 with `soilcut accuracy` (the rule: every
+unit-window ensemble mean within clamp(2 standard errors of the difference,
+1 %, 2.5 %), the whole-run mean within 1 %).
+
+    python3 docs/studies/ensemble_accuracy.py --soilcut target/release/soilcut --out DIR
+
+writes DIR/runs.csv (one row per case and scheme: d/v0, d/h, the median
+member wall time, the whole-run ensemble mean and standard deviation, the
+worst window's |deviation| / tolerance and the verdict) and DIR/table.md.
+Ensembles are kept under DIR/runs/ (or --runs) and reused when present.
+Standard library only.
+"""
+
+import argparse
+import csv
+import json
+import statistics
+import subprocess
+from pathlib import Path
+
+CASES = ["original", "table1-s", "fig8b", "table1-hs", "fig5"]
+REFERENCE = 2000
+# (name, d/v0, d/h): the reference grid (h = v0) and the coarse grid.
+SCHEMES = [
+    ("reference d/250", 250, 250),
+    ("reference d/500", 500, 500),
+    ("reference d/1000", 1000, 1000),
+    ("coarse d/500, h d/25", 500, 25),
+    ("coarse d/1000, h d/25", 1000, 25),
+]
+
+
+def depth_of(case: Path) -> float:
+    for line in case.read_text().splitlines():
+        key, _, value = line.partition("=")
+        if key.strip() == "depth":
+            return float(value.split("#")[0])
+    raise SystemExit(f"{case}: no blade depth")
+
+
+def ensemble(soilcut, case, depth, per_v0, per_h, folder, jobs):
+    """The ensemble folder, run unless it exists."""
+    if not (folder / "ensemble.csv").exists():
+        v0 = depth / per_v0
+        h = v0 * round((depth / per_h) / v0)
+        cmd = [soilcut, "run", str(case), "--ensemble", "7", "--jobs", str(jobs)]
+        cmd += ["--set", f"run.increment={v0!r}", "--set", f"run.node_spacing={h!r}"]
+        cmd += ["--no-plots", "--quiet", "--force", "--out", str(folder)]
+        subprocess.run(cmd, check=True)
+    return folder
+
+
+def median_wall_time(folder):
+    with open(folder / "timing.csv") as f:
+        return statistics.median(float(r["wall_time_s"]) for r in csv.DictReader(f))
+
+
+def judge(soilcut, folder, reference):
+    out = subprocess.run(
+        [soilcut, "accuracy", str(folder), str(reference), "--json"],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    return json.loads(out)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--soilcut", default="target/release/soilcut")
+    p.add_argument("--out", type=Path, default=Path("docs/studies/ensemble-accuracy"))
+    p.add_argument("--runs", type=Path, help="where the ensembles go [OUT/runs]")
+    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--cases", nargs="*", default=CASES)
+    args = p.parse_args()
+    runs = args.runs or args.out / "runs"
+    rows = []
+    for name in args.cases:
+        case = Path("cases/paper") / f"{name}.toml"
+        d = depth_of(case)
+        ref = ensemble(
+            args.soilcut, case, d, REFERENCE, REFERENCE, runs / name / "ref-d2000", args.jobs
+        )
+        ref_time = median_wall_time(ref)
+        ref_mean = json.loads((ref / "summary.json").read_text())["mean_force_norm"]
+        rows.append(
+            [name, f"reference d/{REFERENCE}", REFERENCE, REFERENCE, ref_time]
+            + [ref_mean["mean"], ref_mean["std"], 0.0, "reference"]
+        )
+        for scheme, per_v0, per_h in SCHEMES:
+            tag = f"v{per_v0}-h{per_h}"
+            folder = ensemble(args.soilcut, case, d, per_v0, per_h, runs / name / tag, args.jobs)
+            verdict = judge(args.soilcut, folder, ref)
+            whole = json.loads((folder / "summary.json").read_text())["mean_force_norm"]
+            rows.append(
+                [name, scheme, per_v0, per_h, median_wall_time(folder)]
+                + [whole["mean"], whole["std"], verdict["worst_ratio"]]
+                + ["yes" if verdict["accurate"] else "no"]
+            )
+    write(args.out, rows)
+
+
+def write(out, rows):
+    out.mkdir(parents=True, exist_ok=True)
+    header = ["case", "scheme", "d_over_v0", "d_over_h", "median_member_wall_time_s"]
+    header += ["mean_force_norm", "std_force_norm", "worst_deviation_over_tolerance", "accurate"]
+    with open(out / "runs.csv", "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(header)
+        w.writerows(rows)
+    lines = [
+        "| case | scheme | median wall time a member (s) | whole-run mean ± sd "
+        "| worst deviation / tolerance | accurate |",
+        "|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append(
+            f"| {r[0]} | {r[1]} | {r[4]:.3f} | {r[5]:.4f} ± {r[6]:.4f} | {r[7]:.2f} | {r[8]} |"
+        )
+    (out / "table.md").write_text("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
