@@ -11,7 +11,6 @@ pub mod analytic;
 pub mod avalanche;
 pub mod band;
 pub mod case;
-mod far_field;
 pub mod kinematics;
 pub mod landscape;
 pub mod material;
