@@ -173,7 +173,7 @@ impl Avalanche {
         let tolerance = SLOPE_TOLERANCE * s;
         for i in window {
             let w = surface.node_weight(i, first);
-            let g = sign * surface.height[i] + s * surface.spacings_from(i, first);
+            let g = sign * surface.height[i] + s * surface.face_at(first).spacings(i);
             let mut top = Pool::new(i, w, g);
             while self.pools.len() > bottom {
                 let below = self.pools.last_mut().expect("a pool below");
@@ -222,7 +222,7 @@ impl Avalanche {
             .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
-            let new = sign * (mean - s * surface.spacings_from(i, first));
+            let new = sign * (mean - s * surface.face_at(first).spacings(i));
             let w = surface.node_weight(i, first) * surface.spacing;
             let delta = (new - surface.height[i]) * w;
             if delta < 0.0 {

@@ -109,9 +109,9 @@ impl Kinematics {
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
-                None => slide_block(surface, band.blade, choice, rake),
+                None => slide_block(surface, band.face.node, choice, rake),
             };
-        surface.height[band.blade + 1] += deepening;
+        surface.height[band.face.node + 1] += deepening;
         let update = Update {
             trench_mass,
             ..update
@@ -125,7 +125,7 @@ impl Kinematics {
     /// in the trench) and the weight from the face to j less it, which the
     /// update keeps; the unit weights of the face to j are saved.
     fn start(&mut self, surface: &Surface, band: &Band, advance: Advance) -> (f64, f64) {
-        let (b, j) = (band.blade, band.emergence);
+        let (b, j) = (band.face.node, band.emergence);
         // The strip the blade moves through: soil below the tip's path
         // (from depth d to d + Δd) stays behind; what lies between that path
         // and the slip line is pushed up the face (`deepening` adds to the
@@ -149,7 +149,12 @@ impl Kinematics {
         motion: BandMotion,
         rule: BandShearRule,
     ) -> Option<Update> {
-        let (b, j, dx, t) = (band.blade, band.emergence, surface.spacing, band.tan_beta);
+        let (b, j, dx, t) = (
+            band.face.node,
+            band.emergence,
+            surface.spacing,
+            band.tan_beta,
+        );
         let (e, rise, slip) = (band.thickness, motion.rise, motion.slip);
         if e == 0.0 || e + rise - dx * t < 0.0 {
             return None;
@@ -193,7 +198,7 @@ impl Kinematics {
     /// band or the images fold over (a band narrower than the grid resolves).
     /// A slip line (no thickness) moves every node before j with the block.
     fn trace_image(&mut self, surface: &Surface, band: &Band, rise: f64, v0: f64) -> Option<f64> {
-        let (b, j) = (band.blade, band.emergence);
+        let (b, j) = (band.face.node, band.emergence);
         let h = &surface.height;
         let banded = band.thickness > 0.0;
         self.image.clear();
@@ -338,7 +343,7 @@ impl Kinematics {
     /// would have to absorb every difference of γ along the block, which can
     /// drive its unit weight negative.
     fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
-        let b = band.blade;
+        let b = band.face.node;
         for i in b + 1..first_band {
             let total = surface.height[i] - surface.floor;
             let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);

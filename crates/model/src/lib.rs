@@ -11,6 +11,7 @@ pub mod analytic;
 pub mod avalanche;
 pub mod band;
 pub mod case;
+pub mod grid;
 pub mod kinematics;
 pub mod landscape;
 pub mod material;

@@ -482,13 +482,12 @@ impl Simulation {
         let y_emergence = self.surface.height[j];
         let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
         let band = Band::new(
-            b,
+            self.surface.face_at(b),
             j,
             (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
             depth,
             self.surface.spacing,
-            self.surface.offset_of(b),
         );
         let advance = self.advance(deepening);
         let update = self.kinematics.apply(

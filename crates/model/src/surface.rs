@@ -14,7 +14,9 @@
 //! surface, integrated with the trapezoid rule over the nodes in front of the
 //! blade: the weight of soil is M = h Σ w_i γ_i (y_i + d), w_i = 1 inside,
 //! ½ at the far end, ½ (1 − δ/h) at the face and 1 − ½ δ/h next to it (the
-//! face's segment is h − δ long).
+//! face's segment is h − δ long; `FaceNode`).
+
+use crate::grid::FaceNode;
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
@@ -104,18 +106,18 @@ impl Surface {
         }
     }
 
-    /// Length of the segment from node i to node i + 1.
-    pub fn segment(&self, i: usize) -> f64 {
-        self.spacing * (1.0 - self.offset_of(i))
+    /// The face as node `first` sees it: its offset if it is the face
+    /// node, else none.
+    pub fn face_at(&self, first: usize) -> FaceNode {
+        FaceNode {
+            node: first,
+            offset: self.offset_of(first),
+        }
     }
 
-    /// (x_i − x_first) / h: node i's distance from node `first` in spacings.
-    pub fn spacings_from(&self, i: usize, first: usize) -> f64 {
-        if i == first {
-            0.0
-        } else {
-            (i - first) as f64 - self.offset_of(first)
-        }
+    /// Length of the segment from node i to node i + 1.
+    pub fn segment(&self, i: usize) -> f64 {
+        self.spacing * self.face_at(self.face).segment(i)
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.
@@ -141,12 +143,8 @@ impl Surface {
     pub fn node_weight(&self, i: usize, first: usize) -> f64 {
         if i + 1 == self.len() {
             0.5
-        } else if i == first {
-            0.5 * (1.0 - self.offset_of(first))
-        } else if i == first + 1 {
-            1.0 - 0.5 * self.offset_of(first)
         } else {
-            1.0
+            self.face_at(first).node_weight(i)
         }
     }
 

@@ -34,7 +34,7 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        let (b, j, v0) = (band.blade, band.emergence, advance.increment);
+        let (b, j, v0) = (band.face.node, band.emergence, advance.increment);
         let deepening = advance.deepening;
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         let area_before = region_area(surface, b, j + 1);
@@ -79,7 +79,7 @@ impl Kinematics {
         // The face node: the face's own soil, risen with the block, and the
         // soil the face swept over on its half segment.
         let swept = 0.5 * v0 * (thickness + motion.rise + deepening);
-        let half_segment = 0.5 * (1.0 - advance.face_offset) * surface.spacing;
+        let half_segment = surface.face_at(face).node_weight(face) * surface.spacing;
         surface.height[face] = self.old_height[0] + motion.rise + swept / half_segment;
         surface.accumulated_shear[face] = self.old_shear[0];
         surface.unit_weight[face] = self.old_unit_weight[0];
@@ -132,7 +132,7 @@ impl Kinematics {
         (old_face_x, old_segment): (f64, f64),
         (v0, rise): (f64, f64),
     ) {
-        let b = band.blade;
+        let b = band.face.node;
         let c = v0 / surface.spacing;
         for i in face + 1..first_band {
             let q = i - b;
@@ -160,7 +160,7 @@ impl Kinematics {
     /// position f moved by f (v0, rise), remapped as the block's with the
     /// fraction f of its Courant number. The band's nodes keep their state.
     fn carry_band(&self, surface: &mut Surface, band: &Band, first_band: usize, c: f64, rise: f64) {
-        let b = band.blade;
+        let b = band.face.node;
         for i in first_band.max(b + 2)..band.emergence {
             let q = i - b;
             let f = self.position[q];
@@ -179,9 +179,11 @@ impl Kinematics {
         for i in first_band..=band.emergence {
             let share = match rule {
                 BandShearRule::Full => 1.0,
-                BandShearRule::ByPosition => {
-                    self.position.get(i - band.blade).copied().unwrap_or(0.0)
-                }
+                BandShearRule::ByPosition => self
+                    .position
+                    .get(i - band.face.node)
+                    .copied()
+                    .unwrap_or(0.0),
             };
             surface.accumulated_shear[i] += share * slip;
         }

@@ -56,7 +56,7 @@ impl Prefix {
         band: &Band,
         fresh: BandAngles,
     ) -> BandAngles {
-        let (b, j) = (band.blade, band.emergence);
+        let (b, j) = (band.face.node, band.emergence);
         let m = band.footprint(&surface.height);
         if m == 0 {
             return node_angles(surface, j);

@@ -80,7 +80,7 @@ impl Block {
             if j >= limit {
                 break BlockEnd::Next(j);
             }
-            if far_field_from(surface, input, j) {
+            if far_field_from(surface, input, lines, j) {
                 break BlockEnd::FarField(j);
             }
             // The emergence node always has a neighbour ahead of it.

@@ -11,6 +11,7 @@ use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
 use super::select::Best;
 use crate::band::stretch;
+use crate::grid::FaceNode;
 use crate::mechanism::ForceFactor;
 use crate::rake::Rake;
 use crate::surface::Surface;
@@ -21,9 +22,9 @@ use crate::surface::Surface;
 /// W(n) = Δx [base + S_gh + γ0 d (n − n_s)
 ///            − (d/(n − δ')) (S_gk + γ0 Σ_{k=n_s}^{n−1} (k − δ'))]   (M32).
 pub(super) struct FarField {
+    face: FaceNode,
     d: f64,
     dx: f64,
-    offset: f64,
     base: f64,
     sum_gh: f64,
     sum_gk: f64,
@@ -34,9 +35,9 @@ pub(super) struct FarField {
 impl FarField {
     pub(super) fn new(lines: &Lines, gamma: f64, start: usize) -> Self {
         FarField {
+            face: lines.face,
             d: lines.d,
             dx: lines.dx,
-            offset: lines.offset,
             base: lines.base,
             sum_gh: lines.sum_gh,
             sum_gk: lines.sum_gk,
@@ -48,7 +49,7 @@ impl FarField {
     pub(super) fn weight(&self, n: usize) -> f64 {
         let s = self.start;
         let ahead = (n - s) as f64;
-        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64 - self.offset * ahead;
+        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64 - self.face.offset * ahead;
         let r = self.d / self.spacings(n);
         self.dx
             * (self.base + self.sum_gh + self.gamma * self.d * ahead
@@ -57,7 +58,7 @@ impl FarField {
 
     /// Spacings from the face to node b + n.
     fn spacings(&self, n: usize) -> f64 {
-        n as f64 - self.offset
+        self.face.spacings(self.face.node + n)
     }
 
     fn slope(&self, n: usize, rake: &Rake) -> Option<Slope> {
@@ -68,7 +69,7 @@ impl FarField {
     fn first_admissible(&self, r_min: f64) -> usize {
         let admissible = |n: usize| self.d <= r_min * self.spacings(n);
         let mut n = if r_min.is_finite() {
-            ((self.d / r_min + self.offset).ceil() as usize).max(self.start)
+            ((self.d / r_min + self.face.offset).ceil() as usize).max(self.start)
         } else {
             self.start
         };
@@ -94,7 +95,7 @@ impl FarField {
         A: Fn(BandAngles) -> BandAngles,
         F: Fn(BandAngles, f64) -> ForceFactor,
     {
-        let b = lines.b;
+        let b = lines.face.node;
         let fresh = (input.angles)(input.fresh);
         let fresh_walls = Lower::new(fresh.friction, input);
         let mut evaluations = 0;
@@ -160,7 +161,12 @@ impl FarField {
 /// Whether candidate j and everything beyond lies on undisturbed flat ground
 /// with a footprint (and its secant window) that does not reach disturbed
 /// nodes.
-pub(super) fn far_field_from<A, F>(surface: &Surface, input: &SearchInput<A, F>, j: usize) -> bool
+pub(super) fn far_field_from<A, F>(
+    surface: &Surface,
+    input: &SearchInput<A, F>,
+    lines: &Lines,
+    j: usize,
+) -> bool
 where
     A: Fn(BandAngles) -> BandAngles,
     F: Fn(BandAngles, f64) -> ForceFactor,
@@ -170,7 +176,7 @@ where
         return false;
     }
     let dx = surface.spacing;
-    let spacings = (j - input.blade) as f64 - surface.offset_of(input.blade);
+    let spacings = lines.face.spacings(j);
     // The footprint below is at least dB / (tan β Δx) + 2 with
     // 1 / tan β = Δx (x_j − x_b) / d − cot α (`Rake`): a test without
     // a square root for the many nodes that fail it.

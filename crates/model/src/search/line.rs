@@ -13,11 +13,12 @@
 //!
 //! On a coarse grid the face lies δ ahead of node b's grid point, so node
 //! i is i − b − δ/Δx spacings from it and the face's segment is 1 − δ/Δx
-//! long (docs/model.md §9).
+//! long (`FaceNode`, docs/model.md §9).
 
 use super::angles::BandAngles;
 use super::input::SearchInput;
 use crate::band::{stretch, Band};
+use crate::grid::FaceNode;
 use crate::mechanism::ForceFactor;
 use crate::rake::Rake;
 use crate::surface::Surface;
@@ -26,11 +27,10 @@ use crate::surface::Surface;
 /// running minimum of (M3) over the nodes scanned so far.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Lines {
-    pub(super) b: usize,
+    /// The face: node b and its offset δ / Δx (0 on the grid).
+    pub(super) face: FaceNode,
     pub(super) d: f64,
     pub(super) dx: f64,
-    /// δ / Δx: the face's offset from node b's grid point (0 on the grid).
-    pub(super) offset: f64,
     /// ½ γ_b (y_b + d) (1 − δ/Δx): the face node's trapezoid share.
     pub(super) base: f64,
     /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
@@ -43,31 +43,15 @@ pub(super) struct Lines {
 impl Lines {
     /// No node scanned yet, the tip at depth d below the face at node b.
     pub(super) fn new(surface: &Surface, b: usize, d: f64) -> Self {
-        let offset = surface.offset_of(b);
+        let face = surface.face_at(b);
         Lines {
-            b,
+            face,
             d,
             dx: surface.spacing,
-            offset,
-            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * (1.0 - offset),
+            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * face.segment(b),
             sum_gh: 0.0,
             sum_gk: 0.0,
             r_min: f64::INFINITY,
-        }
-    }
-
-    /// (x_j − x_b) / Δx for a node j ahead of the face.
-    pub(super) fn spacings(&self, j: usize) -> f64 {
-        (j - self.b) as f64 - self.offset
-    }
-
-    /// Trapezoid weight of node i between the face and a candidate beyond
-    /// it: the face's segment is 1 − δ/Δx long.
-    fn node_weight(&self, i: usize) -> f64 {
-        if i == self.b + 1 {
-            1.0 - 0.5 * self.offset
-        } else {
-            1.0
         }
     }
 
@@ -75,7 +59,7 @@ impl Lines {
     /// weight W_j if it is admissible (M3, M5), then j joins the sums.
     #[inline]
     pub(super) fn advance(&mut self, surface: &Surface, j: usize) -> Option<(f64, f64)> {
-        let k = self.spacings(j);
+        let k = self.face.spacings(j);
         let rise = surface.height[j] + self.d;
         let mut line = None;
         if rise <= self.r_min * k {
@@ -84,7 +68,7 @@ impl Lines {
             let weight = self.dx * (self.base + self.sum_gh - r * self.sum_gk);
             line = Some((r / self.dx, weight));
         }
-        let g = surface.unit_weight[j] * self.node_weight(j);
+        let g = surface.unit_weight[j] * self.face.node_weight(j);
         self.sum_gh += g * rise;
         self.sum_gk += g * k;
         line
@@ -117,13 +101,12 @@ impl Slope {
     /// The band whose lower boundary is this line to node j.
     pub(super) fn band(&self, lines: &Lines, j: usize, band_width: f64) -> Band {
         Band::new(
-            lines.b,
+            lines.face,
             j,
             (self.grid, self.tan_beta),
             band_width,
             lines.d,
             lines.dx,
-            lines.offset,
         )
     }
 }
@@ -151,7 +134,7 @@ impl Line {
     {
         let t = self.slope.tan_beta;
         let factor = (input.factor)(angles, t);
-        let length = self.slope.length(lines.spacings(self.node), lines.dx);
+        let length = self.slope.length(lines.face.spacings(self.node), lines.dx);
         input.loads.force(&factor, self.weight, length, t)
     }
 }

@@ -20,7 +20,7 @@ where
     A: Fn(BandAngles) -> BandAngles,
     F: Fn(BandAngles, f64) -> ForceFactor,
 {
-    let b = lines.b;
+    let b = lines.face.node;
     if j <= b || j + 1 >= surface.len() {
         return None;
     }
