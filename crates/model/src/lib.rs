@@ -14,6 +14,7 @@ pub mod case;
 pub mod grid;
 pub mod kinematics;
 pub mod landscape;
+mod laws;
 pub mod material;
 pub mod mechanism;
 pub mod peaks;

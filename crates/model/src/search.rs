@@ -34,11 +34,10 @@ mod line;
 mod seed;
 mod select;
 
-pub use angles::BandAngles;
+pub use crate::laws::BandAngles;
 pub use input::SearchInput;
 pub use select::{Choice, TIE_TOLERANCE};
 
-use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
 use block::{Block, BlockEnd};
 use bounds::LeastFriction;
@@ -74,16 +73,12 @@ struct Landscape {
 impl Search {
     /// The minimum-effort mechanism, or `None` if no admissible candidate
     /// exists within a domain of `max_nodes` nodes.
-    pub fn run<A, F>(
+    pub fn run(
         &mut self,
         surface: &mut Surface,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         max_nodes: usize,
-    ) -> Option<Choice>
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> Option<Choice> {
         let prune = self.landscape.is_none();
         let found = self.scan(surface, input, max_nodes, prune);
         if found.is_some() || !prune {
@@ -104,17 +99,13 @@ impl Search {
     /// The outward scan over candidates j = b + 1, b + 2, … (M2, M3, M5);
     /// with `prune` false, no candidate is rejected unevaluated except
     /// beyond the stopping bound.
-    fn scan<A, F>(
+    fn scan(
         &mut self,
         surface: &mut Surface,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         max_nodes: usize,
         prune: bool,
-    ) -> Option<Choice>
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> Option<Choice> {
         let b = input.blade;
         self.best.start(prune);
         self.block.start_scan();

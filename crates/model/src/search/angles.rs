@@ -8,20 +8,8 @@
 //! from prefix sums along the scan, so each candidate costs O(1).
 
 use crate::band::Band;
+use crate::laws::BandAngles;
 use crate::surface::Surface;
-
-/// The band angles a candidate takes from its footprint (radians).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BandAngles {
-    /// Mean of φ(ut_i) over the footprint.
-    pub friction: f64,
-    /// Mean of ψ(ut_i) over the footprint.
-    pub dilation: f64,
-    /// Mean of ut_i over the footprint.
-    pub shear: f64,
-    /// Every node of the footprint is unsheared (ut = 0).
-    pub fresh: bool,
-}
 
 /// Prefix sums of φ, ψ and ut from the blade node, one entry per node
 /// scanned (reused from step to step).

@@ -8,13 +8,13 @@
 //! would have kept; they hold no branch on their bounds (which lines pass
 //! is data), so the processor overlaps candidates.
 
-use super::angles::{BandAngles, Prefix};
+use super::angles::Prefix;
 use super::bounds::{may_win, LeastFriction};
 use super::far_field::far_field_from;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
 use super::select::Best;
-use crate::mechanism::ForceFactor;
+use crate::laws::BandAngles;
 use crate::surface::Surface;
 
 /// Nodes scanned per block.
@@ -58,19 +58,15 @@ impl Block {
     /// that pass the bound before the footprint (with the best force at the
     /// block's start). Stops before a node where the scan must first do
     /// something else (`BlockEnd`).
-    pub(super) fn weigh<A, F>(
+    pub(super) fn weigh(
         &mut self,
         surface: &Surface,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         lines: &mut Lines,
         least: &mut LeastFriction,
         best: &Best,
         mut j: usize,
-    ) -> BlockEnd
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> BlockEnd {
         self.start = j;
         self.weight.clear();
         self.passed.resize(BLOCK, Line::default());
@@ -118,24 +114,23 @@ impl Block {
     /// by the first, and the bound after the footprint (with the best force
     /// at the block's start); keeps those that pass, in order. Returns the
     /// number of lines it evaluated.
-    pub(super) fn footprints<A, F>(
+    pub(super) fn footprints(
         &mut self,
         surface: &Surface,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         lines: &Lines,
         best: &Best,
-    ) -> u64
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> u64 {
         let near = self.near;
-        self.kept.resize(near, (Line::default(), input.fresh));
+        self.kept.resize(near, (Line::default(), input.laws.fresh));
         let mut kept = 0;
         for i in 0..near {
             let line = self.passed[i];
             let band = line.slope.band(lines, line.node, input.band_width);
-            let angles = (input.angles)(self.prefix.band_angles(surface, &band, input.fresh));
+            let angles =
+                input
+                    .laws
+                    .band_angles(self.prefix.band_angles(surface, &band, input.laws.fresh));
             let may_win = may_win(input, &line, &angles, best.bar);
             self.kept[kept] = (line, angles);
             kept += usize::from(angles.fresh | !best.prune | may_win);
@@ -150,17 +145,8 @@ impl Block {
     /// did. The bounds of the first two passes used the best force at the
     /// block's start, no lower than the best force now: they rejected only
     /// lines that could not beat it.
-    pub(super) fn settle<A, F>(
-        &self,
-        input: &SearchInput<A, F>,
-        lines: &Lines,
-        best: &mut Best,
-    ) -> bool
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
-        let min_factor = input.min_factor;
+    pub(super) fn settle(&self, input: &SearchInput, lines: &Lines, best: &mut Best) -> bool {
+        let min_factor = input.laws.min_factor;
         let mut stop = self.first_stop(0, best, min_factor);
         for &(line, angles) in &self.kept {
             let i = line.node - self.start;

@@ -6,9 +6,9 @@
 //! scanned so far; after it, Eq. (1) at the band's friction angle rounded
 //! down on a grid (`FactorTable`). Both tests are division-free.
 
-use super::angles::BandAngles;
 use super::input::SearchInput;
 use super::line::Line;
+use crate::laws::BandAngles;
 use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
 
@@ -21,14 +21,10 @@ pub(super) struct Lower {
 }
 
 impl Lower {
-    pub(super) fn new<A, F>(phi: f64, input: &SearchInput<A, F>) -> Self
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
         Lower {
-            rising: ForceFactor::new(phi, input.walls.0),
-            sinking: ForceFactor::new(phi, input.walls.1),
+            rising: ForceFactor::new(phi, input.laws.walls.0),
+            sinking: ForceFactor::new(phi, input.laws.walls.1),
         }
     }
 
@@ -37,17 +33,13 @@ impl Lower {
     /// the face friction only where α + β + φ ± φw > 90°: for a vertical
     /// blade the sinking block's −φw is always the lesser, for a raked one
     /// either may be, so both are tried.
-    pub(super) fn can_beat<A, F>(
+    pub(super) fn can_beat(
         &self,
         weight: f64,
         tan_beta: f64,
         bar: f64,
-        input: &SearchInput<A, F>,
-    ) -> bool
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+        input: &SearchInput,
+    ) -> bool {
         self.rising.can_beat(weight, tan_beta, bar)
             | (tan_beta <= input.face.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
     }
@@ -63,11 +55,7 @@ pub(super) struct LeastFriction {
 
 impl LeastFriction {
     /// The friction angle of the face node.
-    pub(super) fn new<A, F>(phi: f64, input: &SearchInput<A, F>) -> Self
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
         LeastFriction {
             phi,
             lower: Lower::new(phi, input),
@@ -76,11 +64,7 @@ impl LeastFriction {
 
     /// Takes in nodes j − 1 and j (a footprint ends at j).
     #[inline]
-    pub(super) fn include<A, F>(&mut self, surface: &Surface, j: usize, input: &SearchInput<A, F>)
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    pub(super) fn include(&mut self, surface: &Surface, j: usize, input: &SearchInput) {
         let (here, before) = (surface.friction[j], surface.friction[j - 1]);
         if here < self.phi || before < self.phi {
             self.phi = self.phi.min(here).min(before);
@@ -94,19 +78,11 @@ impl LeastFriction {
 /// rake (see `Lower`). With the band's dilation known, a block that rises
 /// (`Face::rises`, taken only where it decides) has the rising one in
 /// Eq. (1).
-pub(super) fn may_win<A, F>(
-    input: &SearchInput<A, F>,
-    line: &Line,
-    angles: &BandAngles,
-    bar: f64,
-) -> bool
-where
-    A: Fn(BandAngles) -> BandAngles,
-    F: Fn(BandAngles, f64) -> ForceFactor,
-{
+pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar: f64) -> bool {
     let t = line.slope.tan_beta;
     let can_beat = |rising| {
         input
+            .laws
             .table
             .below(angles.friction, rising)
             .can_beat(line.weight, t, bar)

@@ -5,7 +5,6 @@
 //! handled in blocks, each skipped whole when W(n₁) (P/W)(β(n₂)) cannot
 //! beat the best.
 
-use super::angles::BandAngles;
 use super::bounds::Lower;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
@@ -84,33 +83,29 @@ impl FarField {
 
     /// Considers the candidates from n_s on, in blocks, up to the stopping
     /// rule or `max_nodes`; returns the number evaluated in full.
-    pub(super) fn scan<A, F>(
+    pub(super) fn scan(
         &self,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         lines: &Lines,
         best: &mut Best,
         max_nodes: usize,
-    ) -> u64
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> u64 {
         let b = lines.face.node;
-        let fresh = (input.angles)(input.fresh);
+        let fresh = input.laws.band_angles(input.laws.fresh);
         let fresh_walls = Lower::new(fresh.friction, input);
         let mut evaluations = 0;
         let mut n1 = self.first_admissible(lines.r_min);
         // A candidate needs a node ahead of it within `max_nodes` (an end
         // wall may set it).
         while b + n1 + 1 < max_nodes {
-            if best.beyond_reach(self.weight(n1), input.min_factor) {
+            if best.beyond_reach(self.weight(n1), input.laws.min_factor) {
                 break;
             }
             let n2 = (n1 + (n1 / 16).max(64) - 1).min(max_nodes - 2 - b);
             if self.may_win(input, &fresh_walls, best, (n1, n2)) {
                 for n in n1..=n2 {
                     let weight = self.weight(n);
-                    if best.beyond_reach(weight, input.min_factor) {
+                    if best.beyond_reach(weight, input.laws.min_factor) {
                         return evaluations;
                     }
                     if let Some(slope) = self.slope(n, &input.rake) {
@@ -132,17 +127,13 @@ impl FarField {
     /// Whether a candidate of n₁ ..= n₂ may beat the best: weight and slip
     /// length grow with n, P/W and the cohesion term with tan β, so
     /// (n₁, β(n₂)) bounds the block from below.
-    fn may_win<A, F>(
+    fn may_win(
         &self,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         fresh_walls: &Lower,
         best: &Best,
         (n1, n2): (usize, usize),
-    ) -> bool
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> bool {
         let slopes = (self.slope(n1, &input.rake), self.slope(n2, &input.rake));
         let (Some(first), Some(last)) = slopes else {
             return false;
@@ -161,16 +152,12 @@ impl FarField {
 /// Whether candidate j and everything beyond lies on undisturbed flat ground
 /// with a footprint (and its secant window) that does not reach disturbed
 /// nodes.
-pub(super) fn far_field_from<A, F>(
+pub(super) fn far_field_from(
     surface: &Surface,
-    input: &SearchInput<A, F>,
+    input: &SearchInput,
     lines: &Lines,
     j: usize,
-) -> bool
-where
-    A: Fn(BandAngles) -> BandAngles,
-    F: Fn(BandAngles, f64) -> ForceFactor,
-{
+) -> bool {
     let undisturbed = surface.pristine_from;
     if j < undisturbed {
         return false;

@@ -15,11 +15,10 @@
 //! i is i − b − δ/Δx spacings from it and the face's segment is 1 − δ/Δx
 //! long (`FaceNode`, docs/model.md §9).
 
-use super::angles::BandAngles;
 use super::input::SearchInput;
 use crate::band::{stretch, Band};
 use crate::grid::FaceNode;
-use crate::mechanism::ForceFactor;
+use crate::laws::BandAngles;
 use crate::rake::Rake;
 use crate::surface::Surface;
 
@@ -122,18 +121,14 @@ pub(super) struct Line {
 impl Line {
     /// P_j: Eq. (1) for the band's angles, with the loads, if admissible
     /// (M4, M6, M8).
-    pub(super) fn force<A, F>(
+    pub(super) fn force(
         &self,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         lines: &Lines,
         angles: BandAngles,
-    ) -> Option<f64>
-    where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) -> Option<f64> {
         let t = self.slope.tan_beta;
-        let factor = (input.factor)(angles, t);
+        let factor = input.laws.factor(angles, t, input.face);
         let length = self.slope.length(lines.face.spacings(self.node), lines.dx);
         input.loads.force(&factor, self.weight, length, t)
     }

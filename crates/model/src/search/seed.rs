@@ -2,24 +2,19 @@
 //! evaluated on its own before the scan, so that the bounds can reject
 //! candidates from the first node on.
 
-use super::angles::{footprint_angles, BandAngles};
+use super::angles::footprint_angles;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
-use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
 
 /// Force of candidate j computed on its own (an upper bound for the scan),
 /// if it is admissible; `lines` as at the scan's start.
-pub(super) fn seed<A, F>(
+pub(super) fn seed(
     surface: &Surface,
-    input: &SearchInput<A, F>,
+    input: &SearchInput,
     mut lines: Lines,
     j: usize,
-) -> Option<f64>
-where
-    A: Fn(BandAngles) -> BandAngles,
-    F: Fn(BandAngles, f64) -> ForceFactor,
-{
+) -> Option<f64> {
     let b = lines.face.node;
     if j <= b || j + 1 >= surface.len() {
         return None;
@@ -37,6 +32,6 @@ where
     };
     let band = line.slope.band(&lines, j, input.band_width);
     let m = band.footprint(&surface.height);
-    let angles = (input.angles)(footprint_angles(surface, j, m));
+    let angles = input.laws.band_angles(footprint_angles(surface, j, m));
     line.force(input, &lines, angles)
 }

@@ -4,10 +4,9 @@
 //! minimum count as equal, and the one nearest the blade wins, so round-off
 //! cannot flip the choice between near-equal mechanisms.
 
-use super::angles::BandAngles;
 use super::input::SearchInput;
 use super::line::{Line, Lines};
-use crate::mechanism::ForceFactor;
+use crate::laws::BandAngles;
 
 /// Relative force difference below which two candidates are equal.
 pub const TIE_TOLERANCE: f64 = 1e-10;
@@ -69,16 +68,13 @@ impl Best {
 
     /// Evaluates a candidate in full (Eq. (1)) and keeps it if it can be
     /// the least.
-    pub(super) fn consider<A, F>(
+    pub(super) fn consider(
         &mut self,
-        input: &SearchInput<A, F>,
+        input: &SearchInput,
         lines: &Lines,
         line: Line,
         angles: BandAngles,
-    ) where
-        A: Fn(BandAngles) -> BandAngles,
-        F: Fn(BandAngles, f64) -> ForceFactor,
-    {
+    ) {
         let Some(force) = line.force(input, lines, angles) else {
             return;
         };
