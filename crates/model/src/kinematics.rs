@@ -37,6 +37,7 @@ use crate::case::{BandShearRule, Choices, UnitWeightRule};
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
+use std::ops::Range;
 
 mod coarse;
 
@@ -170,18 +171,9 @@ impl Kinematics {
         // stays behind the blade.
         let left_behind = dx * (-surface.floor - band.depth);
         let residual = area_before - left_behind + dilation_area - region_area(surface, b + 1, j);
-        let correction = residual / ((j - first_band_node) as f64 * dx);
-        for y in &mut surface.height[first_band_node..j] {
-            *y += correction;
-        }
+        spread_residual(surface, first_band_node..j, residual);
         shift_block_state(surface, b, first_band_node);
-        for i in first_band_node..=j {
-            let share = match rule {
-                BandShearRule::Full => 1.0,
-                BandShearRule::ByPosition => self.position[i - b],
-            };
-            surface.accumulated_shear[i] += share * slip;
-        }
+        self.accumulate_shear(surface, band, first_band_node, slip, rule);
         Some(Update {
             slip,
             dilation_area,
@@ -283,12 +275,23 @@ impl BandMotion {
             tan_psi,
         })
     }
+
+    /// The slip line's motion: the block slides along it, rise v0 tan β
+    /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
+    fn slip_line(choice: &Choice, rake: &Rake, v0: f64) -> Self {
+        let t = choice.tan_beta;
+        BandMotion {
+            rise: v0 * choice.grid_slope,
+            slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
+            tan_psi: 0.0,
+        }
+    }
 }
 
 /// The slip-line update (see the module doc).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
-    let (j, dx, t) = (choice.node, surface.spacing, choice.tan_beta);
-    let rise = dx * choice.grid_slope;
+    let j = choice.node;
+    let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.spacing);
     let h = &mut surface.height;
     h.copy_within(blade..j, blade + 1);
     for y in &mut h[blade + 1..=j] {
@@ -296,7 +299,6 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &
     }
     h[blade + 1] += rise;
     shift_block_state(surface, blade, j);
-    let slip = dx * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t);
     surface.accumulated_shear[j] += slip;
     Update {
         slip,
@@ -330,7 +332,7 @@ fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
 
 /// Weight of the columns of `nodes` as counted by `Surface::mass` with the
 /// face at node `face` (which counts half; none of them is the last node).
-fn region_mass(surface: &Surface, face: usize, nodes: std::ops::Range<usize>) -> f64 {
+fn region_mass(surface: &Surface, face: usize, nodes: Range<usize>) -> f64 {
     nodes
         .map(|i| surface.unit_weight[i] * surface.column_area(i, face))
         .sum()
@@ -345,12 +347,54 @@ impl Kinematics {
     fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
         let b = band.face.node;
         for i in b + 1..first_band {
-            let total = surface.height[i] - surface.floor;
-            let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
             let (staying, arriving) =
                 (self.old_unit_weight[i - b], self.old_unit_weight[i - 1 - b]);
-            surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+            mix_column(surface, band, i, (staying, arriving));
         }
+    }
+
+    /// Δut on the band's nodes first_band..=j: all of it, or the share f
+    /// of a node's relative position (`BandShearRule`; M22).
+    fn accumulate_shear(
+        &self,
+        surface: &mut Surface,
+        band: &Band,
+        first_band: usize,
+        slip: f64,
+        rule: BandShearRule,
+    ) {
+        for i in first_band..=band.emergence {
+            let share = match rule {
+                BandShearRule::Full => 1.0,
+                BandShearRule::ByPosition => self
+                    .position
+                    .get(i - band.face.node)
+                    .copied()
+                    .unwrap_or(0.0),
+            };
+            surface.accumulated_shear[i] += share * slip;
+        }
+    }
+}
+
+/// Column i's unit weight after the block moved over it: the soil below the
+/// band's lower boundary stayed (γ `staying`), the soil above it arrived
+/// (γ `arriving`), mixed by height (M26).
+fn mix_column(surface: &mut Surface, band: &Band, i: usize, (staying, arriving): (f64, f64)) {
+    let total = surface.height[i] - surface.floor;
+    let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
+    surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+}
+
+/// Spreads what the update gained or lost in area, `residual`, evenly in
+/// height over `nodes` (by their trapezoid weights from the face), so that
+/// the area is exactly the old area plus the dilation (M21).
+fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
+    let face = surface.face;
+    let weights: f64 = nodes.clone().map(|i| surface.node_weight(i, face)).sum();
+    let correction = residual / (weights * surface.spacing);
+    for y in &mut surface.height[nodes] {
+        *y += correction;
     }
 }
 

@@ -17,9 +17,12 @@
 //! that the area is exactly the old area plus the dilation, and the band's
 //! unit weight keeps the weight of soil exact, as on the reference grid.
 
-use super::{band_unit_weight, region_area, Advance, BandMotion, Kinematics, Update};
+use super::{
+    band_unit_weight, mix_column, region_area, spread_residual, Advance, BandMotion, Kinematics,
+    Update,
+};
 use crate::band::Band;
-use crate::case::{BandShearRule, Choices};
+use crate::case::Choices;
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
@@ -50,7 +53,7 @@ impl Kinematics {
                     thickness: 0.0,
                     ..*band
                 };
-                let m = slip_motion(choice, rake, v0);
+                let m = BandMotion::slip_line(choice, rake, v0);
                 let x = self
                     .trace_image(surface, &slip_line, m.rise, v0)
                     .expect("a slip line's image");
@@ -91,11 +94,7 @@ impl Kinematics {
         } else {
             j..j + 1
         };
-        let weights: f64 = spread.clone().map(|i| surface.node_weight(i, face)).sum();
-        let correction = residual / (weights * surface.spacing);
-        for y in &mut surface.height[spread] {
-            *y += correction;
-        }
+        spread_residual(surface, spread, residual);
         self.accumulate_shear(surface, band, first_band, motion.slip, choices.band_shear);
         let update = Update {
             slip: motion.slip,
@@ -149,10 +148,7 @@ impl Kinematics {
             surface.height[i] = carried(&self.old_height) + rise;
             surface.accumulated_shear[i] = carried(&self.old_shear);
             let arriving = carried(&self.old_unit_weight);
-            let staying = self.old_unit_weight[q];
-            let total = surface.height[i] - surface.floor;
-            let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
-            surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+            mix_column(surface, band, i, (self.old_unit_weight[q], arriving));
         }
     }
 
@@ -166,38 +162,6 @@ impl Kinematics {
             let f = self.position[q];
             surface.height[i] = remap(&self.old_height, q, f * c) + f * rise;
         }
-    }
-
-    fn accumulate_shear(
-        &self,
-        surface: &mut Surface,
-        band: &Band,
-        first_band: usize,
-        slip: f64,
-        rule: BandShearRule,
-    ) {
-        for i in first_band..=band.emergence {
-            let share = match rule {
-                BandShearRule::Full => 1.0,
-                BandShearRule::ByPosition => self
-                    .position
-                    .get(i - band.face.node)
-                    .copied()
-                    .unwrap_or(0.0),
-            };
-            surface.accumulated_shear[i] += share * slip;
-        }
-    }
-}
-
-/// The slip line's motion: the block slides along it, rise v0 tan β on
-/// the grid, Δut = v0 / cos β (`Rake` for a raked blade).
-fn slip_motion(choice: &Choice, rake: &Rake, v0: f64) -> BandMotion {
-    let t = choice.tan_beta;
-    BandMotion {
-        rise: v0 * choice.grid_slope,
-        slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
-        tan_psi: 0.0,
     }
 }
 
