@@ -54,3 +54,42 @@ impl FaceNode {
         }
     }
 }
+
+/// The discretisation of a case, chosen once and held by the surface: the
+/// node spacing h is a whole multiple k of the blade increment v0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scheme {
+    /// h, the node spacing (length).
+    pub spacing: f64,
+    /// v0, the blade's advance per increment (length).
+    pub increment: f64,
+    /// k = h / v0, whole (`Case::increments_per_node`).
+    pub increments_per_node: usize,
+}
+
+impl Scheme {
+    /// Whether the reference update applies: a block translating by v0
+    /// moves exactly one node, which needs h = v0 to the last bit (a
+    /// spacing within round-off of v0 takes the coarse update, with k = 1).
+    pub fn reference(&self) -> bool {
+        self.increment == self.spacing
+    }
+
+    /// v0 / h: the fraction of a spacing the face moves per increment (the
+    /// Courant number of the coarse update's remap).
+    pub fn courant(&self) -> f64 {
+        self.increment / self.spacing
+    }
+
+    /// The face after increment number `step` (from 1), node `face` before
+    /// it: one node every k increments, in between offset by a whole
+    /// number of increments, δ/h = (step mod k) / k.
+    pub fn face_after(&self, step: usize, face: usize) -> FaceNode {
+        let k = self.increments_per_node;
+        let sub = step % k;
+        FaceNode {
+            node: if sub == 0 { face + 1 } else { face },
+            offset: sub as f64 / k as f64,
+        }
+    }
+}

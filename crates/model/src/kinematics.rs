@@ -34,6 +34,7 @@
 
 use crate::band::Band;
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
+use crate::grid::FaceNode;
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
@@ -41,19 +42,16 @@ use std::ops::Range;
 
 mod coarse;
 
-/// How the face moves in an increment: v0, how much deeper the tip goes
-/// (Δd, negative while it rises), and the face node and its offset δ/h
-/// afterwards (node b + 1 and 0 on the reference grid h = v0).
+/// How the face moves in an increment (by v0, `Scheme::increment`): how
+/// much deeper the tip goes (Δd, negative while it rises), and the face
+/// node and its offset δ/h afterwards (node b + 1 and 0 on the reference
+/// grid h = v0; `Scheme::face_after`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Advance {
-    /// v0, the blade's advance (length).
-    pub increment: f64,
     /// Δd, how much deeper the tip goes (length).
     pub deepening: f64,
-    /// The face node after the increment.
-    pub face: usize,
-    /// δ / h of the face after the increment, in [0, 1).
-    pub face_offset: f64,
+    /// The face after the increment.
+    pub face: FaceNode,
 }
 
 /// What an update did.
@@ -100,13 +98,13 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        if advance.increment != surface.spacing {
+        if !surface.scheme.reference() {
             return self.coarse(surface, band, choice, choices, rake, advance);
         }
         let (trench_mass, mass_before) = self.start(surface, band, advance);
-        surface.face = advance.face;
+        surface.face = advance.face.node;
         let deepening = advance.deepening;
-        let motion = BandMotion::new(choice, rake, surface.spacing);
+        let motion = BandMotion::new(choice, rake, surface.scheme.spacing);
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
@@ -133,7 +131,7 @@ impl Kinematics {
         // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
         // the face less).
         let depth_below = -surface.floor - band.depth - 0.5 * advance.deepening;
-        let trench_mass = surface.unit_weight[b] * (advance.increment * depth_below);
+        let trench_mass = surface.unit_weight[b] * (surface.scheme.increment * depth_below);
         let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
         self.old_unit_weight.clear();
         self.old_unit_weight
@@ -153,7 +151,7 @@ impl Kinematics {
         let (b, j, dx, t) = (
             band.face.node,
             band.emergence,
-            surface.spacing,
+            surface.scheme.spacing,
             band.tan_beta,
         );
         let (e, rise, slip) = (band.thickness, motion.rise, motion.slip);
@@ -291,7 +289,7 @@ impl BandMotion {
 /// The slip-line update (see the module doc).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
     let j = choice.node;
-    let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.spacing);
+    let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.scheme.spacing);
     let h = &mut surface.height;
     h.copy_within(blade..j, blade + 1);
     for y in &mut h[blade + 1..=j] {
@@ -326,8 +324,8 @@ fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
     let (h, floor) = (&surface.height, surface.floor);
     let inner: f64 = h[a + 1..z].iter().map(|y| y - floor).sum();
     let face_segment = 0.5 * (h[a] - floor + h[a + 1] - floor) * surface.offset_of(a);
-    surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
-        - surface.spacing * face_segment
+    surface.scheme.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
+        - surface.scheme.spacing * face_segment
 }
 
 /// Weight of the columns of `nodes` as counted by `Surface::mass` with the
@@ -392,7 +390,7 @@ fn mix_column(surface: &mut Surface, band: &Band, i: usize, (staying, arriving):
 fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
     let face = surface.face;
     let weights: f64 = nodes.clone().map(|i| surface.node_weight(i, face)).sum();
-    let correction = residual / (weights * surface.spacing);
+    let correction = residual / (weights * surface.scheme.spacing);
     for y in &mut surface.height[nodes] {
         *y += correction;
     }

@@ -8,6 +8,7 @@
 use crate::avalanche::Avalanche;
 use crate::band::Band;
 use crate::case::{Case, CaseError};
+use crate::grid::Scheme;
 use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
@@ -123,8 +124,6 @@ pub struct Simulation {
     avalanche: Avalanche,
     /// Increments done.
     done: usize,
-    /// k = h / v0: increments per node spacing (1: the reference scheme).
-    increments_per_node: usize,
     initial_mass: f64,
 }
 
@@ -139,7 +138,12 @@ impl Simulation {
             laws.material.friction.at(0.0),
             laws.material.dilation.at(0.0),
         );
-        let surface = Surface::flat(dx, d, case.soil.unit_weight, fresh, nodes);
+        let scheme = Scheme {
+            spacing: dx,
+            increment: case.run.increment,
+            increments_per_node: case.increments_per_node(),
+        };
+        let surface = Surface::flat(scheme, d, case.soil.unit_weight, fresh, nodes);
         let initial_mass = surface.mass(0);
         let rake = Rake::new(case.blade.rake);
         let tan_repose = case.soil.repose.to_radians().tan();
@@ -152,7 +156,6 @@ impl Simulation {
             kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
             done: 0,
-            increments_per_node: case.increments_per_node(),
             initial_mass,
             case: case.clone(),
         })
@@ -257,7 +260,7 @@ impl Simulation {
 
     fn find_mechanism(&mut self, face: Face) -> Option<Choice> {
         let d = self.tip_depth();
-        let dx = self.surface.spacing;
+        let dx = self.surface.scheme.spacing;
         let input = SearchInput {
             laws: &self.laws,
             blade: self.surface.face,
@@ -324,14 +327,10 @@ impl Simulation {
     /// `deepening` deeper: one node every k increments, in between offset
     /// by a whole number of increments.
     fn advance(&self, deepening: f64) -> Advance {
-        let k = self.increments_per_node;
-        let sub = (self.done + 1) % k;
-        let face = self.surface.face;
+        let scheme = &self.surface.scheme;
         Advance {
-            increment: self.case.run.increment,
             deepening,
-            face: if sub == 0 { face + 1 } else { face },
-            face_offset: sub as f64 / k as f64,
+            face: scheme.face_after(self.done + 1, self.surface.face),
         }
     }
 
@@ -355,7 +354,7 @@ impl Simulation {
             (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
             depth,
-            self.surface.spacing,
+            self.surface.scheme.spacing,
         );
         let advance = self.advance(deepening);
         let update = self.kinematics.apply(

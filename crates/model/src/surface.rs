@@ -8,7 +8,8 @@
 //! and a block translating by v0 moves exactly one node. With k > 1 the face
 //! lies between nodes: node `face` holds the soil column at the blade, at
 //! x = face·h + δ with δ = `face_offset`·h (a whole number of increments),
-//! and the nodes ahead stay on the grid x_i = i h.
+//! and the nodes ahead stay on the grid x_i = i h. The surface holds the
+//! scheme (`Scheme`), so that h, v0 and k are chosen in one place.
 //!
 //! The soil of node i is its column from the fixed floor y = −d up to the
 //! surface, integrated with the trapezoid rule over the nodes in front of the
@@ -16,13 +17,13 @@
 //! ½ at the far end, ½ (1 − δ/h) at the face and 1 − ½ δ/h next to it (the
 //! face's segment is h − δ long; `FaceNode`).
 
-use crate::grid::FaceNode;
+use crate::grid::{FaceNode, Scheme};
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
 pub struct Surface {
-    /// Δx: node spacing (= v0).
-    pub spacing: f64,
+    /// The discretisation, h = k v0 (h = Δx, the node spacing).
+    pub scheme: Scheme,
     /// y of the floor below which soil never moves (−d).
     pub floor: f64,
     /// Node of the soil column at the blade face.
@@ -54,17 +55,18 @@ pub struct Surface {
 }
 
 impl Surface {
-    /// Flat ground y = 0 of `nodes` nodes from x = 0, of fresh soil with
-    /// friction and dilation angles `fresh_angles` (radians).
+    /// Flat ground y = 0 of `nodes` nodes from x = 0 on the grid of
+    /// `scheme`, of fresh soil with friction and dilation angles
+    /// `fresh_angles` (radians).
     pub fn flat(
-        spacing: f64,
+        scheme: Scheme,
         depth: f64,
         unit_weight: f64,
         fresh_angles: (f64, f64),
         nodes: usize,
     ) -> Self {
         Surface {
-            spacing,
+            scheme,
             face: 0,
             face_offset: 0.0,
             floor: -depth,
@@ -94,7 +96,7 @@ impl Surface {
     /// x of node i: i Δx on the grid, the face node offset by δ (physical
     /// for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
-        i as f64 * self.spacing + self.offset_of(i) * self.spacing
+        i as f64 * self.scheme.spacing + self.offset_of(i) * self.scheme.spacing
     }
 
     /// δ / h if node i is the face node, else 0.
@@ -117,7 +119,7 @@ impl Surface {
 
     /// Length of the segment from node i to node i + 1.
     pub fn segment(&self, i: usize) -> f64 {
-        self.spacing * self.face_at(self.face).segment(i)
+        self.scheme.spacing * self.face_at(self.face).segment(i)
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.
@@ -131,7 +133,7 @@ impl Surface {
         self.friction.resize(n, self.fresh_angles.0);
         self.dilation.resize(n, self.fresh_angles.1);
         self.appended_mass +=
-            self.ground_unit_weight * (0.0 - self.floor) * self.spacing * nodes as f64;
+            self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing * nodes as f64;
     }
 
     /// Records that nodes before `end` may have changed.
@@ -150,7 +152,7 @@ impl Surface {
 
     /// Area of the column of node i (trapezoid share, above the floor).
     pub fn column_area(&self, i: usize, first: usize) -> f64 {
-        self.node_weight(i, first) * (self.height[i] - self.floor) * self.spacing
+        self.node_weight(i, first) * (self.height[i] - self.floor) * self.scheme.spacing
     }
 
     /// Area of soil in front of the blade at node `first` (above the floor,
@@ -179,7 +181,7 @@ impl Surface {
             .iter()
             .filter(|&&i| i >= undisturbed)
             .count() as f64;
-        let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
+        let column = self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing;
         let pristine = column * (whole - 0.5 * halves.min(whole));
         compensated_sum(disturbed.chain([pristine, self.trench_mass, -self.appended_mass]))
     }
@@ -210,7 +212,12 @@ mod tests {
 
     #[test]
     fn growing_flat_ground_keeps_mass() {
-        let mut s = Surface::flat(0.1, 2.0, 1.5, (0.5, 0.0), 101);
+        let scheme = Scheme {
+            spacing: 0.1,
+            increment: 0.1,
+            increments_per_node: 1,
+        };
+        let mut s = Surface::flat(scheme, 2.0, 1.5, (0.5, 0.0), 101);
         let m0 = s.mass(0);
         assert!((m0 - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         s.grow(37);

@@ -37,7 +37,7 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        let (b, j, v0) = (band.face.node, band.emergence, advance.increment);
+        let (b, j, v0) = (band.face.node, band.emergence, surface.scheme.increment);
         let deepening = advance.deepening;
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         let area_before = region_area(surface, b, j + 1);
@@ -65,9 +65,9 @@ impl Kinematics {
         } else {
             0.0
         };
-        surface.face = advance.face;
-        surface.face_offset = advance.face_offset;
-        let face = advance.face;
+        surface.face = advance.face.node;
+        surface.face_offset = advance.face.offset;
+        let face = advance.face.node;
         let first_band = (face + 1..=j)
             .find(|&i| surface.x(i) > last_block_x)
             .unwrap_or(j);
@@ -78,11 +78,17 @@ impl Kinematics {
             old_face,
             (v0, motion.rise),
         );
-        self.carry_band(surface, band, first_band, v0 / surface.spacing, motion.rise);
+        self.carry_band(
+            surface,
+            band,
+            first_band,
+            surface.scheme.courant(),
+            motion.rise,
+        );
         // The face node: the face's own soil, risen with the block, and the
         // soil the face swept over on its half segment.
         let swept = 0.5 * v0 * (thickness + motion.rise + deepening);
-        let half_segment = surface.face_at(face).node_weight(face) * surface.spacing;
+        let half_segment = surface.face_at(face).node_weight(face) * surface.scheme.spacing;
         surface.height[face] = self.old_height[0] + motion.rise + swept / half_segment;
         surface.accumulated_shear[face] = self.old_shear[0];
         surface.unit_weight[face] = self.old_unit_weight[0];
@@ -132,7 +138,7 @@ impl Kinematics {
         (v0, rise): (f64, f64),
     ) {
         let b = band.face.node;
-        let c = v0 / surface.spacing;
+        let c = surface.scheme.courant();
         for i in face + 1..first_band {
             let q = i - b;
             // Next to the face the source x − v0 lies between the old face

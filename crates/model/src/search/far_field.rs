@@ -162,7 +162,7 @@ pub(super) fn far_field_from(
     if j < undisturbed {
         return false;
     }
-    let dx = surface.spacing;
+    let dx = surface.scheme.spacing;
     let spacings = lines.face.spacings(j);
     // The footprint below is at least dB / (tan β Δx) + 2 with
     // 1 / tan β = Δx (x_j − x_b) / d − cot α (`Rake`): a test without

@@ -46,7 +46,7 @@ impl Lines {
         Lines {
             face,
             d,
-            dx: surface.spacing,
+            dx: surface.scheme.spacing,
             base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * face.segment(b),
             sum_gh: 0.0,
             sum_gk: 0.0,
