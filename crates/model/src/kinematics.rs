@@ -102,7 +102,7 @@ impl Kinematics {
             return self.coarse(surface, band, choice, choices, rake, advance);
         }
         let (trench_mass, mass_before) = self.start(surface, band, advance);
-        surface.face = advance.face.node;
+        surface.face = advance.face;
         let deepening = advance.deepening;
         let motion = BandMotion::new(choice, rake, surface.scheme.spacing);
         let update =
@@ -388,7 +388,7 @@ fn mix_column(surface: &mut Surface, band: &Band, i: usize, (staying, arriving):
 /// height over `nodes` (by their trapezoid weights from the face), so that
 /// the area is exactly the old area plus the dilation (M21).
 fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
-    let face = surface.face;
+    let face = surface.face.node;
     let weights: f64 = nodes.clone().map(|i| surface.node_weight(i, face)).sum();
     let correction = residual / (weights * surface.scheme.spacing);
     for y in &mut surface.height[nodes] {
@@ -425,7 +425,7 @@ fn band_unit_weight(
 /// weight of the nodes from the face (now `surface.face`) to j equal
 /// `mass_before`.
 fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
-    let (b, j) = (surface.face, band.emergence);
+    let (b, j) = (surface.face.node, band.emergence);
     let outside = region_mass(surface, b, b..first);
     let band_area: f64 = (first..=j).map(|i| surface.column_area(i, b)).sum();
     let gamma = (mass_before - outside) / band_area;

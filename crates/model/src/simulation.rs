@@ -178,7 +178,7 @@ impl Simulation {
 
     /// Blade displacement u (the face is at x = u).
     pub fn blade_position(&self) -> f64 {
-        self.surface.x(self.surface.face)
+        self.surface.x(self.surface.face.node)
     }
 
     /// The nodes as the model holds them: on the grid, whose x is the
@@ -189,7 +189,7 @@ impl Simulation {
 
     /// Current weight of soil (ground that existed at the start).
     pub fn mass(&self) -> f64 {
-        self.surface.mass(self.surface.face)
+        self.surface.mass(self.surface.face.node)
     }
 
     /// Weight of soil at the start (docs/model.md (M24)).
@@ -206,7 +206,7 @@ impl Simulation {
     pub fn profile(&self) -> Vec<ProfilePoint> {
         let s = &self.surface;
         let d = self.case.blade.depth;
-        (s.face..s.len())
+        (s.face.node..s.len())
             .map(|i| ProfilePoint {
                 x: self.rake.x(s.x(i), s.height[i], d),
                 y: s.height[i],
@@ -220,7 +220,7 @@ impl Simulation {
     fn loads(&self) -> Loads {
         let c = &self.case;
         // The face from the tip to the surface: y_b + d high, Lb long.
-        let rise = self.surface.height[self.surface.face] + self.tip_depth();
+        let rise = self.surface.height[self.surface.face.node] + self.tip_depth();
         let sin_alpha = if c.blade.rake == 90.0 {
             1.0
         } else {
@@ -263,7 +263,7 @@ impl Simulation {
         let dx = self.surface.scheme.spacing;
         let input = SearchInput {
             laws: &self.laws,
-            blade: self.surface.face,
+            blade: self.surface.face.node,
             depth: d,
             band_width: self.case.soil.band_width,
             face,
@@ -271,7 +271,7 @@ impl Simulation {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
         };
-        let reach = self.surface.face + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.
         let max_nodes = self.case.wall_node().map_or(reach, |w| reach.min(w + 1));
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
@@ -330,7 +330,7 @@ impl Simulation {
         let scheme = &self.surface.scheme;
         Advance {
             deepening,
-            face: scheme.face_after(self.done + 1, self.surface.face),
+            face: scheme.face_after(self.done + 1, self.surface.face.node),
         }
     }
 
@@ -342,14 +342,14 @@ impl Simulation {
         let choice = self
             .find_mechanism(face)
             .ok_or_else(|| self.no_mechanism())?;
-        let (b, j) = (self.surface.face, choice.node);
+        let j = choice.node;
         let c = &self.case;
         let depth = self.tip_depth();
         let deepening = c.tip_depth(u + c.run.increment) - depth;
         let y_emergence = self.surface.height[j];
         let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
         let band = Band::new(
-            self.surface.face_at(b),
+            self.surface.face,
             j,
             (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
@@ -371,7 +371,7 @@ impl Simulation {
         self.surface.disturb(j + 1);
         self.done += 1;
         // Slopes changed only at the face and around the band.
-        let first = self.surface.face;
+        let first = self.surface.face.node;
         let at_face = first..first + 3;
         let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
         let moved = self.avalanche.relax(

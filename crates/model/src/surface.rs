@@ -4,10 +4,10 @@
 //! weight γ of its column.
 //!
 //! The grid spacing h is a whole multiple k of the blade increment v0. With
-//! k = 1 (the reference scheme) the blade sits on node `face` = (steps done)
+//! k = 1 (the reference scheme) the blade sits on node b = (steps done)
 //! and a block translating by v0 moves exactly one node. With k > 1 the face
-//! lies between nodes: node `face` holds the soil column at the blade, at
-//! x = face·h + δ with δ = `face_offset`·h (a whole number of increments),
+//! lies between nodes: node b (`face.node`) holds the soil column at the blade, at
+//! x = b h + δ with δ = `face.offset` h (a whole number of increments),
 //! and the nodes ahead stay on the grid x_i = i h. The surface holds the
 //! scheme (`Scheme`), so that h, v0 and k are chosen in one place.
 //!
@@ -26,10 +26,9 @@ pub struct Surface {
     pub scheme: Scheme,
     /// y of the floor below which soil never moves (−d).
     pub floor: f64,
-    /// Node of the soil column at the blade face.
-    pub face: usize,
-    /// δ / h: the face's offset from its grid point, in [0, 1).
-    pub face_offset: f64,
+    /// The blade face: the node of the soil column at it, and its offset
+    /// δ / h from that node's grid point, in [0, 1).
+    pub face: FaceNode,
     /// Unit weight of the ground appended when the domain grows.
     pub ground_unit_weight: f64,
     /// y_i: surface height at x_i = i Δx.
@@ -67,8 +66,7 @@ impl Surface {
     ) -> Self {
         Surface {
             scheme,
-            face: 0,
-            face_offset: 0.0,
+            face: FaceNode::default(),
             floor: -depth,
             ground_unit_weight: unit_weight,
             height: vec![0.0; nodes],
@@ -101,8 +99,8 @@ impl Surface {
 
     /// δ / h if node i is the face node, else 0.
     pub fn offset_of(&self, i: usize) -> f64 {
-        if i == self.face {
-            self.face_offset
+        if i == self.face.node {
+            self.face.offset
         } else {
             0.0
         }
@@ -119,7 +117,7 @@ impl Surface {
 
     /// Length of the segment from node i to node i + 1.
     pub fn segment(&self, i: usize) -> f64 {
-        self.scheme.spacing * self.face_at(self.face).segment(i)
+        self.scheme.spacing * self.face.segment(i)
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.

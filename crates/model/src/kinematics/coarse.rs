@@ -65,8 +65,7 @@ impl Kinematics {
         } else {
             0.0
         };
-        surface.face = advance.face.node;
-        surface.face_offset = advance.face.offset;
+        surface.face = advance.face;
         let face = advance.face.node;
         let first_band = (face + 1..=j)
             .find(|&i| surface.x(i) > last_block_x)
@@ -88,7 +87,7 @@ impl Kinematics {
         // The face node: the face's own soil, risen with the block, and the
         // soil the face swept over on its half segment.
         let swept = 0.5 * v0 * (thickness + motion.rise + deepening);
-        let half_segment = surface.face_at(face).node_weight(face) * surface.scheme.spacing;
+        let half_segment = surface.face.node_weight(face) * surface.scheme.spacing;
         surface.height[face] = self.old_height[0] + motion.rise + swept / half_segment;
         surface.accumulated_shear[face] = self.old_shear[0];
         surface.unit_weight[face] = self.old_unit_weight[0];
