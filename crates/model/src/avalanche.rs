@@ -81,7 +81,10 @@ impl Avalanche {
         slopes: (f64, f64),
         changed: &[Range<usize>],
     ) -> Range<usize> {
-        let (down, up) = (surface.spacing * slopes.0, surface.spacing * slopes.1);
+        let (down, up) = (
+            surface.scheme.spacing * slopes.0,
+            surface.scheme.spacing * slopes.1,
+        );
         self.set_windows(changed, first, surface.len());
         let mut touched = first..first;
         for _ in 0..MAX_PASSES {
@@ -173,7 +176,7 @@ impl Avalanche {
         let tolerance = SLOPE_TOLERANCE * s;
         for i in window {
             let w = surface.node_weight(i, first);
-            let g = sign * surface.height[i] + s * surface.spacings_from(i, first);
+            let g = sign * surface.height[i] + s * surface.face_at(first).spacings(i);
             let mut top = Pool::new(i, w, g);
             while self.pools.len() > bottom {
                 let below = self.pools.last_mut().expect("a pool below");
@@ -222,8 +225,8 @@ impl Avalanche {
             .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
-            let new = sign * (mean - s * surface.spacings_from(i, first));
-            let w = surface.node_weight(i, first) * surface.spacing;
+            let new = sign * (mean - s * surface.face_at(first).spacings(i));
+            let w = surface.node_weight(i, first) * surface.scheme.spacing;
             let delta = (new - surface.height[i]) * w;
             if delta < 0.0 {
                 let m = -delta * surface.unit_weight[i];
@@ -242,7 +245,7 @@ impl Avalanche {
         let deposit_weight = lost_mass / gained_area;
         let deposit_shear = lost_shear / lost_mass;
         for (k, i) in range.enumerate() {
-            let w = surface.node_weight(i, first) * surface.spacing;
+            let w = surface.node_weight(i, first) * surface.scheme.spacing;
             let old_area = (self.old_height[k] - surface.floor) * w;
             let gain = (surface.height[i] - self.old_height[k]) * w;
             if gain <= 0.0 {

@@ -8,11 +8,13 @@
 //! band: g ≥ 1 is the rigid block, 0 < g < 1 the band, g = 0 the lower
 //! boundary. The original model is the limit dB = 0 (a slip line).
 
+use crate::grid::FaceNode;
+
 /// The band of one candidate or chosen mechanism.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
-    /// First node (the blade face).
-    pub blade: usize,
+    /// The blade face: its node b and offset.
+    pub face: FaceNode,
     /// Emergence node j of the lower boundary.
     pub emergence: usize,
     /// Slope of the lower boundary on the grid (tan β, or its sheared value
@@ -27,8 +29,6 @@ pub struct Band {
     pub depth: f64,
     /// Node spacing Δx.
     pub spacing: f64,
-    /// δ / Δx: the face's offset from the grid point of node `blade`.
-    pub face_offset: f64,
 }
 
 impl Band {
@@ -36,39 +36,28 @@ impl Band {
     /// `tan_beta`) = (on the grid, physically) (equal for a vertical blade;
     /// the grid's vertical thickness is dB / cos β times their ratio).
     pub fn new(
-        blade: usize,
+        face: FaceNode,
         emergence: usize,
         (grid_slope, tan_beta): (f64, f64),
         band_width: f64,
         depth: f64,
         spacing: f64,
-        face_offset: f64,
     ) -> Self {
         let stretch = stretch(grid_slope, tan_beta);
         Band {
-            blade,
+            face,
             emergence,
             tan_beta: grid_slope,
             thickness: band_width * (1.0 + tan_beta * tan_beta).sqrt() * stretch,
             width: band_width,
             depth,
             spacing,
-            face_offset,
-        }
-    }
-
-    /// (x_i − x_face) / Δx for the face or a node ahead of it.
-    fn spacings(&self, i: usize) -> f64 {
-        if i == self.blade {
-            0.0
-        } else {
-            (i - self.blade) as f64 - self.face_offset
         }
     }
 
     /// Height of the lower boundary at node i.
     pub fn lower(&self, i: usize) -> f64 {
-        -self.depth + self.spacings(i) * self.spacing * self.tan_beta
+        -self.depth + self.face.spacings(i) * self.spacing * self.tan_beta
     }
 
     /// Relative position g_i of surface node i above the lower boundary
@@ -94,16 +83,13 @@ impl Band {
         }
         let (dx, e) = (self.spacing, self.thickness);
         let mut area = 0.0;
-        let mut g0 = self.position(height[self.blade], self.blade);
+        let b = self.face.node;
+        let mut g0 = self.position(height[b], b);
         let nodes = height.iter().enumerate();
-        for (i, &y) in nodes.take(self.emergence + 1).skip(self.blade + 1) {
+        for (i, &y) in nodes.take(self.emergence + 1).skip(b + 1) {
             let g1 = self.position(y, i);
             // The face's segment is (1 − δ/Δx) Δx long.
-            let width = if i == self.blade + 1 {
-                dx * (1.0 - self.face_offset)
-            } else {
-                dx
-            };
+            let width = dx * self.face.segment(i - 1);
             area += e * width * clipped_mean(g0, g1);
             g0 = g1;
         }
@@ -117,7 +103,7 @@ impl Band {
     /// surface is straight over the footprint.
     #[inline]
     pub fn footprint(&self, height: &[f64]) -> usize {
-        let (j, b) = (self.emergence, self.blade);
+        let (j, b) = (self.emergence, self.face.node);
         if self.thickness == 0.0 {
             return 0;
         }
@@ -188,7 +174,7 @@ mod tests {
         let dx = 1.0 / (n - 1) as f64;
         let height = vec![0.0; n + 5];
         let dband = 0.1;
-        let band = Band::new(0, n - 1, (1.0, 1.0), dband, 1.0, dx, 0.0);
+        let band = Band::new(FaceNode::default(), n - 1, (1.0, 1.0), dband, 1.0, dx);
         let e = band.thickness;
         // Strip between y = x − 1 and y = x − 1 + e, below y = 0, x ∈ [0, 1]:
         // e·1 minus the triangle above y = 0 (legs e, e).
@@ -201,7 +187,7 @@ mod tests {
     #[test]
     fn slip_line_has_no_area_and_no_footprint() {
         let height = vec![0.0; 50];
-        let band = Band::new(0, 40, (0.5, 0.5), 0.0, 1.0, 0.05, 0.0);
+        let band = Band::new(FaceNode::default(), 40, (0.5, 0.5), 0.0, 1.0, 0.05);
         assert_eq!(band.area_below(&height), 0.0);
         assert_eq!(band.footprint(&height), 0);
         assert_eq!(band.position(0.0, 40), 0.0);

@@ -34,25 +34,24 @@
 
 use crate::band::Band;
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
+use crate::grid::FaceNode;
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
+use std::ops::Range;
 
 mod coarse;
 
-/// How the face moves in an increment: v0, how much deeper the tip goes
-/// (Δd, negative while it rises), and the face node and its offset δ/h
-/// afterwards (node b + 1 and 0 on the reference grid h = v0).
+/// How the face moves in an increment (by v0, `Scheme::increment`): how
+/// much deeper the tip goes (Δd, negative while it rises), and the face
+/// node and its offset δ/h afterwards (node b + 1 and 0 on the reference
+/// grid h = v0; `Scheme::face_after`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Advance {
-    /// v0, the blade's advance (length).
-    pub increment: f64,
     /// Δd, how much deeper the tip goes (length).
     pub deepening: f64,
-    /// The face node after the increment.
-    pub face: usize,
-    /// δ / h of the face after the increment, in [0, 1).
-    pub face_offset: f64,
+    /// The face after the increment.
+    pub face: FaceNode,
 }
 
 /// What an update did.
@@ -99,19 +98,19 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        if advance.increment != surface.spacing {
+        if !surface.scheme.reference() {
             return self.coarse(surface, band, choice, choices, rake, advance);
         }
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         surface.face = advance.face;
         let deepening = advance.deepening;
-        let motion = BandMotion::new(choice, rake, surface.spacing);
+        let motion = BandMotion::new(choice, rake, surface.scheme.spacing);
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
-                None => slide_block(surface, band.blade, choice, rake),
+                None => slide_block(surface, band.face.node, choice, rake),
             };
-        surface.height[band.blade + 1] += deepening;
+        surface.height[band.face.node + 1] += deepening;
         let update = Update {
             trench_mass,
             ..update
@@ -125,14 +124,14 @@ impl Kinematics {
     /// in the trench) and the weight from the face to j less it, which the
     /// update keeps; the unit weights of the face to j are saved.
     fn start(&mut self, surface: &Surface, band: &Band, advance: Advance) -> (f64, f64) {
-        let (b, j) = (band.blade, band.emergence);
+        let (b, j) = (band.face.node, band.emergence);
         // The strip the blade moves through: soil below the tip's path
         // (from depth d to d + Δd) stays behind; what lies between that path
         // and the slip line is pushed up the face (`deepening` adds to the
         // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
         // the face less).
         let depth_below = -surface.floor - band.depth - 0.5 * advance.deepening;
-        let trench_mass = surface.unit_weight[b] * (advance.increment * depth_below);
+        let trench_mass = surface.unit_weight[b] * (surface.scheme.increment * depth_below);
         let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
         self.old_unit_weight.clear();
         self.old_unit_weight
@@ -149,7 +148,12 @@ impl Kinematics {
         motion: BandMotion,
         rule: BandShearRule,
     ) -> Option<Update> {
-        let (b, j, dx, t) = (band.blade, band.emergence, surface.spacing, band.tan_beta);
+        let (b, j, dx, t) = (
+            band.face.node,
+            band.emergence,
+            surface.scheme.spacing,
+            band.tan_beta,
+        );
         let (e, rise, slip) = (band.thickness, motion.rise, motion.slip);
         if e == 0.0 || e + rise - dx * t < 0.0 {
             return None;
@@ -165,18 +169,9 @@ impl Kinematics {
         // stays behind the blade.
         let left_behind = dx * (-surface.floor - band.depth);
         let residual = area_before - left_behind + dilation_area - region_area(surface, b + 1, j);
-        let correction = residual / ((j - first_band_node) as f64 * dx);
-        for y in &mut surface.height[first_band_node..j] {
-            *y += correction;
-        }
+        spread_residual(surface, first_band_node..j, residual);
         shift_block_state(surface, b, first_band_node);
-        for i in first_band_node..=j {
-            let share = match rule {
-                BandShearRule::Full => 1.0,
-                BandShearRule::ByPosition => self.position[i - b],
-            };
-            surface.accumulated_shear[i] += share * slip;
-        }
+        self.accumulate_shear(surface, band, first_band_node, slip, rule);
         Some(Update {
             slip,
             dilation_area,
@@ -193,7 +188,7 @@ impl Kinematics {
     /// band or the images fold over (a band narrower than the grid resolves).
     /// A slip line (no thickness) moves every node before j with the block.
     fn trace_image(&mut self, surface: &Surface, band: &Band, rise: f64, v0: f64) -> Option<f64> {
-        let (b, j) = (band.blade, band.emergence);
+        let (b, j) = (band.face.node, band.emergence);
         let h = &surface.height;
         let banded = band.thickness > 0.0;
         self.image.clear();
@@ -278,12 +273,23 @@ impl BandMotion {
             tan_psi,
         })
     }
+
+    /// The slip line's motion: the block slides along it, rise v0 tan β
+    /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
+    fn slip_line(choice: &Choice, rake: &Rake, v0: f64) -> Self {
+        let t = choice.tan_beta;
+        BandMotion {
+            rise: v0 * choice.grid_slope,
+            slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
+            tan_psi: 0.0,
+        }
+    }
 }
 
 /// The slip-line update (see the module doc).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
-    let (j, dx, t) = (choice.node, surface.spacing, choice.tan_beta);
-    let rise = dx * choice.grid_slope;
+    let j = choice.node;
+    let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.scheme.spacing);
     let h = &mut surface.height;
     h.copy_within(blade..j, blade + 1);
     for y in &mut h[blade + 1..=j] {
@@ -291,7 +297,6 @@ pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &
     }
     h[blade + 1] += rise;
     shift_block_state(surface, blade, j);
-    let slip = dx * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t);
     surface.accumulated_shear[j] += slip;
     Update {
         slip,
@@ -319,13 +324,13 @@ fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
     let (h, floor) = (&surface.height, surface.floor);
     let inner: f64 = h[a + 1..z].iter().map(|y| y - floor).sum();
     let face_segment = 0.5 * (h[a] - floor + h[a + 1] - floor) * surface.offset_of(a);
-    surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
-        - surface.spacing * face_segment
+    surface.scheme.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
+        - surface.scheme.spacing * face_segment
 }
 
 /// Weight of the columns of `nodes` as counted by `Surface::mass` with the
 /// face at node `face` (which counts half; none of them is the last node).
-fn region_mass(surface: &Surface, face: usize, nodes: std::ops::Range<usize>) -> f64 {
+fn region_mass(surface: &Surface, face: usize, nodes: Range<usize>) -> f64 {
     nodes
         .map(|i| surface.unit_weight[i] * surface.column_area(i, face))
         .sum()
@@ -338,14 +343,56 @@ impl Kinematics {
     /// would have to absorb every difference of γ along the block, which can
     /// drive its unit weight negative.
     fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
-        let b = band.blade;
+        let b = band.face.node;
         for i in b + 1..first_band {
-            let total = surface.height[i] - surface.floor;
-            let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
             let (staying, arriving) =
                 (self.old_unit_weight[i - b], self.old_unit_weight[i - 1 - b]);
-            surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+            mix_column(surface, band, i, (staying, arriving));
         }
+    }
+
+    /// Δut on the band's nodes first_band..=j: all of it, or the share f
+    /// of a node's relative position (`BandShearRule`; M22).
+    fn accumulate_shear(
+        &self,
+        surface: &mut Surface,
+        band: &Band,
+        first_band: usize,
+        slip: f64,
+        rule: BandShearRule,
+    ) {
+        for i in first_band..=band.emergence {
+            let share = match rule {
+                BandShearRule::Full => 1.0,
+                BandShearRule::ByPosition => self
+                    .position
+                    .get(i - band.face.node)
+                    .copied()
+                    .unwrap_or(0.0),
+            };
+            surface.accumulated_shear[i] += share * slip;
+        }
+    }
+}
+
+/// Column i's unit weight after the block moved over it: the soil below the
+/// band's lower boundary stayed (γ `staying`), the soil above it arrived
+/// (γ `arriving`), mixed by height (M26).
+fn mix_column(surface: &mut Surface, band: &Band, i: usize, (staying, arriving): (f64, f64)) {
+    let total = surface.height[i] - surface.floor;
+    let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
+    surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+}
+
+/// Spreads what the update gained or lost in area, `residual`, evenly in
+/// height over `nodes` (by their trapezoid weights from the face), so that
+/// the area is exactly the old area plus the dilation (M21).
+fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
+    let face = surface.face.node;
+    let weights: f64 = nodes.clone().map(|i| surface.node_weight(i, face)).sum();
+    let correction = residual / (weights * surface.scheme.spacing);
+    for y in &mut surface.height[nodes] {
+        *y += correction;
     }
 }
 
@@ -378,7 +425,7 @@ fn band_unit_weight(
 /// weight of the nodes from the face (now `surface.face`) to j equal
 /// `mass_before`.
 fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
-    let (b, j) = (surface.face, band.emergence);
+    let (b, j) = (surface.face.node, band.emergence);
     let outside = region_mass(surface, b, b..first);
     let band_area: f64 = (first..=j).map(|i| surface.column_area(i, b)).sum();
     let gamma = (mass_before - outside) / band_area;

@@ -7,16 +7,15 @@
 
 use crate::avalanche::Avalanche;
 use crate::band::Band;
-use crate::case::{BandAngleRule, Case, CaseError};
+use crate::case::{Case, CaseError};
+use crate::grid::Scheme;
 use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
-use crate::material::Material;
-use crate::mechanism::Loads;
-use crate::mechanism::{Face, FactorTable, ForceFactor};
+use crate::laws::Laws;
+use crate::mechanism::{Face, Loads};
 use crate::rake::Rake;
-use crate::search::{BandAngles, Choice, Search, SearchInput};
+use crate::search::{Choice, Search, SearchInput};
 use crate::surface::Surface;
-use crate::trig;
 use std::fmt;
 
 /// Depths the domain grows by when the search reaches its end.
@@ -110,127 +109,6 @@ pub struct ProfilePoint {
     pub unit_weight: f64,
 }
 
-/// The material law with Eq. (1) coefficients cached for fresh soil.
-#[derive(Clone, Debug)]
-struct Laws {
-    material: Material,
-    /// The wall friction of Eq. (1) for a block rising along the face and
-    /// for one sinking: ±φw + (α − 90°) (`Rake`), radians.
-    walls: (f64, f64),
-    /// Fresh soil with the block rising along the face (+φw) and not (−φw).
-    fresh_rising: ForceFactor,
-    fresh_sinking: ForceFactor,
-    /// Lower bound of P/W over every admissible mechanism.
-    min_factor: f64,
-    /// The least dilation angle of the law (radians): how far a band may
-    /// sink.
-    least_dilation: f64,
-    /// (sin, cos) of the two walls.
-    wall_sin_cos: ((f64, f64), (f64, f64)),
-    /// Eq. (1) on a grid of friction angles, for the search's bounds.
-    table: FactorTable,
-    /// Band angles of undisturbed soil.
-    fresh: BandAngles,
-}
-
-impl Laws {
-    fn new(case: &Case) -> Self {
-        let material = Material::new(&case.soil);
-        let wall_friction = case.blade.wall_friction.to_radians();
-        let offset = Rake::new(case.blade.rake).offset;
-        let walls = (wall_friction + offset, -wall_friction + offset);
-        let phi0 = material.friction.at(0.0);
-        // Friction on the face opposes the block's motion relative to it:
-        // where the block does not rise along the face (β + ψ ≤ 0 in
-        // compaction, or a blade climbing faster than the block) it acts
-        // upward on the block, the least-force choice at the threshold.
-        let climbs = case.blade.depth_path.windows(2).any(|w| w[1][1] < w[0][1]);
-        let can_sink = case.soil.dilation.min() < 0.0 || climbs;
-        // The infimum of P/W (β → 0, least φ) over the face frictions the
-        // block may have: which one is least depends on the rake.
-        let at_zero = |wall: f64| ForceFactor::new(material.friction.min(), wall).at_zero_angle();
-        let min_factor = if can_sink {
-            at_zero(walls.0).min(at_zero(walls.1))
-        } else {
-            at_zero(walls.0)
-        };
-        Laws {
-            fresh_rising: ForceFactor::new(phi0, walls.0),
-            fresh_sinking: ForceFactor::new(phi0, walls.1),
-            min_factor,
-            least_dilation: case.soil.dilation.min().to_radians(),
-            wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
-            table: FactorTable::new(walls, (material.friction.min(), material.friction.max())),
-            fresh: BandAngles {
-                friction: phi0,
-                dilation: material.dilation.at(0.0),
-                shear: 0.0,
-                fresh: true,
-            },
-            material,
-            walls,
-        }
-    }
-
-    /// The face of an increment in which the tip climbs by `climb` per
-    /// unit of travel (negative while the blade deepens).
-    fn face(&self, climb: f64) -> Face {
-        // Some band sinks relative to the face where tan(β + ψ) ≤ climb for
-        // some ψ of the law: β ≤ atan(climb) − ψ_min.
-        let angle = climb.atan() - self.least_dilation;
-        let sinking_below = if angle <= 0.0 {
-            0.0
-        } else if angle >= std::f64::consts::FRAC_PI_2 {
-            f64::INFINITY
-        } else {
-            angle.tan()
-        };
-        Face {
-            climb,
-            sinking_below,
-        }
-    }
-
-    /// Eq. (1) coefficients for a candidate band at tan β.
-    fn factor(&self, angles: BandAngles, tan_beta: f64, face: Face) -> ForceFactor {
-        let rising = face.rises(tan_beta, angles.dilation);
-        match (angles.fresh, rising) {
-            (true, true) => self.fresh_rising,
-            (true, false) => self.fresh_sinking,
-            (false, rising) => {
-                let wall = if rising {
-                    self.wall_sin_cos.0
-                } else {
-                    self.wall_sin_cos.1
-                };
-                ForceFactor::from_sin_cos(trig::sin_cos(angles.friction), wall)
-            }
-        }
-    }
-
-    /// The band-angle rule: mean of the node angles, or angles of the mean
-    /// accumulated shear.
-    fn band_angles(&self, rule: BandAngleRule, means: BandAngles) -> BandAngles {
-        match rule {
-            BandAngleRule::MeanOfAngles => means,
-            BandAngleRule::AngleOfMeanShear => BandAngles {
-                friction: self.material.friction.at(means.shear),
-                dilation: self.material.dilation.at(means.shear),
-                ..means
-            },
-        }
-    }
-
-    /// Recomputes φ(ut) and ψ(ut) of the nodes in `range`.
-    fn refresh_angles(&self, surface: &mut Surface, range: std::ops::Range<usize>) {
-        for i in range {
-            let ut = surface.accumulated_shear[i];
-            surface.friction[i] = self.material.friction.at(ut);
-            surface.dilation[i] = self.material.dilation.at(ut);
-        }
-    }
-}
-
 /// A running simulation of one case.
 #[derive(Clone, Debug)]
 pub struct Simulation {
@@ -246,8 +124,6 @@ pub struct Simulation {
     avalanche: Avalanche,
     /// Increments done.
     done: usize,
-    /// k = h / v0: increments per node spacing (1: the reference scheme).
-    increments_per_node: usize,
     initial_mass: f64,
 }
 
@@ -262,7 +138,12 @@ impl Simulation {
             laws.material.friction.at(0.0),
             laws.material.dilation.at(0.0),
         );
-        let surface = Surface::flat(dx, d, case.soil.unit_weight, fresh, nodes);
+        let scheme = Scheme {
+            spacing: dx,
+            increment: case.run.increment,
+            increments_per_node: case.increments_per_node(),
+        };
+        let surface = Surface::flat(scheme, d, case.soil.unit_weight, fresh, nodes);
         let initial_mass = surface.mass(0);
         let rake = Rake::new(case.blade.rake);
         let tan_repose = case.soil.repose.to_radians().tan();
@@ -275,7 +156,6 @@ impl Simulation {
             kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
             done: 0,
-            increments_per_node: case.increments_per_node(),
             initial_mass,
             case: case.clone(),
         })
@@ -298,7 +178,7 @@ impl Simulation {
 
     /// Blade displacement u (the face is at x = u).
     pub fn blade_position(&self) -> f64 {
-        self.surface.x(self.surface.face)
+        self.surface.x(self.surface.face.node)
     }
 
     /// The nodes as the model holds them: on the grid, whose x is the
@@ -309,7 +189,7 @@ impl Simulation {
 
     /// Current weight of soil (ground that existed at the start).
     pub fn mass(&self) -> f64 {
-        self.surface.mass(self.surface.face)
+        self.surface.mass(self.surface.face.node)
     }
 
     /// Weight of soil at the start (docs/model.md (M24)).
@@ -326,7 +206,7 @@ impl Simulation {
     pub fn profile(&self) -> Vec<ProfilePoint> {
         let s = &self.surface;
         let d = self.case.blade.depth;
-        (s.face..s.len())
+        (s.face.node..s.len())
             .map(|i| ProfilePoint {
                 x: self.rake.x(s.x(i), s.height[i], d),
                 y: s.height[i],
@@ -340,7 +220,7 @@ impl Simulation {
     fn loads(&self) -> Loads {
         let c = &self.case;
         // The face from the tip to the surface: y_b + d high, Lb long.
-        let rise = self.surface.height[self.surface.face] + self.tip_depth();
+        let rise = self.surface.height[self.surface.face.node] + self.tip_depth();
         let sin_alpha = if c.blade.rake == 90.0 {
             1.0
         } else {
@@ -380,27 +260,18 @@ impl Simulation {
 
     fn find_mechanism(&mut self, face: Face) -> Option<Choice> {
         let d = self.tip_depth();
-        let dx = self.surface.spacing;
-        let laws = &self.laws;
-        let rule = self.case.choices.band_angles;
-        let angles = |means: BandAngles| laws.band_angles(rule, means);
-        let factor = |angles: BandAngles, t: f64| laws.factor(angles, t, face);
+        let dx = self.surface.scheme.spacing;
         let input = SearchInput {
-            angles: &angles,
-            blade: self.surface.face,
+            laws: &self.laws,
+            blade: self.surface.face.node,
             depth: d,
             band_width: self.case.soil.band_width,
-            min_factor: laws.min_factor,
-            walls: laws.walls,
             face,
             rake: self.rake,
-            fresh: laws.fresh,
-            table: &laws.table,
-            factor: &factor,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
         };
-        let reach = self.surface.face + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
+        let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.
         let max_nodes = self.case.wall_node().map_or(reach, |w| reach.min(w + 1));
         let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
@@ -456,14 +327,10 @@ impl Simulation {
     /// `deepening` deeper: one node every k increments, in between offset
     /// by a whole number of increments.
     fn advance(&self, deepening: f64) -> Advance {
-        let k = self.increments_per_node;
-        let sub = (self.done + 1) % k;
-        let face = self.surface.face;
+        let scheme = &self.surface.scheme;
         Advance {
-            increment: self.case.run.increment,
             deepening,
-            face: if sub == 0 { face + 1 } else { face },
-            face_offset: sub as f64 / k as f64,
+            face: scheme.face_after(self.done + 1, self.surface.face.node),
         }
     }
 
@@ -475,20 +342,19 @@ impl Simulation {
         let choice = self
             .find_mechanism(face)
             .ok_or_else(|| self.no_mechanism())?;
-        let (b, j) = (self.surface.face, choice.node);
+        let j = choice.node;
         let c = &self.case;
         let depth = self.tip_depth();
         let deepening = c.tip_depth(u + c.run.increment) - depth;
         let y_emergence = self.surface.height[j];
         let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
         let band = Band::new(
-            b,
+            self.surface.face,
             j,
             (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
             depth,
-            self.surface.spacing,
-            self.surface.offset_of(b),
+            self.surface.scheme.spacing,
         );
         let advance = self.advance(deepening);
         let update = self.kinematics.apply(
@@ -505,7 +371,7 @@ impl Simulation {
         self.surface.disturb(j + 1);
         self.done += 1;
         // Slopes changed only at the face and around the band.
-        let first = self.surface.face;
+        let first = self.surface.face.node;
         let at_face = first..first + 3;
         let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
         let moved = self.avalanche.relax(

@@ -4,29 +4,31 @@
 //! weight γ of its column.
 //!
 //! The grid spacing h is a whole multiple k of the blade increment v0. With
-//! k = 1 (the reference scheme) the blade sits on node `face` = (steps done)
+//! k = 1 (the reference scheme) the blade sits on node b = (steps done)
 //! and a block translating by v0 moves exactly one node. With k > 1 the face
-//! lies between nodes: node `face` holds the soil column at the blade, at
-//! x = face·h + δ with δ = `face_offset`·h (a whole number of increments),
-//! and the nodes ahead stay on the grid x_i = i h.
+//! lies between nodes: node b (`face.node`) holds the soil column at the blade, at
+//! x = b h + δ with δ = `face.offset` h (a whole number of increments),
+//! and the nodes ahead stay on the grid x_i = i h. The surface holds the
+//! scheme (`Scheme`), so that h, v0 and k are chosen in one place.
 //!
 //! The soil of node i is its column from the fixed floor y = −d up to the
 //! surface, integrated with the trapezoid rule over the nodes in front of the
 //! blade: the weight of soil is M = h Σ w_i γ_i (y_i + d), w_i = 1 inside,
 //! ½ at the far end, ½ (1 − δ/h) at the face and 1 − ½ δ/h next to it (the
-//! face's segment is h − δ long).
+//! face's segment is h − δ long; `FaceNode`).
+
+use crate::grid::{FaceNode, Scheme};
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
 pub struct Surface {
-    /// Δx: node spacing (= v0).
-    pub spacing: f64,
+    /// The discretisation, h = k v0 (h = Δx, the node spacing).
+    pub scheme: Scheme,
     /// y of the floor below which soil never moves (−d).
     pub floor: f64,
-    /// Node of the soil column at the blade face.
-    pub face: usize,
-    /// δ / h: the face's offset from its grid point, in [0, 1).
-    pub face_offset: f64,
+    /// The blade face: the node of the soil column at it, and its offset
+    /// δ / h from that node's grid point, in [0, 1).
+    pub face: FaceNode,
     /// Unit weight of the ground appended when the domain grows.
     pub ground_unit_weight: f64,
     /// y_i: surface height at x_i = i Δx.
@@ -52,19 +54,19 @@ pub struct Surface {
 }
 
 impl Surface {
-    /// Flat ground y = 0 of `nodes` nodes from x = 0, of fresh soil with
-    /// friction and dilation angles `fresh_angles` (radians).
+    /// Flat ground y = 0 of `nodes` nodes from x = 0 on the grid of
+    /// `scheme`, of fresh soil with friction and dilation angles
+    /// `fresh_angles` (radians).
     pub fn flat(
-        spacing: f64,
+        scheme: Scheme,
         depth: f64,
         unit_weight: f64,
         fresh_angles: (f64, f64),
         nodes: usize,
     ) -> Self {
         Surface {
-            spacing,
-            face: 0,
-            face_offset: 0.0,
+            scheme,
+            face: FaceNode::default(),
             floor: -depth,
             ground_unit_weight: unit_weight,
             height: vec![0.0; nodes],
@@ -92,30 +94,30 @@ impl Surface {
     /// x of node i: i Δx on the grid, the face node offset by δ (physical
     /// for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
-        i as f64 * self.spacing + self.offset_of(i) * self.spacing
+        i as f64 * self.scheme.spacing + self.offset_of(i) * self.scheme.spacing
     }
 
     /// δ / h if node i is the face node, else 0.
     pub fn offset_of(&self, i: usize) -> f64 {
-        if i == self.face {
-            self.face_offset
+        if i == self.face.node {
+            self.face.offset
         } else {
             0.0
+        }
+    }
+
+    /// The face as node `first` sees it: its offset if it is the face
+    /// node, else none.
+    pub fn face_at(&self, first: usize) -> FaceNode {
+        FaceNode {
+            node: first,
+            offset: self.offset_of(first),
         }
     }
 
     /// Length of the segment from node i to node i + 1.
     pub fn segment(&self, i: usize) -> f64 {
-        self.spacing * (1.0 - self.offset_of(i))
-    }
-
-    /// (x_i − x_first) / h: node i's distance from node `first` in spacings.
-    pub fn spacings_from(&self, i: usize, first: usize) -> f64 {
-        if i == first {
-            0.0
-        } else {
-            (i - first) as f64 - self.offset_of(first)
-        }
+        self.scheme.spacing * self.face.segment(i)
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.
@@ -129,7 +131,7 @@ impl Surface {
         self.friction.resize(n, self.fresh_angles.0);
         self.dilation.resize(n, self.fresh_angles.1);
         self.appended_mass +=
-            self.ground_unit_weight * (0.0 - self.floor) * self.spacing * nodes as f64;
+            self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing * nodes as f64;
     }
 
     /// Records that nodes before `end` may have changed.
@@ -141,18 +143,14 @@ impl Surface {
     pub fn node_weight(&self, i: usize, first: usize) -> f64 {
         if i + 1 == self.len() {
             0.5
-        } else if i == first {
-            0.5 * (1.0 - self.offset_of(first))
-        } else if i == first + 1 {
-            1.0 - 0.5 * self.offset_of(first)
         } else {
-            1.0
+            self.face_at(first).node_weight(i)
         }
     }
 
     /// Area of the column of node i (trapezoid share, above the floor).
     pub fn column_area(&self, i: usize, first: usize) -> f64 {
-        self.node_weight(i, first) * (self.height[i] - self.floor) * self.spacing
+        self.node_weight(i, first) * (self.height[i] - self.floor) * self.scheme.spacing
     }
 
     /// Area of soil in front of the blade at node `first` (above the floor,
@@ -181,7 +179,7 @@ impl Surface {
             .iter()
             .filter(|&&i| i >= undisturbed)
             .count() as f64;
-        let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
+        let column = self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing;
         let pristine = column * (whole - 0.5 * halves.min(whole));
         compensated_sum(disturbed.chain([pristine, self.trench_mass, -self.appended_mass]))
     }
@@ -212,7 +210,12 @@ mod tests {
 
     #[test]
     fn growing_flat_ground_keeps_mass() {
-        let mut s = Surface::flat(0.1, 2.0, 1.5, (0.5, 0.0), 101);
+        let scheme = Scheme {
+            spacing: 0.1,
+            increment: 0.1,
+            increments_per_node: 1,
+        };
+        let mut s = Surface::flat(scheme, 2.0, 1.5, (0.5, 0.0), 101);
         let m0 = s.mass(0);
         assert!((m0 - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         s.grow(37);

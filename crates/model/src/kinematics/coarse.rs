@@ -17,9 +17,12 @@
 //! that the area is exactly the old area plus the dilation, and the band's
 //! unit weight keeps the weight of soil exact, as on the reference grid.
 
-use super::{band_unit_weight, region_area, Advance, BandMotion, Kinematics, Update};
+use super::{
+    band_unit_weight, mix_column, region_area, spread_residual, Advance, BandMotion, Kinematics,
+    Update,
+};
 use crate::band::Band;
-use crate::case::{BandShearRule, Choices};
+use crate::case::Choices;
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;
@@ -34,7 +37,7 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        let (b, j, v0) = (band.blade, band.emergence, advance.increment);
+        let (b, j, v0) = (band.face.node, band.emergence, surface.scheme.increment);
         let deepening = advance.deepening;
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         let area_before = region_area(surface, b, j + 1);
@@ -50,7 +53,7 @@ impl Kinematics {
                     thickness: 0.0,
                     ..*band
                 };
-                let m = slip_motion(choice, rake, v0);
+                let m = BandMotion::slip_line(choice, rake, v0);
                 let x = self
                     .trace_image(surface, &slip_line, m.rise, v0)
                     .expect("a slip line's image");
@@ -63,8 +66,7 @@ impl Kinematics {
             0.0
         };
         surface.face = advance.face;
-        surface.face_offset = advance.face_offset;
-        let face = advance.face;
+        let face = advance.face.node;
         let first_band = (face + 1..=j)
             .find(|&i| surface.x(i) > last_block_x)
             .unwrap_or(j);
@@ -75,11 +77,17 @@ impl Kinematics {
             old_face,
             (v0, motion.rise),
         );
-        self.carry_band(surface, band, first_band, v0 / surface.spacing, motion.rise);
+        self.carry_band(
+            surface,
+            band,
+            first_band,
+            surface.scheme.courant(),
+            motion.rise,
+        );
         // The face node: the face's own soil, risen with the block, and the
         // soil the face swept over on its half segment.
         let swept = 0.5 * v0 * (thickness + motion.rise + deepening);
-        let half_segment = 0.5 * (1.0 - advance.face_offset) * surface.spacing;
+        let half_segment = surface.face.node_weight(face) * surface.scheme.spacing;
         surface.height[face] = self.old_height[0] + motion.rise + swept / half_segment;
         surface.accumulated_shear[face] = self.old_shear[0];
         surface.unit_weight[face] = self.old_unit_weight[0];
@@ -91,11 +99,7 @@ impl Kinematics {
         } else {
             j..j + 1
         };
-        let weights: f64 = spread.clone().map(|i| surface.node_weight(i, face)).sum();
-        let correction = residual / (weights * surface.spacing);
-        for y in &mut surface.height[spread] {
-            *y += correction;
-        }
+        spread_residual(surface, spread, residual);
         self.accumulate_shear(surface, band, first_band, motion.slip, choices.band_shear);
         let update = Update {
             slip: motion.slip,
@@ -132,8 +136,8 @@ impl Kinematics {
         (old_face_x, old_segment): (f64, f64),
         (v0, rise): (f64, f64),
     ) {
-        let b = band.blade;
-        let c = v0 / surface.spacing;
+        let b = band.face.node;
+        let c = surface.scheme.courant();
         for i in face + 1..first_band {
             let q = i - b;
             // Next to the face the source x − v0 lies between the old face
@@ -149,10 +153,7 @@ impl Kinematics {
             surface.height[i] = carried(&self.old_height) + rise;
             surface.accumulated_shear[i] = carried(&self.old_shear);
             let arriving = carried(&self.old_unit_weight);
-            let staying = self.old_unit_weight[q];
-            let total = surface.height[i] - surface.floor;
-            let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
-            surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+            mix_column(surface, band, i, (self.old_unit_weight[q], arriving));
         }
     }
 
@@ -160,42 +161,12 @@ impl Kinematics {
     /// position f moved by f (v0, rise), remapped as the block's with the
     /// fraction f of its Courant number. The band's nodes keep their state.
     fn carry_band(&self, surface: &mut Surface, band: &Band, first_band: usize, c: f64, rise: f64) {
-        let b = band.blade;
+        let b = band.face.node;
         for i in first_band.max(b + 2)..band.emergence {
             let q = i - b;
             let f = self.position[q];
             surface.height[i] = remap(&self.old_height, q, f * c) + f * rise;
         }
-    }
-
-    fn accumulate_shear(
-        &self,
-        surface: &mut Surface,
-        band: &Band,
-        first_band: usize,
-        slip: f64,
-        rule: BandShearRule,
-    ) {
-        for i in first_band..=band.emergence {
-            let share = match rule {
-                BandShearRule::Full => 1.0,
-                BandShearRule::ByPosition => {
-                    self.position.get(i - band.blade).copied().unwrap_or(0.0)
-                }
-            };
-            surface.accumulated_shear[i] += share * slip;
-        }
-    }
-}
-
-/// The slip line's motion: the block slides along it, rise v0 tan β on
-/// the grid, Δut = v0 / cos β (`Rake` for a raked blade).
-fn slip_motion(choice: &Choice, rake: &Rake, v0: f64) -> BandMotion {
-    let t = choice.tan_beta;
-    BandMotion {
-        rise: v0 * choice.grid_slope,
-        slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
-        tan_psi: 0.0,
     }
 }
 

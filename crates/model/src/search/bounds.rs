@@ -1,0 +1,94 @@
+//! Pruning (speed without changing the result): a candidate is evaluated
+//! in full (footprint, band angles, Eq. (1)) only if a lower bound of its
+//! force can beat the best force so far. P/W grows with φ (as
+//! sin(α ± φw) > 0), so before the footprint is known the bound is
+//! W_j (P/W)(β_j, φ_lo), φ_lo the least friction angle of the nodes
+//! scanned so far; after it, Eq. (1) at the band's friction angle rounded
+//! down on a grid (`FactorTable`). Both tests are division-free.
+
+use super::input::SearchInput;
+use super::line::Line;
+use crate::laws::BandAngles;
+use crate::mechanism::ForceFactor;
+use crate::surface::Surface;
+
+/// Eq. (1) at a friction angle no greater than the band's: a lower bound
+/// of P/W, with the face friction of a rising block above `sinking_below`.
+#[derive(Clone, Copy)]
+pub(super) struct Lower {
+    pub(super) rising: ForceFactor,
+    pub(super) sinking: ForceFactor,
+}
+
+impl Lower {
+    pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
+        Lower {
+            rising: ForceFactor::new(phi, input.laws.walls.0),
+            sinking: ForceFactor::new(phi, input.laws.walls.1),
+        }
+    }
+
+    /// Whether W (P/W) ≤ `bar` at tan β for either face friction the block
+    /// may have there. Eq. (1) grows with φ (as sin(α ± φw) > 0), but with
+    /// the face friction only where α + β + φ ± φw > 90°: for a vertical
+    /// blade the sinking block's −φw is always the lesser, for a raked one
+    /// either may be, so both are tried.
+    pub(super) fn can_beat(
+        &self,
+        weight: f64,
+        tan_beta: f64,
+        bar: f64,
+        input: &SearchInput,
+    ) -> bool {
+        self.rising.can_beat(weight, tan_beta, bar)
+            | (tan_beta <= input.face.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
+    }
+}
+
+/// φ_lo, the least friction angle of the nodes scanned so far, and Eq. (1)
+/// at it: the bound before the footprint.
+#[derive(Clone, Copy)]
+pub(super) struct LeastFriction {
+    phi: f64,
+    pub(super) lower: Lower,
+}
+
+impl LeastFriction {
+    /// The friction angle of the face node.
+    pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
+        LeastFriction {
+            phi,
+            lower: Lower::new(phi, input),
+        }
+    }
+
+    /// Takes in nodes j − 1 and j (a footprint ends at j).
+    #[inline]
+    pub(super) fn include(&mut self, surface: &Surface, j: usize, input: &SearchInput) {
+        let (here, before) = (surface.friction[j], surface.friction[j - 1]);
+        if here < self.phi || before < self.phi {
+            self.phi = self.phi.min(here).min(before);
+            self.lower = Lower::new(self.phi, input);
+        }
+    }
+}
+
+/// The bound after the footprint: whether the line, with its band's angles
+/// known, may beat `bar`. Which face friction is the lesser depends on the
+/// rake (see `Lower`). With the band's dilation known, a block that rises
+/// (`Face::rises`, taken only where it decides) has the rising one in
+/// Eq. (1).
+pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar: f64) -> bool {
+    let t = line.slope.tan_beta;
+    let can_beat = |rising| {
+        input
+            .laws
+            .table
+            .below(angles.friction, rising)
+            .can_beat(line.weight, t, bar)
+    };
+    can_beat(true)
+        || (t <= input.face.sinking_below
+            && can_beat(false)
+            && !input.face.rises(t, angles.dilation))
+}

@@ -1,0 +1,135 @@
+//! The candidate lines (docs/model.md §2.1-2.3). Candidate j is the
+//! straight line from the blade tip A = (x_b, −d) to surface node j. With
+//! r_j = (y_j + d) / (j − b) (rise per node, so that tan β_j = r_j / Δx on
+//! the grid, (M2); for a raked blade the grid is sheared and `Rake`
+//! converts the slope):
+//!
+//! * the line stays inside the soil iff no node between lies below it, i.e.
+//!   r_j ≤ min over b < i < j of r_i (a running minimum, (M3));
+//! * the block weight by the trapezoid rule is
+//!   W_j = Δx [ ½ γ_b (y_b + d) + Σ_{b<i<j} γ_i (y_i + d) − r_j Σ_{b<i<j} γ_i (i − b) ],
+//!   two running sums, so each candidate costs O(1) (M5);
+//! * P_j = W_j · (P/W)(β_j, φ_j) by Eq. (1), plus the loads (M6, M8).
+//!
+//! On a coarse grid the face lies δ ahead of node b's grid point, so node
+//! i is i − b − δ/Δx spacings from it and the face's segment is 1 − δ/Δx
+//! long (`FaceNode`, docs/model.md §9).
+
+use super::input::SearchInput;
+use crate::band::{stretch, Band};
+use crate::grid::FaceNode;
+use crate::laws::BandAngles;
+use crate::rake::Rake;
+use crate::surface::Surface;
+
+/// The lines of one scan: the face, and the running sums of (M5) and the
+/// running minimum of (M3) over the nodes scanned so far.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Lines {
+    /// The face: node b and its offset δ / Δx (0 on the grid).
+    pub(super) face: FaceNode,
+    pub(super) d: f64,
+    pub(super) dx: f64,
+    /// ½ γ_b (y_b + d) (1 − δ/Δx): the face node's trapezoid share.
+    pub(super) base: f64,
+    /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
+    pub(super) sum_gh: f64,
+    pub(super) sum_gk: f64,
+    /// Running minimum of r_i.
+    pub(super) r_min: f64,
+}
+
+impl Lines {
+    /// No node scanned yet, the tip at depth d below the face at node b.
+    pub(super) fn new(surface: &Surface, b: usize, d: f64) -> Self {
+        let face = surface.face_at(b);
+        Lines {
+            face,
+            d,
+            dx: surface.scheme.spacing,
+            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * face.segment(b),
+            sum_gh: 0.0,
+            sum_gk: 0.0,
+            r_min: f64::INFINITY,
+        }
+    }
+
+    /// Scans node j, the next one: its line's grid slope r_j / Δx and
+    /// weight W_j if it is admissible (M3, M5), then j joins the sums.
+    #[inline]
+    pub(super) fn advance(&mut self, surface: &Surface, j: usize) -> Option<(f64, f64)> {
+        let k = self.face.spacings(j);
+        let rise = surface.height[j] + self.d;
+        let mut line = None;
+        if rise <= self.r_min * k {
+            let r = rise / k;
+            self.r_min = r;
+            let weight = self.dx * (self.base + self.sum_gh - r * self.sum_gk);
+            line = Some((r / self.dx, weight));
+        }
+        let g = surface.unit_weight[j] * self.face.node_weight(j);
+        self.sum_gh += g * rise;
+        self.sum_gk += g * k;
+        line
+    }
+}
+
+/// The slope of a candidate's slip line on the grid and physically.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Slope {
+    pub(super) grid: f64,
+    pub(super) tan_beta: f64,
+}
+
+impl Slope {
+    /// The line of slope `grid` on the grid, if its physical angle is
+    /// admissible (`Rake::physical`).
+    pub(super) fn on_grid(grid: f64, rake: &Rake) -> Option<Self> {
+        Some(Slope {
+            grid,
+            tan_beta: rake.physical(grid)?,
+        })
+    }
+
+    /// Physical horizontal length of the slip line reaching `spacings`
+    /// node spacings ahead of the tip on the grid.
+    pub(super) fn length(&self, spacings: f64, dx: f64) -> f64 {
+        spacings * dx * stretch(self.grid, self.tan_beta)
+    }
+
+    /// The band whose lower boundary is this line to node j.
+    pub(super) fn band(&self, lines: &Lines, j: usize, band_width: f64) -> Band {
+        Band::new(
+            lines.face,
+            j,
+            (self.grid, self.tan_beta),
+            band_width,
+            lines.d,
+            lines.dx,
+        )
+    }
+}
+
+/// A candidate's slip line: emergence node, slope and block weight.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Line {
+    pub(super) node: usize,
+    pub(super) slope: Slope,
+    pub(super) weight: f64,
+}
+
+impl Line {
+    /// P_j: Eq. (1) for the band's angles, with the loads, if admissible
+    /// (M4, M6, M8).
+    pub(super) fn force(
+        &self,
+        input: &SearchInput,
+        lines: &Lines,
+        angles: BandAngles,
+    ) -> Option<f64> {
+        let t = self.slope.tan_beta;
+        let factor = input.laws.factor(angles, t, input.face);
+        let length = self.slope.length(lines.face.spacings(self.node), lines.dx);
+        input.loads.force(&factor, self.weight, length, t)
+    }
+}
