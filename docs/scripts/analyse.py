@@ -5,7 +5,9 @@ Usage: python3 docs/scripts/analyse.py OUTDIR [OUTDIR ...]
 
 For each run folder (written by `soilcut run`) prints the summary figures,
 the mean normalised force over each unit of u/d, the initial-stage β* swings,
-the longest stay of the band at one location, and far-band excursions.
+the longest stay of the band at one location, far-band excursions, the band
+jump nearest each peak, the slope of the window means and, for a variant, its
+window means against the shipped run's.
 """
 import csv
 import json
@@ -18,7 +20,8 @@ def load(run):
     summary = json.loads((run / "summary.json").read_text())
     rows = list(csv.DictReader((run / "history.csv").open()))
     col = lambda name: [float(r[name]) for r in rows]
-    return summary, {k: col(k) for k in ("u_over_d", "force_norm", "beta_deg", "x_emergence", "u")}
+    names = ("u_over_d", "force_norm", "beta_deg", "x_emergence", "u", "friction_deg")
+    return summary, {k: col(k) for k in names}
 
 
 def window_means(h):
@@ -74,6 +77,70 @@ def far_excursions(h, depth, far=4.0, brief=25):
     return count, max(ahead)
 
 
+def initial_range(h, depth, until=0.5):
+    """Least and largest β* for u/d < until, each with its emergence point's
+    distance ahead of the blade (length)."""
+    rows = [(b, x - u) for v, b, x, u in zip(h["u_over_d"], h["beta_deg"], h["x_emergence"], h["u"])
+            if v < until]
+    return min(rows), max(rows)
+
+
+def after_first_peak(s, h, span=0.2):
+    """From the first peak to the least force within `span` depths after it:
+    the increments, how many emerge within 1 length unit of the most common
+    emergence point (rounded), that point, the forces and the band's φ at both
+    ends."""
+    if not s["peaks"]:
+        return None
+    u = h["u_over_d"]
+    p = min(range(len(u)), key=lambda i: abs(u[i] - s["peaks"][0]["u_over_d"]))
+    after = [i for i in range(p, len(u)) if u[i] <= u[p] + span]
+    m = min(after, key=lambda i: h["force_norm"][i])
+    xs = [round(h["x_emergence"][i]) for i in range(p, m + 1)]
+    mode = max(set(xs), key=xs.count)
+    near = sum(abs(h["x_emergence"][i] - mode) <= 1.0 for i in range(p, m + 1))
+    f, phi = h["force_norm"], h["friction_deg"]
+    return m - p + 1, near, mode, (u[p], f[p], phi[p]), (u[m], f[m], phi[m])
+
+
+def peak_jumps(s, h, depth, after=0.4):
+    """For each peak: the nearest band jump (an increment whose emergence point
+    lies more than 0.25 d from the previous one, the summary's rule), in
+    increments from the peak (negative: before it), how far ahead of the blade
+    the band emerges after that jump (depths), and the least force within
+    `after` depths after the peak as a change from the peak (fraction)."""
+    u, f, x = h["u_over_d"], h["force_norm"], h["x_emergence"]
+    jumps = [i for i in range(1, len(x)) if abs(x[i] - x[i - 1]) > 0.25 * depth]
+    rows = []
+    for pk in s["peaks"]:
+        p = min(range(len(u)), key=lambda i: abs(u[i] - pk["u_over_d"]))
+        least = min(f[i] for i in range(p, len(u)) if u[i] <= u[p] + after)
+        if jumps:
+            j = min(jumps, key=lambda i: (abs(i - p), i))
+            rows.append((u[p], j - p, (x[j] - h["u"][j]) / depth, least / f[p] - 1))
+        else:
+            rows.append((u[p], None, None, least / f[p] - 1))
+    return rows
+
+
+def window_slopes(means):
+    """Change of the mean force from each unit window of u/d to the next (per d)."""
+    return [b - a for a, b in zip(means, means[1:])]
+
+
+def against_shipped(run, means):
+    """For a variant folder CASE-VARIANT beside the shipped CASE: the relative
+    change of each window mean from the shipped run's."""
+    run = Path(run)
+    for variant in ("-angle-of-mean-shear", "-by-position", "-per-node-formula"):
+        if run.name.endswith(variant):
+            base = run.parent / run.name[: -len(variant)]
+            if (base / "history.csv").exists():
+                _, hb = load(base)
+                return base, [m / b - 1 for m, b in zip(means, window_means(hb))]
+    return None
+
+
 def main():
     for run in sys.argv[1:]:
         s, h = load(run)
@@ -87,6 +154,27 @@ def main():
               f"mass_drift_rel {s['mass_drift_rel']:.1e}; dilation_area {s['dilation_area']:.1f}; "
               f"mean force per unit u/d [{means}]; beta swings (u/d<0.5) {beta_swings(h)}; "
               f"longest stay {stay} increments from u/d {at:.2f}; brief far bands (>4 d ahead) {far}, furthest {furthest:.1f} d")
+        (b0, x0), (b1, x1) = initial_range(h, depth)
+        print(f"  initial stage (u/d < 0.5): beta* from {b0:.1f} deg ({x0:.0f} ahead, {x0 / depth:.1f} d) to {b1:.1f} deg ({x1:.0f} ahead)")
+        stay = after_first_peak(s, h)
+        if stay:
+            n, near, x, (u0, f0, p0), (u1, f1, p1) = stay
+            print(f"  after the first peak: {near} of {n} increments emerge within 1 of x = {x}; "
+                  f"force {f0:.2f} at u/d {u0:.2f} to {f1:.2f} at u/d {u1:.2f}; band phi {p0:.1f} to {p1:.1f} deg")
+        if s["peaks"]:
+            parts = []
+            for up, k, ahead, drop in peak_jumps(s, h, depth):
+                jump = ("no band jump" if k is None
+                        else f"nearest band jump {k:+d} increments, to {ahead:.1f} d ahead")
+                parts.append(f"u/d {up:.2f}: {jump}, "
+                             f"least force within 0.4 d after {100 * drop:+.0f} %")
+            print("  at each peak: " + "; ".join(parts))
+        slopes = " ".join(f"{d:.2f}" for d in window_slopes(window_means(h)))
+        print(f"  slope of the window means (per d): {slopes}")
+        cmp = against_shipped(run, window_means(h))
+        if cmp:
+            base, rel = cmp
+            print(f"  window means against {base}: " + " ".join(f"{100 * r:+.1f} %" for r in rel))
 
 
 if __name__ == "__main__":
