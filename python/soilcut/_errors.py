@@ -36,7 +36,7 @@ class StepError(ValueError):
 class AccuracyWarning(UserWarning):
     """A case that runs, on a grid known to cost accuracy: nodes coarser
     than the increment (``run.node_spacing`` > ``run.increment``) in soil
-    that softens converge to a limit of their own, off the reference grid's
-    by 1.5-9 % in the window mean forces of the paper's softening cases and
-    17-20 % in Fig. 5 (``docs/model.md`` §9). ``soilcut
-    run`` prints the same message on stderr."""
+    that softens converge to a limit of their own, 7-18 times the ensemble
+    rule's tolerance off the reference grid in the window mean forces of the
+    paper's softening cases (``docs/model.md`` §9, §12.1). ``soilcut run``
+    prints the same message on stderr."""

@@ -579,7 +579,8 @@ fn help_examples_are_valid() {
             let mut check = vec!["check".to_string()];
             while let Some(word) = words.next() {
                 match word {
-                    "--out" => {
+                    // Options of `run` alone, with their values.
+                    "--out" | "--ensemble" | "--jobs" => {
                         words.next();
                     }
                     "--force" => {}

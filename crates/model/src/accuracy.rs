@@ -162,7 +162,10 @@ mod tests {
         // Between the bounds: two standard errors of the difference.
         let a = Spread::of(&[9.9, 10.1]);
         let expected = 2.0 * a.standard_error() / 10.0;
-        assert!((window_tolerance(&a, &r) - expected).abs() < 1e-15, "{expected}");
+        assert!(
+            (window_tolerance(&a, &r) - expected).abs() < 1e-15,
+            "{expected}"
+        );
         assert!(expected > WINDOW_FLOOR && expected < WINDOW_CEILING);
         // A wide spread: the ceiling.
         let wide = Spread::of(&[5.0, 15.0]);
