@@ -100,8 +100,8 @@ impl Wedge {
         }
     }
 
-    /// The FEE factors at failure angle β, if the wedge is admissible there
-    /// (β > 0 and α + β + φ + φw < 180°).
+    /// The FEE factors Nγ, Nc, Na, Nq of (M37) at failure angle β, if the
+    /// wedge is admissible there (β > 0 and α + β + φ + φw < 180°).
     pub fn factors(&self, beta: f64) -> Option<Factors> {
         let (alpha, phi) = (self.rake, self.friction);
         let denominator = (alpha + beta + phi + self.wall_friction).sin();
@@ -118,7 +118,7 @@ impl Wedge {
         })
     }
 
-    /// F = γ d² Nγ + c d Nc + a d Na + q d Nq.
+    /// F = γ d² Nγ + c d Nc + a d Na + q d Nq (M37).
     pub fn force_with(&self, f: &Factors) -> f64 {
         let d = self.depth;
         self.unit_weight * d * d * f.n_gamma
@@ -136,8 +136,8 @@ impl Wedge {
         }
     }
 
-    /// The trial wedge of least force (FEE), by a scan of β refined by
-    /// golden sections around the best point.
+    /// The trial wedge of least force (FEE, (M37)), by a scan of β refined
+    /// by golden sections around the best point.
     pub fn fee(&self) -> Option<Baseline> {
         let force = |beta: f64| self.factors(beta).map(|f| self.force_with(&f));
         let upper = PI - self.rake - self.friction - self.wall_friction;
@@ -157,7 +157,7 @@ impl Wedge {
     }
 
     /// Coulomb's passive wedge: the trial wedge without cohesion, adhesion
-    /// or surcharge.
+    /// or surcharge; for a vertical blade ½ γ d² Kp (M13).
     pub fn coulomb(&self) -> Option<Baseline> {
         let frictional = Wedge {
             cohesion: 0.0,
@@ -283,6 +283,7 @@ mod tests {
         w.wall_friction = 10f64.to_radians();
         let (p, pw) = (w.friction, w.wall_friction);
         let root = ((p + pw).sin() * p.sin() / pw.cos()).sqrt();
+        // Kp = cos² φ / (cos φw (1 − √(sin(φ + φw) sin φ / cos φw))²) (M13).
         let kp = p.cos().powi(2) / (pw.cos() * (1.0 - root).powi(2));
         let b = w.coulomb().unwrap();
         assert!(

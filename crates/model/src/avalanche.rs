@@ -81,6 +81,8 @@ impl Avalanche {
         slopes: (f64, f64),
         changed: &[Range<usize>],
     ) -> Range<usize> {
+        // s_down, s_up = Δx times the grid's repose slopes (M29); the passes
+        // restore −s_down ≤ y_{i+1} − y_i ≤ s_up (M28).
         let (down, up) = (
             surface.scheme.spacing * slopes.0,
             surface.scheme.spacing * slopes.1,

@@ -34,7 +34,8 @@ pub struct Band {
 impl Band {
     /// The band of width dB whose lower boundary has slope (`grid_slope`,
     /// `tan_beta`) = (on the grid, physically) (equal for a vertical blade;
-    /// the grid's vertical thickness is dB / cos β times their ratio).
+    /// the grid's vertical thickness is e = dB / cos β times their ratio,
+    /// (M16)).
     pub fn new(
         face: FaceNode,
         emergence: usize,
@@ -76,7 +77,7 @@ impl Band {
     /// Area of the band below the free surface between the face and the
     /// emergence node: ∫ clip(y − lower, 0, e) dx over the piecewise linear
     /// surface, integrated exactly (split where the surface crosses the
-    /// upper boundary).
+    /// upper boundary). This is A0 of the dilation (M19).
     pub fn area_below(&self, height: &[f64]) -> f64 {
         if self.thickness == 0.0 {
             return 0.0;
@@ -99,8 +100,9 @@ impl Band {
     /// Number of nodes m behind the emergence node whose soil the band
     /// touches at the surface, estimated in O(1): the upper boundary meets a
     /// surface of slope s at a distance e / (tan β − s) behind j; s is the
-    /// secant slope over the flat-ground footprint e / tan β. Exact where the
-    /// surface is straight over the footprint.
+    /// secant slope over the flat-ground footprint e / tan β, so
+    /// m = floor(e m0 / (Δx tan β m0 − (y_j − y_{j−m0}))) (M17). Exact where
+    /// the surface is straight over the footprint.
     #[inline]
     pub fn footprint(&self, height: &[f64]) -> usize {
         let (j, b) = (self.emergence, self.face.node);

@@ -604,8 +604,9 @@ impl Case {
             .max(1.0) as usize
     }
 
-    /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`.
-    /// With an end wall, no more than the nodes up to it.
+    /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`,
+    /// N0 = ceil((travel + 8 d_max) / Δx) + 2 (M30). With an end wall, no
+    /// more than the nodes up to it.
     pub fn initial_nodes(&self) -> f64 {
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
         let nodes = (reach / self.run.node_spacing).ceil() + 2.0;

@@ -121,8 +121,9 @@ impl Kinematics {
     }
 
     /// Before the update: the weight of the soil the tip passes over (left
-    /// in the trench) and the weight from the face to j less it, which the
-    /// update keeps; the unit weights of the face to j are saved.
+    /// in the trench, γ_b Δx (d_max − d − ½ Δd), (M38)) and the weight from
+    /// the face to j less it, which the update keeps; the unit weights of
+    /// the face to j are saved.
     fn start(&mut self, surface: &Surface, band: &Band, advance: Advance) -> (f64, f64) {
         let (b, j) = (band.face.node, band.emergence);
         // The strip the blade moves through: soil below the tip's path
@@ -161,16 +162,20 @@ impl Kinematics {
         let last_block_x = self.trace_image(surface, band, rise, dx)?;
         let first_band_node = (b + 2..j).find(|&i| surface.x(i) > last_block_x)?;
         let area_before = region_area(surface, b, j);
+        // ΔA = A0 Δut tan ψ / dB (M19).
         let dilation_area = band.area_below(&surface.height) * slip * motion.tan_psi / band.width;
         self.resample(surface, b, j);
-        // Swept area ½ Δx (e + rise) on a half-weight node: a rise of e + rise.
+        // Swept area ½ Δx (e + rise) on a half-weight node: a rise of e + rise
+        // (M20).
         surface.height[b + 1] += e + rise;
         // The strip's soil below the tip (deeper than d, above the floor)
         // stays behind the blade.
         let left_behind = dx * (-surface.floor - band.depth);
+        // Area after = area before + ΔA, exactly (M21).
         let residual = area_before - left_behind + dilation_area - region_area(surface, b + 1, j);
         spread_residual(surface, first_band_node..j, residual);
         shift_block_state(surface, b, first_band_node);
+        // ut_i += Δut, or f_i Δut (M22).
         self.accumulate_shear(surface, band, first_band_node, slip, rule);
         Some(Update {
             slip,
@@ -259,6 +264,10 @@ struct BandMotion {
 }
 
 impl BandMotion {
+    /// The band's motion (M35): the block moves by λ (cos θ, sin θ), θ = β + ψ,
+    /// which on the grid is (v0, v0 tan θ'), a rise of v0 tan θ'; its slip
+    /// Δut = v0 cos ψ √(1 + tan² θ) / (1 + cot α tan θ) (M36), for a vertical
+    /// blade Δut = v0 cos ψ / cos(β + ψ) with Δuv = Δut tan ψ (M18).
     fn new(choice: &Choice, rake: &Rake, dx: f64) -> Option<Self> {
         let (t, psi) = (choice.tan_beta, choice.dilation);
         let tan_psi = psi.tan();
@@ -286,17 +295,23 @@ impl BandMotion {
     }
 }
 
-/// The slip-line update (see the module doc).
+/// The slip-line update (see the module doc): the block's nodes shift one
+/// node and rise by v0 tan β* (M14), the face node takes the swept soil
+/// (M20), and node j accumulates the slip Δut (M15, M36 on a raked blade;
+/// M22).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
     let j = choice.node;
     let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.scheme.spacing);
     let h = &mut surface.height;
+    // y'_{i+1} = y_i + v0 tan β*, b ≤ i < j (M14).
     h.copy_within(blade..j, blade + 1);
     for y in &mut h[blade + 1..=j] {
         *y += rise;
     }
+    // The swept soil: y'_{b+1} += v0 tan β* (M20).
     h[blade + 1] += rise;
     shift_block_state(surface, blade, j);
+    // ut_j += Δut (M15; M22).
     surface.accumulated_shear[j] += slip;
     Update {
         slip,
@@ -341,7 +356,7 @@ impl Kinematics {
     /// the slip line stays (its column's γ), the soil above it came from the
     /// column behind (that column's γ), mixed by area. Without this the band
     /// would have to absorb every difference of γ along the block, which can
-    /// drive its unit weight negative.
+    /// drive its unit weight negative (M26, by `mix_column`).
     fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
         let b = band.face.node;
         for i in b + 1..first_band {
@@ -396,7 +411,9 @@ fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
     }
 }
 
-/// The band's unit weight after the update (the `choices.unit_weight` rule).
+/// The band's unit weight after the update (the `choices.unit_weight` rule):
+/// the band as a whole (M27, `conserve_mass`), or node by node, each γ
+/// divided by 1 + Δut tan ψ / dB, the paper's A_new / A0 (M25).
 fn band_unit_weight(
     surface: &mut Surface,
     band: &Band,
@@ -423,7 +440,8 @@ fn band_unit_weight(
 
 /// Gives the band's nodes (first..=j) the one unit weight that makes the
 /// weight of the nodes from the face (now `surface.face`) to j equal
-/// `mass_before`.
+/// `mass_before`: γ_band = (M_before − M_block) / Σ w_i (y'_i − y_floor) Δx
+/// (M27).
 fn conserve_mass(surface: &mut Surface, band: &Band, first: usize, mass_before: f64) {
     let (b, j) = (surface.face.node, band.emergence);
     let outside = region_mass(surface, b, b..first);

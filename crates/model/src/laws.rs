@@ -63,7 +63,8 @@ impl Laws {
         let climbs = case.blade.depth_path.windows(2).any(|w| w[1][1] < w[0][1]);
         let can_sink = case.soil.dilation.min() < 0.0 || climbs;
         // The infimum of P/W (β → 0, least φ) over the face frictions the
-        // block may have: which one is least depends on the rake.
+        // block may have: which one is least depends on the rake. f_min of
+        // the stopping bound (M31).
         let at_zero = |wall: f64| ForceFactor::new(material.friction.min(), wall).at_zero_angle();
         let min_factor = if can_sink {
             at_zero(walls.0).min(at_zero(walls.1))
@@ -125,8 +126,8 @@ impl Laws {
         }
     }
 
-    /// The band-angle rule: mean of the node angles, or angles of the mean
-    /// accumulated shear.
+    /// The band-angle rule: mean of the node angles (M10), or angles of the
+    /// mean accumulated shear.
     pub(crate) fn band_angles(&self, means: BandAngles) -> BandAngles {
         match self.rule {
             BandAngleRule::MeanOfAngles => means,

@@ -31,7 +31,9 @@ impl PiecewiseLaw {
         }
     }
 
-    /// The angle (radians) at accumulated shear `ut` (Fig. 2b-c).
+    /// The angle (radians) at accumulated shear `ut` (Fig. 2b-c): linear
+    /// from `initial` to `peak` over [0, up), from `peak` to `residual` over
+    /// [up, ur), `residual` beyond (M23).
     pub fn at(&self, ut: f64) -> f64 {
         if ut < self.peak_shear {
             self.initial + (self.peak - self.initial) * ut / self.peak_shear

@@ -30,7 +30,8 @@ pub struct ForceFactor {
 }
 
 impl ForceFactor {
-    /// `phi`, `wall_friction` in radians.
+    /// The coefficients of (M7), cos φ, sin φ, cos(φ + ω), sin(φ + ω), for
+    /// ω = `wall_friction`; `phi`, `wall_friction` in radians.
     pub fn new(phi: f64, wall_friction: f64) -> Self {
         ForceFactor {
             cos_phi: phi.cos(),
@@ -40,7 +41,8 @@ impl ForceFactor {
         }
     }
 
-    /// The same from sin φ, cos φ and sin φw, cos φw: no trigonometry.
+    /// The same coefficients of (M7) from sin φ, cos φ and sin ω, cos ω: no
+    /// trigonometry.
     #[inline]
     pub fn from_sin_cos(phi: (f64, f64), wall: (f64, f64)) -> Self {
         let ((sin_phi, cos_phi), (sin_w, cos_w)) = (phi, wall);
@@ -52,7 +54,10 @@ impl ForceFactor {
         }
     }
 
-    /// P / W at t = tan β, or `None` if the mechanism is not admissible.
+    /// P / W at t = tan β by Eq. (1) (M6) in its tangent form
+    /// (t cos φ + sin φ) / (cos(φ + ω) − t sin(φ + ω)) (M7), or `None` if
+    /// the mechanism is not admissible: t > 0 and a positive denominator,
+    /// β > 0 and β + φ + ω < 90° (M4).
     #[inline]
     pub fn at(&self, t: f64) -> Option<f64> {
         let denominator = self.cos_phi_w - t * self.sin_phi_w;
@@ -77,7 +82,8 @@ impl ForceFactor {
 
     /// The cohesion term of the vertical-blade equation per unit c L
     /// (L the horizontal length of the block): c Ls cos φ / cos(β + φ + φw)
-    /// with Ls = L / cos β, i.e. (1 + t²) cos φ / (cos(φ + φw) − t sin(φ + φw)).
+    /// with Ls = L / cos β, i.e. (1 + t²) cos φ / (cos(φ + φw) − t sin(φ + φw)),
+    /// the c Ls cos φ term of (M8).
     #[inline]
     pub fn cohesion_at(&self, t: f64) -> f64 {
         (1.0 + t * t) * self.cos_phi / (self.cos_phi_w - t * self.sin_phi_w)
@@ -92,7 +98,8 @@ impl ForceFactor {
     }
 
     /// The infimum of P / W over admissible β (β → 0): sin φ / cos(φ + φw).
-    /// P / W grows with β and with φ, so this bounds every candidate.
+    /// P / W grows with β and with φ, so this bounds every candidate: f_min
+    /// of the stopping bound (M31) at the least φ.
     pub fn at_zero_angle(&self) -> f64 {
         self.sin_phi / self.cos_phi_w
     }
@@ -110,7 +117,7 @@ pub struct Face {
 impl Face {
     /// Whether a block on a band at tan β with dilation ψ rises along the
     /// face: its direction β + ψ climbs faster than the tip,
-    /// tan(β + ψ) > climb, which sets the sign of the face friction.
+    /// tan(β + ψ) > climb (M9), which sets the sign of the face friction.
     #[inline]
     pub fn rises(&self, tan_beta: f64, dilation: f64) -> bool {
         tan_beta > self.sinking_below || {
@@ -200,7 +207,8 @@ pub struct Loads {
 
 impl Loads {
     /// P of a candidate of weight W whose slip line runs `length` ahead of
-    /// the tip, at tan β. Each added term is ≥ 0 (adhesion: validated), so
+    /// the tip, at tan β: Eq. (1) with cohesion, adhesion and surcharge
+    /// (M8), divided through by cos β. Each added term is ≥ 0 (adhesion: validated), so
     /// every bound on the weight alone stays a bound.
     #[inline]
     pub fn force(&self, factor: &ForceFactor, weight: f64, length: f64, t: f64) -> Option<f64> {

@@ -41,8 +41,9 @@ impl Rake {
         }
     }
 
-    /// tan β of a line whose slope on the grid (in x') is `grid_slope`, or
-    /// `None` where the line would not go forward (β ≥ 90°).
+    /// tan β of a line whose slope on the grid (in x') is `grid_slope`, the
+    /// inverse of (M34), or `None` where the line would not go forward
+    /// (β ≥ 90°).
     #[inline]
     pub fn physical(&self, grid_slope: f64) -> Option<f64> {
         if self.cot == 0.0 {
@@ -53,7 +54,8 @@ impl Rake {
         (run > 0.0).then(|| grid_slope / run)
     }
 
-    /// The grid slope (in x') of a line at tan β = `t`.
+    /// The grid slope (in x') of a line at tan β = `t`:
+    /// tan β' = tan β / (1 + cot α tan β) (M34).
     #[inline]
     pub fn grid(&self, t: f64) -> f64 {
         t / (1.0 + self.cot * t)
@@ -65,7 +67,8 @@ impl Rake {
     /// unit of x' falls physically by s / (1 + s cot α) < tan α, so where
     /// θr ≥ α (a face flatter than the repose) every downhill slope the grid
     /// can hold is stable and the downhill limit is infinite: soil lies on
-    /// the face as on ground flatter than its repose.
+    /// the face as on ground flatter than its repose. Times Δx these are
+    /// s_down and s_up (M29).
     pub fn repose_slopes(&self, tan_repose: f64) -> (f64, f64) {
         let run = 1.0 - tan_repose * self.cot;
         let down = if run > 0.0 {
@@ -76,7 +79,8 @@ impl Rake {
         (down, tan_repose / (1.0 + tan_repose * self.cot))
     }
 
-    /// Physical x of the point (x', y) with the tip at depth d.
+    /// Physical x of the point (x', y) with the tip at depth d: the inverse
+    /// of the shear x' = x + (y + d) cot α (M33).
     #[inline]
     pub fn x(&self, x_grid: f64, y: f64, depth: f64) -> f64 {
         x_grid - (y + depth) * self.cot

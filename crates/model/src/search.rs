@@ -71,8 +71,8 @@ struct Landscape {
 }
 
 impl Search {
-    /// The minimum-effort mechanism, or `None` if no admissible candidate
-    /// exists within a domain of `max_nodes` nodes.
+    /// The minimum-effort mechanism, P* = min_j P_j (M11), or `None` if no
+    /// admissible candidate exists within a domain of `max_nodes` nodes.
     pub fn run(
         &mut self,
         surface: &mut Surface,

@@ -146,6 +146,7 @@ impl Simulation {
         let surface = Surface::flat(scheme, d, case.soil.unit_weight, fresh, nodes);
         let initial_mass = surface.mass(0);
         let rake = Rake::new(case.blade.rake);
+        // The repose slopes on the grid (M29), per unit of x'.
         let tan_repose = case.soil.repose.to_radians().tan();
         Ok(Simulation {
             laws,
@@ -384,7 +385,8 @@ impl Simulation {
         self.laws.refresh_angles(&mut self.surface, moved);
         // Face friction opposes the block's motion along the face. The
         // reaction is at φw (with its sign) from the face normal, which is
-        // α − 90° from the horizontal: ω = ±φw + α − 90°.
+        // α − 90° from the horizontal: ω = ±φw + α − 90°, and the components
+        // are P* cos ω, P* sin ω (M12).
         let omega = if face.rises(choice.tan_beta, choice.dilation) {
             self.laws.walls.0
         } else {

@@ -55,7 +55,8 @@ pub struct Surface {
 
 impl Surface {
     /// Flat ground y = 0 of `nodes` nodes from x = 0 on the grid of
-    /// `scheme`, of fresh soil with friction and dilation angles
+    /// `scheme` (the node grid (M1): x_i = i Δx, Δx = v0 on the reference
+    /// scheme), of fresh soil with friction and dilation angles
     /// `fresh_angles` (radians).
     pub fn flat(
         scheme: Scheme,
@@ -91,8 +92,8 @@ impl Surface {
         self.height.is_empty()
     }
 
-    /// x of node i: i Δx on the grid, the face node offset by δ (physical
-    /// for a vertical blade).
+    /// x of node i: i Δx on the grid (M1), the face node offset by δ
+    /// (physical for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
         i as f64 * self.scheme.spacing + self.offset_of(i) * self.scheme.spacing
     }
@@ -162,7 +163,8 @@ impl Surface {
 
     /// Weight of soil in front of the blade at node `first` and of the soil
     /// left below the tip's path, counting only the ground that
-    /// existed at the start.
+    /// existed at the start: M = Δx Σ w_i γ_i (y_i − y_floor) + M_trench
+    /// less the appended ground (M24).
     pub fn mass(&self, first: usize) -> f64 {
         // The closed form below knows the face's half weight only on the grid.
         let near = if self.offset_of(first) == 0.0 {

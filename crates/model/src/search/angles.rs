@@ -88,7 +88,8 @@ fn node_angles(surface: &Surface, j: usize) -> BandAngles {
     }
 }
 
-/// Mean angles of the m + 1 nodes whose sums are `hi − lo`.
+/// Mean angles of the m + 1 nodes whose sums are `hi − lo`:
+/// φ_j = (1/(m+1)) Σ φ(ut_i), ψ_j and ut_j likewise (M10).
 fn window_angles(hi: [f64; 3], lo: [f64; 3], m: usize) -> BandAngles {
     let n = (m + 1) as f64;
     BandAngles {

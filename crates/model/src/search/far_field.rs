@@ -45,6 +45,8 @@ impl FarField {
         }
     }
 
+    /// W(n), the block weight of the candidate n nodes from the face, in
+    /// closed form (M32).
     pub(super) fn weight(&self, n: usize) -> f64 {
         let s = self.start;
         let ahead = (n - s) as f64;

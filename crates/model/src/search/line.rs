@@ -54,16 +54,19 @@ impl Lines {
         }
     }
 
-    /// Scans node j, the next one: its line's grid slope r_j / Δx and
-    /// weight W_j if it is admissible (M3, M5), then j joins the sums.
+    /// Scans node j, the next one: its line's grid slope r_j / Δx (M2) and
+    /// weight W_j (M5) if it is admissible (M3), then j joins the sums.
     #[inline]
     pub(super) fn advance(&mut self, surface: &Surface, j: usize) -> Option<(f64, f64)> {
         let k = self.face.spacings(j);
         let rise = surface.height[j] + self.d;
         let mut line = None;
+        // r_j ≤ min r_i: the line stays inside the soil (M3).
         if rise <= self.r_min * k {
+            // r_j = (y_j + d) / (j − b), the grid slope r_j / Δx (M2).
             let r = rise / k;
             self.r_min = r;
+            // W_j = Δx [½ γ_b (y_b + d) + Σ γ_i (y_i + d) − r_j Σ γ_i (i − b)] (M5).
             let weight = self.dx * (self.base + self.sum_gh - r * self.sum_gk);
             line = Some((r / self.dx, weight));
         }

@@ -67,7 +67,7 @@ impl Best {
     }
 
     /// Evaluates a candidate in full (Eq. (1)) and keeps it if it can be
-    /// the least.
+    /// the least: the running minimum of P_j (M11).
     pub(super) fn consider(
         &mut self,
         input: &SearchInput,
@@ -97,7 +97,8 @@ impl Best {
         self.admissible.push(candidate);
     }
 
-    /// The candidate of least force, nearest the blade among near-ties.
+    /// The candidate of least force, P* = min_j P_j (M11), nearest the
+    /// blade among near-ties.
     pub(super) fn select(&self) -> Option<Choice> {
         self.admissible
             .iter()
