@@ -307,6 +307,52 @@ fn an_ensemble_writes_its_members_and_their_envelope() {
 }
 
 #[test]
+fn accuracy_judges_one_ensemble_folder_against_another() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = workspace().join("cases/paper/original.toml");
+    let case = case.to_str().unwrap();
+    let ensemble = |out: &str, extra: &[&str]| {
+        let mut args = vec![
+            "run",
+            case,
+            "--ensemble",
+            "3",
+            "--no-plots",
+            "-q",
+            "--out",
+            out,
+        ];
+        args.extend(SHORT);
+        args.extend(extra);
+        assert_ok(&soilcut(&args, tmp.path()));
+    };
+    ensemble("a", &[]);
+    ensemble("fine", &["--set", "run.increment=0.1"]);
+    ensemble("long", &["--set", "run.travel=40"]);
+    // Against itself: every deviation 0, accurate.
+    let o = soilcut(&["accuracy", "a", "a", "--json"], tmp.path());
+    assert_ok(&o);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["accurate"], true);
+    assert_eq!(v["whole_run"]["deviation"], 0.0);
+    assert_eq!(v["windows"].as_array().unwrap().len(), 1);
+    // Against a finer ensemble: the table names the rule and a verdict.
+    let o = soilcut(&["accuracy", "a", "fine"], tmp.path());
+    assert_ok(&o);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("rule: ") && text.contains("accurate: "),
+        "{text}"
+    );
+    // Bad input: another travel, a folder without an ensemble.
+    let o = soilcut(&["accuracy", "long", "a"], tmp.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("same travel"));
+    let o = soilcut(&["accuracy", "a/k+0", "a"], tmp.path());
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
 fn plot_of_a_folder_without_a_run_is_bad_input() {
     let tmp = tempfile::tempdir().unwrap();
     let o = soilcut(&["plot", "."], tmp.path());

@@ -172,3 +172,37 @@ fn the_folder_holds_every_member_and_the_spread() {
     assert_eq!(csv.lines().count(), 3);
     assert!(r.write(&out, false, false).is_err(), "an occupied folder");
 }
+
+#[test]
+fn converging_ensembles_are_judged_against_the_finest_level() {
+    use soilcut_study::converge::ensembles::EnsembleConverge;
+    use soilcut_study::converge::Refine;
+    let set = ["run.travel=40", "run.increment=1"]
+        .iter()
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let study = EnsembleConverge {
+        base: BaseCase::new(REFINED.to_string(), set).unwrap(),
+        levels: 2,
+        refine: Refine::Both,
+        members: 3,
+        jobs: 2,
+    };
+    let r = study.run(&no_progress).unwrap();
+    let increments: Vec<f64> = r.levels.iter().map(|l| l.increment).collect();
+    assert_eq!(increments, [1.0, 0.5]);
+    let agreements = r.agreements();
+    // The finest level against itself: no deviation, accurate.
+    let finest = agreements.last().unwrap();
+    assert!(finest.accurate());
+    assert!(finest.windows.iter().all(|v| v.deviation == 0.0));
+    // The coarse level's deviation is its mean's from the finest's.
+    let (coarse, fine) = (&r.levels[0].ensemble, &r.levels[1].ensemble);
+    let expected = (coarse.whole_run.mean - fine.whole_run.mean) / fine.whole_run.mean;
+    assert!((agreements[0].whole_run.deviation - expected).abs() < 1e-15);
+    // converge.csv: one row per level and window, plus the whole run.
+    let csv = r.csv();
+    assert_eq!(csv.lines().count(), 1 + 2 * (2 + 1));
+    assert!(csv.lines().nth(3).unwrap().starts_with("0,1,1,all,3,"));
+    assert!(r.markdown().contains("| 1 | 0.5 | 0.5 |"));
+}
