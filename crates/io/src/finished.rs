@@ -155,6 +155,18 @@ impl Table {
         Ok(self.rows.iter().map(|r| r[i]).collect())
     }
 
+    /// The columns named in `names`, in that order.
+    pub fn columns<const N: usize>(
+        &self,
+        names: [&str; N],
+    ) -> Result<[Vec<f64>; N], RunFilesError> {
+        let mut out: [Vec<f64>; N] = std::array::from_fn(|_| Vec::new());
+        for (slot, name) in out.iter_mut().zip(names) {
+            *slot = self.column(name)?;
+        }
+        Ok(out)
+    }
+
     /// The values of column `name`, or `None` if the table has no such
     /// column (a column added in a later version, absent from older runs).
     pub fn optional_column(&self, name: &str) -> Option<Vec<f64>> {

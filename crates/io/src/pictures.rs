@@ -3,7 +3,7 @@
 //! [`write_run_dir`], so the folders are identical.
 
 use crate::error::OutputError;
-use crate::finished::{read_finished_run, FinishedRun, RunFilesError, Table};
+use crate::finished::{read_finished_run, FinishedRun, RunFilesError};
 use crate::output::write_output_dir_then;
 use soilcut_plot::{Frame, Increment, Measured, PlotError, RunData, SurfacePoint};
 use std::path::{Path, PathBuf};
@@ -109,18 +109,6 @@ fn label_by_folder(runs: &mut [RunData], dirs: &[PathBuf]) {
     }
 }
 
-/// The columns of `table` named in `names`, in that order.
-fn columns<const N: usize>(
-    table: &Table,
-    names: [&str; N],
-) -> Result<[Vec<f64>; N], RunFilesError> {
-    let mut out: [Vec<f64>; N] = std::array::from_fn(|_| Vec::new());
-    for (slot, name) in out.iter_mut().zip(names) {
-        *slot = table.column(name)?;
-    }
-    Ok(out)
-}
-
 fn surface(x: &[f64], y: &[f64], shear: &[f64]) -> Vec<SurfacePoint> {
     (0..x.len())
         .map(|i| SurfacePoint {
@@ -133,17 +121,14 @@ fn surface(x: &[f64], y: &[f64], shear: &[f64]) -> Vec<SurfacePoint> {
 
 /// What the pictures need of a finished run.
 pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
-    let [step, u, force, beta, xe, ye] = columns(
-        &run.history,
-        [
-            "step",
-            "u",
-            "force_norm",
-            "beta_deg",
-            "x_emergence",
-            "y_emergence",
-        ],
-    )?;
+    let [step, u, force, beta, xe, ye] = run.history.columns([
+        "step",
+        "u",
+        "force_norm",
+        "beta_deg",
+        "x_emergence",
+        "y_emergence",
+    ])?;
     // Runs from before depth paths have no `depth` column: the tip was at
     // blade.depth throughout.
     let depth = match run.history.optional_column("depth") {
@@ -161,11 +146,11 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
             depth: depth[i],
         })
         .collect();
-    let [x, y, shear] = columns(&run.profile, ["x", "y", "accumulated_shear"])?;
+    let [x, y, shear] = run.profile.columns(["x", "y", "accumulated_shear"])?;
     let mut frames: Vec<Frame> = Vec::new();
     if let Some(table) = &run.frames {
         let [id, step, u, x, y, shear] =
-            columns(table, ["frame", "step", "u", "x", "y", "accumulated_shear"])?;
+            table.columns(["frame", "step", "u", "x", "y", "accumulated_shear"])?;
         let mut start = 0;
         for end in 1..=id.len() {
             if end == id.len() || id[end] != id[start] {

@@ -219,9 +219,7 @@ impl RecordedSpread {
     /// Reads `dir/ensemble.csv` and `dir/summary.json`.
     pub fn read(dir: &Path) -> Result<RecordedSpread, soilcut_io::RunFilesError> {
         let table = soilcut_io::Table::read(&dir.join("ensemble.csv"))?;
-        let [n, mean, std, min, max] =
-            ["members", "mean", "std", "min", "max"].map(|c| table.column(c));
-        let (n, mean, std, min, max) = (n?, mean?, std?, min?, max?);
+        let [n, mean, std, min, max] = table.columns(["members", "mean", "std", "min", "max"])?;
         let windows = (0..table.len())
             .map(|i| Spread {
                 n: n[i] as usize,
