@@ -23,6 +23,8 @@ import statistics
 import subprocess
 from pathlib import Path
 
+from time_to_accuracy import depth_of  # the same folder: the case file's blade depth
+
 CASES = ["original", "table1-s", "fig8b", "table1-hs", "fig5"]
 REFERENCE = 2000
 # (name, d/v0, d/h): the reference grid (h = v0) and the coarse grid.
@@ -33,14 +35,6 @@ SCHEMES = [
     ("coarse d/500, h d/25", 500, 25),
     ("coarse d/1000, h d/25", 1000, 25),
 ]
-
-
-def depth_of(case: Path) -> float:
-    for line in case.read_text().splitlines():
-        key, _, value = line.partition("=")
-        if key.strip() == "depth":
-            return float(value.split("#")[0])
-    raise SystemExit(f"{case}: no blade depth")
 
 
 def ensemble(soilcut, case, depth, per_v0, per_h, folder, jobs):

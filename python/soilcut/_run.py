@@ -144,8 +144,9 @@ class Ensemble:
         self.summary: dict[str, Any] = json.loads(files["summary.json"])
         members = native.members()
         self.folders: list[str] = [name for name, _ in members]
+        files_of = [dict(f) for _, f in members]
         self.members: list[RunResult] = [
-            RunResult(Case(dict(f)["case.resolved.toml"]), dict(f)) for _, f in members
+            RunResult(Case(f["case.resolved.toml"]), f) for f in files_of
         ]
 
     def windows_frame(self):

@@ -4,7 +4,7 @@
 
 use super::{CaseOutput, Failure};
 use crate::study_cmd::{progress, study_failure};
-use soilcut_io::{check_output_dir, Override};
+use soilcut_io::check_output_dir;
 use soilcut_study::ensemble::Ensemble;
 use soilcut_study::BaseCase;
 
@@ -17,12 +17,7 @@ pub fn run_ensemble(
     quiet: bool,
 ) -> Result<(), Failure> {
     let path = target.case.as_path();
-    let overrides = target
-        .set
-        .iter()
-        .map(|s| s.parse::<Override>())
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| Failure::input(path, e))?;
+    let overrides = target.overrides().map_err(|e| Failure::input(path, e))?;
     let base = BaseCase::read(path, overrides).map_err(|e| Failure::input(path, e))?;
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
     let out = target.out_or(&case.name);

@@ -172,6 +172,11 @@ struct CaseOutput {
 }
 
 impl CaseOutput {
+    /// The `--set` overrides.
+    fn overrides(&self) -> Result<Vec<Override>, soilcut_io::InputError> {
+        self.set.iter().map(|s| s.parse::<Override>()).collect()
+    }
+
     /// `--out`, or out/`name`.
     fn out_or(&self, name: &str) -> PathBuf {
         self.out

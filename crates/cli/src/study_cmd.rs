@@ -6,9 +6,7 @@
 use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use soilcut_io::{
-    check_output_dir, read_measured_curve, write_output_dir_then, OutputError, Override,
-};
+use soilcut_io::{check_output_dir, read_measured_curve, write_output_dir_then, OutputError};
 use soilcut_study::converge::ensembles::EnsembleConverge;
 use soilcut_study::converge::{Converge, Refine};
 use soilcut_study::fit::{parse_bounds, Compare, Fit, Method};
@@ -177,7 +175,10 @@ impl Common {
     /// The base case, the output folder (checked to be free) and the case name.
     fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
         let path = &self.target.case;
-        let overrides = self.overrides().map_err(|e| Failure::input(path, e))?;
+        let overrides = self
+            .target
+            .overrides()
+            .map_err(|e| Failure::input(path, e))?;
         let base = BaseCase::read(path, overrides).map_err(|e| Failure::input(path, e))?;
         let name = base
             .load(&[])
@@ -187,15 +188,6 @@ impl Common {
         let out = self.target.out_or(&format!("{name}-{study}"));
         check_output_dir(&out, self.target.force).map_err(Failure::output)?;
         Ok((base, out))
-    }
-
-    /// The `--set` overrides.
-    fn overrides(&self) -> Result<Vec<Override>, soilcut_io::InputError> {
-        self.target
-            .set
-            .iter()
-            .map(|s| s.parse::<Override>())
-            .collect()
     }
 
     /// A progress callback: a bar on stderr when it is a terminal.
@@ -352,8 +344,11 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
             .split_once('=')
             .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
         let case = Path::new(case);
-        let other = BaseCase::read(case, c.overrides().map_err(|e| Failure::input(path, e))?)
-            .map_err(|e| Failure::input(case, e))?;
+        let other = BaseCase::read(
+            case,
+            c.target.overrides().map_err(|e| Failure::input(path, e))?,
+        )
+        .map_err(|e| Failure::input(case, e))?;
         tests.push(test_of(Path::new(measured), other, args.width)?);
     }
     let fit = Fit {
@@ -434,14 +429,7 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     let mut verdicts = String::new();
     write_study(&out, c.target.force, |dir| {
         let r = study.run(&c.progress("levels"))?;
-        text_files(
-            dir,
-            &[
-                ("converge.csv", r.csv()),
-                ("converge.md", r.markdown()),
-                ("timing.csv", r.timing_csv()),
-            ],
-        )?;
+        converge_files(dir, r.csv(), r.markdown(), r.timing_csv())?;
         r.draw(&dir.join("converge.png"))?;
         let converged = r.converged().iter().filter(|v| **v == Some(true)).count();
         verdicts = format!(
@@ -455,19 +443,29 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
     Ok(())
 }
 
+/// The files of `soilcut converge`, with or without `--ensemble`.
+fn converge_files(
+    dir: &Path,
+    csv: String,
+    markdown: String,
+    timing: String,
+) -> Result<(), StudyError> {
+    text_files(
+        dir,
+        &[
+            ("converge.csv", csv),
+            ("converge.md", markdown),
+            ("timing.csv", timing),
+        ],
+    )
+}
+
 /// `soilcut converge --ensemble N`: the levels' ensembles and their verdicts.
 fn converge_ensembles(study: &EnsembleConverge, c: &Common, out: &Path) -> Result<(), StudyError> {
     let mut verdicts = String::new();
     write_study(out, c.target.force, |dir| {
         let r = study.run(&c.progress("members"))?;
-        text_files(
-            dir,
-            &[
-                ("converge.csv", r.csv()),
-                ("converge.md", r.markdown()),
-                ("timing.csv", r.timing_csv()),
-            ],
-        )?;
+        converge_files(dir, r.csv(), r.markdown(), r.timing_csv())?;
         let accurate: Vec<String> = r
             .agreements()
             .iter()

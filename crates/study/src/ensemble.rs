@@ -79,9 +79,7 @@ impl Perturbation {
 
     /// The key's value in member k (M39).
     pub fn value(&self, k: i32) -> f64 {
-        if k == 0 {
-            self.base
-        } else if self.relative {
+        if self.relative {
             self.base * (1.0 + self.step * f64::from(k))
         } else {
             self.base + self.step * f64::from(k)
