@@ -124,8 +124,6 @@ pub struct Member {
     pub window_means: Vec<f64>,
     /// Mean P/(γ0 d²) over the whole run.
     pub mean_force_norm: f64,
-    /// Wall time of the member's simulation, s.
-    pub wall_time_s: f64,
 }
 
 /// A finished ensemble.
@@ -217,7 +215,6 @@ impl Ensemble {
             value,
             window_means: window_means(&force, windows),
             mean_force_norm: mean(&forces),
-            wall_time_s: run.wall_time_s,
             force,
             loaded,
             run,

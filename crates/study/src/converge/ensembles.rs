@@ -167,7 +167,7 @@ impl EnsembleConvergeResult {
                 out.push_str(&csv::line(&[
                     l.level.to_string(),
                     m.k.to_string(),
-                    m.wall_time_s.to_string(),
+                    m.run.wall_time_s.to_string(),
                 ]));
             }
         }

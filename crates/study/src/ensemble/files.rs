@@ -115,7 +115,7 @@ impl EnsembleResult {
             out.push_str(&csv::line(&[
                 m.k.to_string(),
                 member_folder(m.k),
-                m.wall_time_s.to_string(),
+                m.run.wall_time_s.to_string(),
             ]));
         }
         out
