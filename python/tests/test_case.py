@@ -75,6 +75,7 @@ CLI_ERRORS = [
     ("soil.friction.peak", 95, "soil.friction.peak=95"),
     ("soil.d50", 0.6, "soil.d50=0.6"),
     ("run.increment", 30, "run.increment=30"),
+    ("choices.face_friction", "smooth", 'choices.face_friction="smooth"'),
 ]
 
 

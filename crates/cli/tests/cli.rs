@@ -239,6 +239,21 @@ fn both_band_width_keys() {
 }
 
 #[test]
+fn bad_face_friction() {
+    for case in [BASE, REFINED] {
+        let line = assert_bad_input(
+            case,
+            &["choices.face_friction=\"smooth\""],
+            "choices.face_friction: ",
+        );
+        assert!(
+            line.contains("mobilised") && line.contains("sign"),
+            "names the allowed values: {line}"
+        );
+    }
+}
+
+#[test]
 fn bad_name() {
     assert_bad_input(BASE, &["name=\"../escape\""], "name: ");
 }

@@ -10,7 +10,7 @@ use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
     default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
-    Choices, Model, Run, Soil, UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
+    Choices, FaceFrictionRule, Model, Run, Soil, UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 use std::path::Path;
 
@@ -48,19 +48,23 @@ struct BinFile {
     length: f64,
 }
 
-/// `[choices]`: variants of the refined model's open choices (docs/model.md §14).
+/// `[choices]`: variants of the open choices (docs/model.md §14); all but
+/// `face_friction` are the refined model's only, and absent from an
+/// original case.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { band_angles, band_shear, unit_weight }"
+    expecting = "a table { band_angles, band_shear, unit_weight, face_friction }"
 )]
 struct ChoicesFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    band_angles: Option<BandAnglesName>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    band_shear: Option<BandShearName>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    unit_weight: Option<UnitWeightName>,
     #[serde(default)]
-    band_angles: BandAnglesName,
-    #[serde(default)]
-    band_shear: BandShearName,
-    #[serde(default)]
-    unit_weight: UnitWeightName,
+    face_friction: FaceFrictionName,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -93,21 +97,49 @@ enum UnitWeightName {
     PerNodeFormula,
 }
 
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", expecting = "\"mobilised\" or \"sign\"")]
+enum FaceFrictionName {
+    #[default]
+    Mobilised,
+    Sign,
+}
+
 impl ChoicesFile {
-    fn choices(self) -> Choices {
+    /// The original model's choices: `face_friction` only.
+    fn original(&self) -> Result<Choices, InputError> {
+        refined_only(self.band_angles.is_some(), "choices.band_angles")?;
+        refined_only(self.band_shear.is_some(), "choices.band_shear")?;
+        refined_only(self.unit_weight.is_some(), "choices.unit_weight")?;
+        Ok(Choices {
+            face_friction: self.face_friction(),
+            ..Choices::default()
+        })
+    }
+
+    /// The refined model's choices, every default filled in.
+    fn refined(&mut self) -> Choices {
         Choices {
-            band_angles: match self.band_angles {
+            band_angles: match *self.band_angles.get_or_insert_default() {
                 BandAnglesName::MeanOfAngles => BandAngleRule::MeanOfAngles,
                 BandAnglesName::AngleOfMeanShear => BandAngleRule::AngleOfMeanShear,
             },
-            band_shear: match self.band_shear {
+            band_shear: match *self.band_shear.get_or_insert_default() {
                 BandShearName::Full => BandShearRule::Full,
                 BandShearName::ByPosition => BandShearRule::ByPosition,
             },
-            unit_weight: match self.unit_weight {
+            unit_weight: match *self.unit_weight.get_or_insert_default() {
                 UnitWeightName::BandUniform => UnitWeightRule::BandUniform,
                 UnitWeightName::PerNodeFormula => UnitWeightRule::PerNodeFormula,
             },
+            face_friction: self.face_friction(),
+        }
+    }
+
+    fn face_friction(&self) -> FaceFrictionRule {
+        match self.face_friction {
+            FaceFrictionName::Mobilised => FaceFrictionRule::Mobilised,
+            FaceFrictionName::Sign => FaceFrictionRule::Sign,
         }
     }
 }
@@ -359,17 +391,14 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             refined_only(soil.d50.is_some(), "soil.d50")?;
             refined_only(soil.band_width.is_some(), "soil.band_width")?;
             refined_only(soil.band_width_d50.is_some(), "soil.band_width_d50")?;
-            refined_only(file.choices.is_some(), "choices")?;
             (soil.friction.peak, AngleLaw::constant(0.0), 0.0, 0.0)
         }
         Model::Refined => resolve_refined(soil)?,
     };
+    let choices_file = file.choices.get_or_insert_with(ChoicesFile::default);
     let choices = match model {
-        Model::Original => Choices::default(),
-        Model::Refined => file
-            .choices
-            .get_or_insert_with(ChoicesFile::default)
-            .choices(),
+        Model::Original => choices_file.original()?,
+        Model::Refined => choices_file.refined(),
     };
     let soil = Soil {
         unit_weight: soil.unit_weight,
@@ -470,8 +499,25 @@ mod tests {
         assert_eq!(e.key, "choices.band_angles");
         assert_eq!(
             key_error(ORIGINAL, &["choices.band_shear=full"]).key,
-            "choices"
+            "choices.band_shear"
         );
+        assert_eq!(varied.face_friction, FaceFrictionRule::Mobilised);
+        let sign = ["choices.face_friction=sign".parse().unwrap()];
+        for text in [ORIGINAL, REFINED] {
+            let loaded = parse_case(text, &sign).unwrap();
+            assert_eq!(loaded.case.choices.face_friction, FaceFrictionRule::Sign);
+            let again = parse_case(&loaded.resolved_toml(), &[]).unwrap();
+            assert_eq!(again.case, loaded.case);
+        }
+        let original = parse_case(ORIGINAL, &[]).unwrap().resolved_toml();
+        assert!(
+            original.contains("face_friction = \"mobilised\""),
+            "{original}"
+        );
+        assert!(!original.contains("band_shear"), "{original}");
+        let e = key_error(REFINED, &["choices.face_friction=none"]);
+        assert_eq!(e.key, "choices.face_friction");
+        assert!(e.message.contains("`mobilised` or `sign`"), "{}", e.message);
     }
 
     #[test]

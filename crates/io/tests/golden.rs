@@ -3,9 +3,13 @@
 //! grid, the increment it shipped with until issue 11 (2 500 increments, bands
 //! wandering through compacting and dilating soil) is compared with the
 //! golden file `tests/golden/table1-hs.history.csv`: the same emergence node
-//! at every step and forces within 1e-9 relative.
+//! at every step and forces within 1e-9 relative. The same run under the
+//! face friction's former sign rule (`choices.face_friction = "sign"`) is
+//! compared with `tests/golden/table1-hs.sign.history.csv`, the golden file
+//! of the default before issue 20, unchanged since: the old rule stays as
+//! it was.
 //!
-//! Regenerate the golden file only deliberately, after a change that is
+//! Regenerate the golden files only deliberately, after a change that is
 //! meant to change results, with
 //!
 //! ```sh
@@ -16,12 +20,15 @@ use soilcut_io::{read_case, RunOutput};
 use soilcut_model::{Simulation, Summary};
 use std::path::Path;
 
-const GOLDEN: &str = "tests/golden/table1-hs.history.csv";
-
-fn history_csv() -> String {
+fn history_csv(face_friction: &str) -> String {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let d500 = ["run.increment=0.04", "run.node_spacing=0.04"].map(|s| s.parse().unwrap());
-    let loaded = read_case(&root.join("../../cases/paper/table1-hs.toml"), &d500).unwrap();
+    let set = [
+        "run.increment=0.04",
+        "run.node_spacing=0.04",
+        &format!("choices.face_friction={face_friction}"),
+    ]
+    .map(|s| s.parse().unwrap());
+    let loaded = read_case(&root.join("../../cases/paper/table1-hs.toml"), &set).unwrap();
     let mut sim = Simulation::new(&loaded.case).unwrap();
     let history = sim.run_to_end(|_| {}).unwrap();
     let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
@@ -44,10 +51,9 @@ fn rows(text: &str) -> Vec<Vec<f64>> {
         .collect()
 }
 
-#[test]
-fn table1_hs_history_matches_the_golden_file() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(GOLDEN);
-    let now = history_csv();
+fn matches_the_golden_file(face_friction: &str, golden: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(golden);
+    let now = history_csv(face_friction);
     if std::env::var_os("SOILCUT_BLESS").is_some() {
         std::fs::write(&path, &now).unwrap();
     }
@@ -73,4 +79,14 @@ fn table1_hs_history_matches_the_golden_file() {
             );
         }
     }
+}
+
+#[test]
+fn table1_hs_history_matches_the_golden_file() {
+    matches_the_golden_file("mobilised", "tests/golden/table1-hs.history.csv");
+}
+
+#[test]
+fn table1_hs_history_under_the_sign_rule_matches_its_golden_file() {
+    matches_the_golden_file("sign", "tests/golden/table1-hs.sign.history.csv");
 }

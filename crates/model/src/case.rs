@@ -180,6 +180,19 @@ pub enum UnitWeightRule {
     PerNodeFormula,
 }
 
+/// How the face's friction follows the block's slip along the face
+/// (docs/model.md §2.6).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FaceFrictionRule {
+    /// Mobilised continuously with the slip over a small range (regularised
+    /// Coulomb friction, (M41)): the default, docs/model.md §2.6.
+    #[default]
+    Mobilised,
+    /// Full +φw for a block rising along the face, full −φw otherwise,
+    /// also at zero slip (M9): the rule before issue 20, for comparison.
+    Sign,
+}
+
 /// The choices the paper leaves open (docs/model.md §14), for studying
 /// their effect.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -190,6 +203,9 @@ pub struct Choices {
     pub band_shear: BandShearRule,
     /// How the band's unit weight is updated (docs/model.md §5).
     pub unit_weight: UnitWeightRule,
+    /// How the face friction follows the block's slip (docs/model.md §2.6);
+    /// the only choice of both models.
+    pub face_friction: FaceFrictionRule,
 }
 
 /// The soil bin: where the ground ends.

@@ -28,8 +28,8 @@ pub mod trig;
 
 pub use case::default_node_spacing;
 pub use case::{
-    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, Model, Run, Soil,
-    UnitWeightRule, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
+    AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule,
+    Model, Run, Soil, UnitWeightRule, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 pub use landscape::Candidate;
 pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};

@@ -18,6 +18,7 @@
 //! A mechanism is admissible only for β > 0 and β + φ + φw < 90°, i.e. for
 //! t > 0 and a positive denominator.
 
+use crate::case::FaceFrictionRule;
 use crate::trig;
 
 /// Eq. (1) for one friction angle φ and wall friction φw, precomputed.
@@ -97,6 +98,31 @@ impl ForceFactor {
         denominator > 0.0 && weight * (t * self.cos_phi + self.sin_phi) <= bar * denominator
     }
 
+    /// Whether the face friction that makes Eq. (1)'s denominator largest
+    /// at tan β lies strictly between this factor's and `upper`'s (same φ,
+    /// this one's ω the lesser): β + φ + ω = 0, where
+    /// sin(β + φ + ω) / cos β = sin(φ + ω) + t cos(φ + ω) changes sign. Only
+    /// a raked face's interval can hold it (ω ≥ −φw > −φ for a vertical one).
+    #[inline]
+    pub fn peak_between(&self, upper: &ForceFactor, t: f64) -> bool {
+        self.sin_phi_w + t * self.cos_phi_w < 0.0 && upper.sin_phi_w + t * upper.cos_phi_w > 0.0
+    }
+
+    /// Whether W (P/W)(t) ≤ `bar` for some face friction ω between this
+    /// factor's and `upper`'s, as a partially mobilised block may have
+    /// (M41): P/W = N / D(ω), and the largest denominator
+    /// D = cos(β + φ + ω) / cos β over the interval is at one of its ends,
+    /// or 1 / cos β = √(1 + t²) where β + φ + ω = 0 lies inside.
+    #[inline]
+    pub fn can_beat_between(&self, upper: &ForceFactor, weight: f64, t: f64, bar: f64) -> bool {
+        if self.peak_between(upper, t) {
+            let n = weight * (t * self.cos_phi + self.sin_phi);
+            n * n <= bar * bar * (1.0 + t * t)
+        } else {
+            self.can_beat(weight, t, bar) || upper.can_beat(weight, t, bar)
+        }
+    }
+
     /// The infimum of P / W over admissible β (β → 0): sin φ / cos(φ + φw).
     /// P / W grows with β and with φ, so this bounds every candidate: f_min
     /// of the stopping bound (M31) at the least φ.
@@ -105,27 +131,74 @@ impl ForceFactor {
     }
 }
 
-/// How the face moves in one increment, for the sign of its friction.
+/// The slip along the face, per unit of blade travel, at which the face
+/// friction is fully mobilised (M41): Coulomb friction is set-valued at
+/// zero slip, and a least-force search over it takes the extreme (a
+/// block that does not slip gets the full −φw of a sinking one); over this
+/// small range it follows the slip continuously, so that the force is
+/// continuous in β. 5 % of the blade's travel is a slip direction about
+/// 3° from the face's (docs/model.md §2.6).
+pub const SLIP_MOBILISATION: f64 = 0.05;
+
+/// How the face moves in one increment, for the direction of its friction.
 #[derive(Clone, Copy, Debug)]
 pub struct Face {
     /// Rise of the tip per unit of travel: −Δd / v0 (0 at constant depth).
     pub climb: f64,
-    /// tan β below which some band may sink relative to the face.
+    /// tan β at and below which some band may have less than the full
+    /// +φw of a block rising along the face.
     pub sinking_below: f64,
+    /// The rule (`choices.face_friction`).
+    pub rule: FaceFrictionRule,
+    /// sin α of the face.
+    pub rake_sin: f64,
+    /// cot α of the face.
+    pub rake_cot: f64,
 }
 
 impl Face {
-    /// Whether a block on a band at tan β with dilation ψ rises along the
-    /// face: its direction β + ψ climbs faster than the tip,
-    /// tan(β + ψ) > climb (M9), which sets the sign of the face friction.
+    /// The share m ∈ [−1, 1] of the wall friction that a block on a band
+    /// at tan β with dilation ψ mobilises, ω = m φw + (α − 90°) in Eq. (1):
+    /// its sign is (M9), the block rising along the face where its
+    /// direction β + ψ climbs faster than the tip, tan(β + ψ) > κ; under
+    /// `Mobilised` it follows the block's slip along the face per unit of
+    /// travel,
+    /// s = (tan(β + ψ) − κ) / (sin α + tan(β + ψ) cos α),
+    /// as m = clamp(s / s_m, −1, 1) (M41). Exactly ±1 outside the ramp,
+    /// so that Eq. (1) takes the precomputed factors there.
     #[inline]
-    pub fn rises(&self, tan_beta: f64, dilation: f64) -> bool {
-        tan_beta > self.sinking_below || {
-            // Both sides of tan(β + ψ) > climb times
-            // cos ψ − tan β sin ψ, which is positive below β + ψ = 90°.
-            let (sin_psi, cos_psi) = trig::sin_cos(dilation);
-            let run = cos_psi - tan_beta * sin_psi;
-            run <= 0.0 || tan_beta * cos_psi + sin_psi > self.climb * run
+    pub fn mobilisation(&self, tan_beta: f64, dilation: f64) -> f64 {
+        if tan_beta > self.sinking_below {
+            return 1.0;
+        }
+        // tan(β + ψ) = rise / run; run ≤ 0 is β + ψ ≥ 90°, a block that
+        // rises.
+        let (sin_psi, cos_psi) = trig::sin_cos(dilation);
+        let run = cos_psi - tan_beta * sin_psi;
+        if run <= 0.0 {
+            return 1.0;
+        }
+        let rise = tan_beta * cos_psi + sin_psi;
+        match self.rule {
+            // tan(β + ψ) > κ (M9), times run > 0.
+            FaceFrictionRule::Sign => {
+                if rise > self.climb * run {
+                    1.0
+                } else {
+                    -1.0
+                }
+            }
+            FaceFrictionRule::Mobilised => {
+                // (M41) times run / sin α. across ≤ 0 is β + ψ ≤ −α (a
+                // block going down more steeply than the face), which (M9)
+                // takes as sinking (tan(β + ψ) < 0 = κ on a raked face).
+                let across = run + rise * self.rake_cot;
+                if across <= 0.0 {
+                    return -1.0;
+                }
+                let slip = (rise - self.climb * run) / (self.rake_sin * across);
+                (slip / SLIP_MOBILISATION).clamp(-1.0, 1.0)
+            }
         }
     }
 }
@@ -228,6 +301,37 @@ impl Loads {
             force += self.adhesion * (t * cos_a + sin_a) / factor.denominator(t);
         }
         Some(force)
+    }
+
+    /// A lower bound of `force` for every face friction between `lower`'s
+    /// and `upper`'s (same φ): each term of (M8) is its own numerator over
+    /// the same denominator D(ω), so the least is at the largest D, an
+    /// end of the interval or √(1 + t²) (`ForceFactor::can_beat_between`).
+    pub fn least_between(
+        &self,
+        (lower, upper): (&ForceFactor, &ForceFactor),
+        weight: f64,
+        length: f64,
+        t: f64,
+    ) -> Option<f64> {
+        if !lower.peak_between(upper, t) {
+            let ends = [
+                self.force(lower, weight, length, t),
+                self.force(upper, weight, length, t),
+            ];
+            return ends.into_iter().flatten().reduce(f64::min);
+        }
+        let (sin_phi, cos_phi) = lower.friction_sin_cos();
+        let (sin_d, cos_d) = self.rake_offset;
+        let (sin_a, cos_a) = (
+            sin_phi * cos_d + cos_phi * sin_d,
+            cos_phi * cos_d - sin_phi * sin_d,
+        );
+        let numerator = (weight + self.surcharge * (length + self.face_run))
+            * (t * cos_phi + sin_phi)
+            + self.cohesion * length * (1.0 + t * t) * cos_phi
+            + self.adhesion * (t * cos_a + sin_a);
+        Some(numerator / (1.0 + t * t).sqrt())
     }
 }
 

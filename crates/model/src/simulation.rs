@@ -384,14 +384,13 @@ impl Simulation {
         self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
         // Face friction opposes the block's motion along the face. The
-        // reaction is at φw (with its sign) from the face normal, which is
-        // α − 90° from the horizontal: ω = ±φw + α − 90°, and the components
-        // are P* cos ω, P* sin ω (M12).
-        let omega = if face.rises(choice.tan_beta, choice.dilation) {
-            self.laws.walls.0
-        } else {
-            self.laws.walls.1
-        };
+        // reaction is at the mobilised m φw from the face normal, which is
+        // α − 90° from the horizontal: ω = m φw + α − 90° (M41), as in the
+        // chosen mechanism's Eq. (1), and the components are P* cos ω,
+        // P* sin ω (M12).
+        let omega = self
+            .laws
+            .face_angle(face.mobilisation(choice.tan_beta, choice.dilation));
         let (cos_w, sin_w) = (omega.cos(), omega.sin());
         Ok(StepRecord {
             step,

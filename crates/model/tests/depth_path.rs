@@ -2,6 +2,7 @@
 
 mod common;
 
+use soilcut_model::FaceFrictionRule;
 use soilcut_model::Simulation;
 
 /// The original model's soil, the tip going from 10 to 20 over the first
@@ -83,49 +84,63 @@ fn the_force_falls_while_the_blade_rises() {
 }
 
 /// On flat ground, with the blade climbing at tan θ per unit of travel, a
-/// block on a slip line at β rises along the face only if tan β > tan θ;
-/// otherwise the face friction acts upward on it (−φw). The first force is
-/// the least over β of ½ γ d² cot β sin(β + φ) / cos(β + φ ± φw), the sign
-/// set by that rule (−φw at the switch, the least-force choice), and the
-/// soil's force on the blade points down where the block sinks.
+/// block on a slip line at β slips up the face by s = tan β − tan θ per
+/// unit of travel; the face friction acts down on it where it rises and up
+/// where it sinks, mobilised with s over |s| < 0.05 (M41), or under the
+/// sign rule ±φw with −φw at the switch (M9). The first force is the least
+/// over β of ½ γ d² cot β sin(β + φ) / cos(β + φ + m φw), and the soil's
+/// force on the blade points down where the block sinks.
 #[test]
 fn a_climbing_blade_turns_the_face_friction_where_it_outruns_the_block() {
     let (phi, phi_w) = (35f64.to_radians(), 10f64.to_radians());
-    // Least force: rising at β = 21.35° (+φw), at the switch tan β = 0.45,
+    // Sign rule: rising at β = 21.35° (+φw), at the switch tan β = 0.45,
     // and sinking at β = 35.4° (−φw, its own minimum below 45°).
-    for climb in [0.1, 0.45, 1.0] {
-        let mut case = common::original(1.0, 2000.0);
-        case.blade.depth_path = vec![[0.0, 20.0], [10.0, 20.0 - 10.0 * climb]];
-        case.run.travel = 2.0 * case.run.increment;
-        let record = Simulation::new(&case).unwrap().step().unwrap();
-        let force = |beta: f64| {
-            let wall = if beta.tan() > climb { phi_w } else { -phi_w };
-            let denominator = (beta + phi + wall).cos();
-            (denominator > 0.0).then(|| 0.5 * 400.0 / beta.tan() * (beta + phi).sin() / denominator)
-        };
-        let (least, at) = (1..89_000)
-            .map(|k| f64::from(k) * 1e-3_f64.to_radians())
-            .filter_map(|beta| force(beta).map(|p| (p, beta)))
-            .fold((f64::INFINITY, 0.0), |a, b| if b.0 < a.0 { b } else { a });
-        let rel = (record.force - least) / least;
-        assert!(
-            rel.abs() < 1e-3,
-            "climb {climb}: {} vs {least} at β = {}°",
-            record.force,
-            at.to_degrees()
-        );
-        let sinks = record.beta_deg.to_radians().tan() <= climb;
-        assert_eq!(
-            sinks,
-            climb > 0.3,
-            "climb {climb}: β* = {}°",
-            record.beta_deg
-        );
-        assert_eq!(
-            record.force_v < 0.0,
-            sinks,
-            "climb {climb}: force_v {}",
-            record.force_v
-        );
+    for rule in [FaceFrictionRule::Mobilised, FaceFrictionRule::Sign] {
+        for climb in [0.1, 0.45, 1.0] {
+            let mut case = common::original(1.0, 2000.0);
+            case.blade.depth_path = vec![[0.0, 20.0], [10.0, 20.0 - 10.0 * climb]];
+            case.run.travel = 2.0 * case.run.increment;
+            case.choices.face_friction = rule;
+            let record = Simulation::new(&case).unwrap().step().unwrap();
+            let mobilisation = |beta: f64| {
+                let slip = beta.tan() - climb;
+                match rule {
+                    FaceFrictionRule::Mobilised => (slip / 0.05).clamp(-1.0, 1.0),
+                    FaceFrictionRule::Sign if slip > 0.0 => 1.0,
+                    FaceFrictionRule::Sign => -1.0,
+                }
+            };
+            let force = |beta: f64| {
+                let denominator = (beta + phi + mobilisation(beta) * phi_w).cos();
+                (denominator > 0.0)
+                    .then(|| 0.5 * 400.0 / beta.tan() * (beta + phi).sin() / denominator)
+            };
+            let (least, at) = (1..89_000)
+                .map(|k| f64::from(k) * 1e-3_f64.to_radians())
+                .filter_map(|beta| force(beta).map(|p| (p, beta)))
+                .fold((f64::INFINITY, 0.0), |a, b| if b.0 < a.0 { b } else { a });
+            let rel = (record.force - least) / least;
+            assert!(
+                rel.abs() < 1e-3,
+                "{rule:?}, climb {climb}: {} vs {least} at β = {}°",
+                record.force,
+                at.to_degrees()
+            );
+            // Where the sign rule's least force sat on the switch, the
+            // mobilised one is the ramp's lower edge: still sinking.
+            let sinks = mobilisation(at) < 0.0;
+            assert_eq!(
+                sinks,
+                climb > 0.3,
+                "{rule:?}, climb {climb}: β* = {}°",
+                at.to_degrees()
+            );
+            assert_eq!(
+                record.force_v < 0.0,
+                sinks,
+                "{rule:?}, climb {climb}: force_v {}",
+                record.force_v
+            );
+        }
     }
 }

@@ -8,6 +8,7 @@
 
 use super::input::SearchInput;
 use super::line::Line;
+use crate::case::FaceFrictionRule;
 use crate::laws::BandAngles;
 use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
@@ -28,11 +29,13 @@ impl Lower {
         }
     }
 
-    /// Whether W (P/W) ≤ `bar` at tan β for either face friction the block
+    /// Whether W (P/W) ≤ `bar` at tan β for any face friction the block
     /// may have there. Eq. (1) grows with φ (as sin(α ± φw) > 0), but with
-    /// the face friction only where α + β + φ ± φw > 90°: for a vertical
+    /// the face friction only where α + β + φ + ω > 90°: for a vertical
     /// blade the sinking block's −φw is always the lesser, for a raked one
-    /// either may be, so both are tried.
+    /// either may be, so both are tried; a partly mobilised block's ω lies
+    /// anywhere between them (M41), where the raked blade's denominator
+    /// may peak (`ForceFactor::can_beat_between`).
     pub(super) fn can_beat(
         &self,
         weight: f64,
@@ -41,7 +44,39 @@ impl Lower {
         input: &SearchInput,
     ) -> bool {
         self.rising.can_beat(weight, tan_beta, bar)
-            | (tan_beta <= input.face.sinking_below && self.sinking.can_beat(weight, tan_beta, bar))
+            | (tan_beta <= input.face.sinking_below
+                && self.sinking_can_beat(weight, tan_beta, bar, input))
+    }
+
+    /// The same below `sinking_below`, where the block need not rise.
+    #[inline]
+    fn sinking_can_beat(&self, weight: f64, tan_beta: f64, bar: f64, input: &SearchInput) -> bool {
+        match input.face.rule {
+            FaceFrictionRule::Sign => self.sinking.can_beat(weight, tan_beta, bar),
+            FaceFrictionRule::Mobilised => {
+                self.sinking
+                    .can_beat_between(&self.rising, weight, tan_beta, bar)
+            }
+        }
+    }
+
+    /// A lower bound of the force with the loads at tan β for any face
+    /// friction the block may have below `sinking_below` (M8, M41).
+    pub(super) fn least_sinking(
+        &self,
+        input: &SearchInput,
+        weight: f64,
+        length: f64,
+        tan_beta: f64,
+    ) -> Option<f64> {
+        match input.face.rule {
+            FaceFrictionRule::Sign => input.loads.force(&self.sinking, weight, length, tan_beta),
+            FaceFrictionRule::Mobilised => {
+                input
+                    .loads
+                    .least_between((&self.sinking, &self.rising), weight, length, tan_beta)
+            }
+        }
     }
 }
 
@@ -76,19 +111,20 @@ impl LeastFriction {
 /// The bound after the footprint: whether the line, with its band's angles
 /// known, may beat `bar`. Which face friction is the lesser depends on the
 /// rake (see `Lower`). With the band's dilation known, a block that rises
-/// (`Face::rises`, taken only where it decides) has the rising one in
-/// Eq. (1).
+/// fully (`Face::mobilisation`, taken only where it decides) has the rising
+/// one in Eq. (1); one that does not, −φw (M9) or anything up to +φw (M41).
 pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar: f64) -> bool {
     let t = line.slope.tan_beta;
-    let can_beat = |rising| {
-        input
-            .laws
-            .table
-            .below(angles.friction, rising)
-            .can_beat(line.weight, t, bar)
-    };
-    can_beat(true)
+    let table = &input.laws.table;
+    let rising = table.below(angles.friction, true);
+    let sinking = table.below(angles.friction, false);
+    rising.can_beat(line.weight, t, bar)
         || (t <= input.face.sinking_below
-            && can_beat(false)
-            && !input.face.rises(t, angles.dilation))
+            && match input.face.rule {
+                FaceFrictionRule::Sign => sinking.can_beat(line.weight, t, bar),
+                FaceFrictionRule::Mobilised => {
+                    sinking.can_beat_between(rising, line.weight, t, bar)
+                }
+            }
+            && input.face.mobilisation(t, angles.dilation) < 1.0)
 }

@@ -147,7 +147,7 @@ impl FarField {
         let could_sink = t2 <= input.face.sinking_below;
         !best.prune
             || below(bound(&fresh_walls.rising))
-            || (could_sink && below(bound(&fresh_walls.sinking)))
+            || (could_sink && below(fresh_walls.least_sinking(input, self.weight(n1), length, t2)))
     }
 }
 
