@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """What the mobilised face friction changes (issue 20, docs/model.md §2.6).
 
-Runs the five paper cases and the three DEM validation cases under both
+Runs the five paper cases and the three former DEM validation cases
+(docs/studies/face-friction/cases/, the cases before issue 20's DEM
+campaign, in which the defect was found) under both
 face friction rules, `choices.face_friction = "sign"` (the rule before
 issue 20) and `"mobilised"` (the default since, (M41)), and writes
 docs/studies/face-friction/README.md and results.csv: the first force, the
@@ -37,9 +39,9 @@ CASES = [
     "cases/paper/table1-hs.toml",
     "cases/paper/table1-s.toml",
     "cases/paper/fig8b.toml",
-    "cases/validation/vertical.toml",
-    "cases/validation/deep.toml",
-    "cases/validation/raked30.toml",
+    "docs/studies/face-friction/cases/vertical-former.toml",
+    "docs/studies/face-friction/cases/deep-former.toml",
+    "docs/studies/face-friction/cases/raked30-former.toml",
 ]
 RULES = ("sign", "mobilised")
 MEMBERS = 7

@@ -1,13 +1,14 @@
 """Plane-strain biaxial test on the bed's grains (periodic cell, one layer).
 
-Run: yade -n -j1 -x biaxial.py      (about 5 minutes on one core)
+Run: yade -n -j1 -x biaxial.py SIGMA [--seed S]   (SIGMA: the confining stress in Pa)
 
 The grains are compacted isotropically to SIGMA0 with the bed's raining
 friction (about the bed's density), given their working
 friction, then compressed in y at a constant strain rate while sigma_x stays
-SIGMA0 and z does not strain. Writes results/biaxial.csv (strains and
-stresses, compression positive) and results/biaxial.json (the run's
-figures); parameters.py turns the curve into soilcut's parameters.
+SIGMA0 and z does not strain. Writes results/element/biaxial_SIGMA.csv (strains
+and stresses, compression positive, every 0.2 % of axial strain, raw) and
+results/element/biaxial_SIGMA.json (the run's figures); parameters.py turns the
+curves into soilcut's parameters.
 """
 
 import json
@@ -21,12 +22,13 @@ import grains as g  # noqa: E402
 import yade  # noqa: E402
 from yade import O, pack, utils  # noqa: E402
 
-HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
-SIGMA0 = 300.0  # confining stress (Pa): the mean stress at about depth d in the bed
-SIDE = 0.060  # cell side (m) of the loose cloud
+SIGMA0 = 300.0  # confining stress (Pa), set from the command line
+SIDE = 0.098  # cell side (m) of the loose cloud (NUM grains)
 DEPTH_Z = 2.6 * 2 * g.RADIUS * (1 + g.FUZZ)  # cell thickness (m): the periodic collider needs > 2.1 largest bounding boxes
-RATE = 0.2  # axial strain rate (1/s): inertial number ~ 1e-3
-STRAIN = 0.30  # final axial strain
+COMPACT_STRESS = 300.0  # isotropic stress (Pa) of the compaction, the same for every test
+RATE_300 = 0.2  # axial strain rate (1/s) at 300 Pa: inertial number ~ 1e-3; scaled as sqrt(SIGMA0) to keep it
+NUM = 1200  # grains: the noise of phi at the critical state falls as 1 / sqrt(NUM)
+STRAIN = 0.50  # final axial strain: long enough for a steady critical state
 # Contact friction while compacting: the bed's raining friction, which gives
 # about the bed's density (solid fraction of disks 0.81 here, 0.82 in bed.json;
 # frictionless compaction gives 0.84).
@@ -42,16 +44,18 @@ START = time.time()
 
 
 def main():
+    global SIGMA0
+    SIGMA0 = float(g.configure(sys.argv[1:])[-1])
     O.periodic = True
     O.cell.setBox(SIDE, SIDE, DEPTH_Z)
     g.materials(O, yade.CohFrictMat)
     sp = pack.SpherePack()
     sp.makeCloud((0, 0, DEPTH_Z / 2), (SIDE, SIDE, DEPTH_Z / 2), rMean=g.RADIUS, rRelFuzz=g.FUZZ,
-                 num=450, periodic=True, seed=g.SEED)
+                 num=NUM, periodic=True, seed=g.SEED)
     for c, r in sp:
         O.bodies.append(utils.sphere(c, r, material=O.materials['grain']))
     g.flatten(O)
-    servo = Servo(yade_stress(SIGMA0))
+    servo = Servo(yade_stress(COMPACT_STRESS))
     globals()['servo'] = servo
     O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command='servo.act()')],
                           gravity=False)
@@ -60,19 +64,28 @@ def main():
     servo.compact(COMPACT_FRICTION)
     g.set_friction(O, g.FRICTION)
     servo.compact(g.FRICTION)
+    # Unloaded isotropically to SIGMA0: the packing of every test is the
+    # one compacted at COMPACT_STRESS (the bed's density at every stress).
+    servo.retarget(yade_stress(SIGMA0))
+    servo.compact(g.FRICTION)
     dense = solid_fraction()
     rows = servo.shear()
-    g.write_csv(os.path.join(HERE, 'results', 'biaxial.csv'),
+    g.write_csv(g.path('results', 'element', 'biaxial_%g.csv' % SIGMA0),
                 ['eps_axial', 'eps_lateral', 'eps_vol', 'sigma_axial_Pa', 'sigma_lateral_Pa',
                  'mobilised_friction_deg'], rows)
     summary = dict({'wall_time_s': time.time() - START, 'yade_version': yade.config.version,
                     'seed': g.SEED, 'sigma0_Pa': SIGMA0, 'grains': len(sp),
                     'solid_fraction_before_shear': dense,
-                    'solid_fraction_after_shear': solid_fraction(), 'strain_rate_per_s': RATE})
+                    'solid_fraction_after_shear': solid_fraction(), 'strain_rate_per_s': rate()})
     # The friction and dilation angles: parameters.py.
-    with open(os.path.join(HERE, 'results', 'biaxial.json'), 'w') as f:
+    with open(g.path('results', 'element', 'biaxial_%g.json' % SIGMA0), 'w') as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary))
+
+
+def rate():
+    """The axial strain rate (1/s) that keeps the inertial number at about 1e-3."""
+    return RATE_300 * math.sqrt(SIGMA0 / 300.0)
 
 
 def solid_fraction():
@@ -91,6 +104,9 @@ class Servo:
         self.target = target  # compressive, Yade's (volume) units
         self.axial_rate = None  # None: y servoed too; else the imposed compression rate
 
+    def retarget(self, target):
+        self.target = target
+
     def rate(self, measured):
         r = self.GAIN * (measured - self.target) / self.target
         return max(-self.MAX_RATE, min(self.MAX_RATE, r))
@@ -105,23 +121,24 @@ class Servo:
     def compact(self, friction):
         """Both in-plane stresses at SIGMA0 until the packing is at rest."""
         self.axial_rate = None
-        for _ in range(40):
+        for _ in range(80):
             O.run(1000, True)
             st = utils.getStress()
             err = max(abs(-st[0, 0] - self.target), abs(-st[1, 1] - self.target)) / self.target
             if utils.unbalancedForce() < 0.02 and err < 0.03:
                 return
-        print('compaction at friction %g: unbalanced %.3g, stress error %.3g'
-              % (friction, utils.unbalancedForce(), err), flush=True)
+        print('compaction at friction %g to %.0f Pa: unbalanced %.3g, stress error %.3g'
+              % (friction, self.target * g.THICKNESS / DEPTH_Z, utils.unbalancedForce(), err),
+              flush=True)
 
     def shear(self):
         """Axial compression in y at RATE, sigma_x held; rows every 0.2 % of strain."""
         h0 = O.cell.hSize
         lx0, ly0 = h0[0, 0], h0[1, 1]
-        self.axial_rate = RATE
+        self.axial_rate = rate()
         scale = DEPTH_Z / g.THICKNESS
         rows = []
-        step = max(1, int(0.002 / RATE / O.dt))
+        step = max(1, int(0.002 / rate() / O.dt))
         while True:
             O.run(step, True)
             h = O.cell.hSize

@@ -1,14 +1,25 @@
-"""A blade cut through the rained bed (bed.py first): forces and ground surface.
+"""A blade cut through a rained bed (bed.py first): forces, ground and grain field.
 
-Run: yade -n -j1 -x cut.py NAME       NAME: vertical | raked30 | deep
-(about 20 to 30 minutes each on one core; the log prints the wall time)
+Run: yade -n -j1 -x cut.py NAME [--seed S] [--ratio R] [--slab N] [--speed V] [--travel T]
+NAME: vertical | raked30 | deep (table CUTS); options: grains.py.
 
 The blade's tip starts at x = 0, depth d below the levelled surface, and moves
-in +x at constant depth and speed SPEED to the travel. The face leans back at
-the rake angle alpha (90: vertical). Writes results/cut_NAME_forces.csv (the
-mean force on the blade over every 0.02 d of travel, per unit width) and
-results/cut_NAME_surface.csv (the ground surface every 0.5 d), lengths in mm
-with x from the tip's start and y from the levelled surface.
+in +x at constant depth and speed to the travel. The face leans back at the
+rake angle alpha (90: vertical). Writes, with RUN = NAME_TAG[_vV] (TAG the
+bed's, V the speed in mm/s when not the default):
+
+- results/cuts/RUN_forces.csv: per 0.02 d of travel, the mean force on the
+  blade's soil-side face only (contacts whose normal is within 45 degrees of
+  the face's; the blade's bottom and back excluded), horizontal (draft,
+  positive against the motion) and vertical (upward on the blade), N per m
+  of width, their resultant over gamma d^2; the same for every contact of
+  the blade (`_all`); and the end wall's horizontal force (N/m).
+- results/cuts/RUN_surface.csv: the ground every 0.25 d (highest grain top
+  in every D-wide column, x from the tip's start and y from the levelled
+  surface, mm).
+- fields/RUN.npz (not committed; 1-5 MB): every grain's in-plane position
+  every 0.25 d, read by mechanism.py.
+- results/cuts/RUN.json: the run's figures and its wall time.
 """
 
 import json
@@ -19,65 +30,104 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 import grains as g  # noqa: E402
+import numpy as np  # noqa: E402
 import yade  # noqa: E402
 from yade import O, utils  # noqa: E402
 
-CUTS = {  # depth d (m), rake alpha (degrees), travel (m)
-    'vertical': (0.020, 90.0, 0.100),
-    'raked30': (0.020, 30.0, 0.100),
-    'deep': (0.025, 90.0, 0.075),
+CUTS = {  # depth d (m), rake alpha (degrees), travel (in d; --travel overrides)
+    'vertical': (0.020, 90.0, 2.0),
+    'raked30': (0.020, 30.0, 2.0),
+    'deep': (0.025, 90.0, 2.0),
 }
-SPEED = 0.04  # blade speed (m/s): inertial number ~ 1e-2 in the bands, v^2/(g d) < 0.01
 HALF_THICKNESS = 0.5e-3  # blade half-thickness (m)
 RECORD = 0.02  # force record interval (in d)
-SURFACE = 0.5  # surface record interval (in d)
-HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
+FIELD = 0.25  # surface and field record interval (in d)
+FACE_COS = math.cos(math.radians(45.0))  # a contact is on the face within 45 degrees of its normal
 
 
 class Recorder:
-    def __init__(self, name, depth, blade, x_end, gamma, level):
-        self.name, self.depth, self.blade, self.x_end = name, depth, blade, x_end
-        self.gamma, self.level = gamma, level
-        self.sum = [0.0, 0.0]
+    def __init__(self, run, depth, blade, normal, bed):
+        self.run, self.depth, self.blade, self.normal = run, depth, blade, normal
+        self.gamma, self.level = bed['unit_weight_N_per_m3'], bed['surface_level_m']
+        self.x_end, self.wall = bed['x_end_m'], bed['end_wall_id']
+        self.sum = [0.0] * 5
         self.count = 0
         self.next_force = RECORD
-        self.next_surface = 0.0
-        self.forces = []
-        self.surfaces = []
+        self.next_field = 0.0
+        self.forces, self.surfaces, self.fields, self.field_u = [], [], [], []
+        self.ids = [b.id for b in O.bodies if b.dynamic]
         self.start = time.time()
         self.u0 = blade.state.pos[0]
+        self.checked = 0
 
     def travel(self):
         return self.blade.state.pos[0] - self.u0
 
+    def face_force(self):
+        """Force of the grains on the blade's soil-side face (x, y)."""
+        fx = fy = 0.0
+        bid = self.blade.id
+        for i in O.interactions.withBody(bid):
+            if not i.isReal:
+                continue
+            f = i.phys.normalForce + i.phys.shearForce  # on id2; -f on id1
+            n = i.geom.normal  # from id1 to id2
+            sign = 1.0 if i.id2 == bid else -1.0
+            # the direction from the blade to the grain
+            out = (-sign * n[0], -sign * n[1])
+            if out[0] * self.normal[0] + out[1] * self.normal[1] >= FACE_COS:
+                fx += sign * f[0]
+                fy += sign * f[1]
+        return fx, fy
+
     def sample(self):
-        f = O.forces.f(self.blade.id)
-        self.sum[0] += -f[0] / g.THICKNESS
-        self.sum[1] += f[1] / g.THICKNESS
+        total = O.forces.f(self.blade.id)
+        fx, fy = self.face_force()
+        if self.checked < 3 and abs(total[0]) > 0:
+            allx = sum((1.0 if i.id2 == self.blade.id else -1.0) * (i.phys.normalForce + i.phys.shearForce)[0]
+                       for i in O.interactions.withBody(self.blade.id) if i.isReal)
+            print('check: contact sum %.6g, O.forces %.6g' % (allx, total[0]), flush=True)
+            self.checked += 1
+        wall = O.forces.f(self.wall)[0]
+        for k, v in enumerate((-fx, fy, -total[0], total[1], wall)):
+            self.sum[k] += v / g.THICKNESS
         self.count += 1
         s = self.travel() / self.depth
-        if s >= self.next_surface - 1e-9:
-            self.record_surface(s)
-            self.next_surface += SURFACE
+        if s >= self.next_field - 1e-9:
+            self.record_field(s)
+            self.next_field += FIELD
         if s >= self.next_force - 1e-9:
-            h, v = self.sum[0] / self.count, self.sum[1] / self.count
+            h, v, ha, va, w = (x / self.count for x in self.sum)
             norm = self.gamma * self.depth ** 2
-            self.forces.append((self.travel() * 1e3, s, h, v, math.hypot(h, v) / norm, h / norm, v / norm))
-            self.sum = [0.0, 0.0]
+            self.forces.append((self.travel() * 1e3, s, h, v, math.hypot(h, v) / norm, h / norm,
+                                v / norm, ha, va, w))
+            self.sum = [0.0] * 5
             self.count = 0
             self.next_force += RECORD
 
-    def record_surface(self, s):
+    def record_field(self, s):
         for x, y in g.surface(O, -0.040, self.x_end, 2 * g.RADIUS):
             self.surfaces.append((s, x * 1e3, (y - self.level) * 1e3))
+        pos = np.full((len(self.ids), 2), np.nan)
+        for k, bid in enumerate(self.ids):
+            b = O.bodies[bid]
+            if b is not None:
+                pos[k] = (b.state.pos[0], b.state.pos[1])
+        self.fields.append(pos)
+        self.field_u.append(self.travel())
         print('u/d = %.2f  iter %d  wall %.0f s' % (s, O.iter, time.time() - self.start), flush=True)
 
     def write(self):
-        g.write_csv(os.path.join(HERE, 'results', 'cut_%s_forces.csv' % self.name),
+        base = g.path('results', 'cuts', self.run)
+        g.write_csv(base + '_forces.csv',
                     ['u_mm', 'u_over_d', 'force_h_N_per_m', 'force_v_N_per_m', 'force_norm',
-                     'force_h_norm', 'force_v_norm'], self.forces)
-        g.write_csv(os.path.join(HERE, 'results', 'cut_%s_surface.csv' % self.name),
-                    ['u_over_d', 'x_mm', 'y_mm'], self.surfaces)
+                     'force_h_norm', 'force_v_norm', 'force_h_all_N_per_m', 'force_v_all_N_per_m',
+                     'end_wall_N_per_m'], self.forces)
+        g.write_csv(base + '_surface.csv', ['u_over_d', 'x_mm', 'y_mm'], self.surfaces)
+        radii = np.array([O.bodies[i].shape.radius if O.bodies[i] is not None else np.nan
+                          for i in self.ids])
+        np.savez_compressed(g.path('fields', self.run + '.npz'), u=np.array(self.field_u),
+                            pos=np.array(self.fields), radius=radii)
 
 
 def blade_body(tip, alpha, length, material):
@@ -88,16 +138,18 @@ def blade_body(tip, alpha, length, material):
     centre = (tip[0] + along[0] * length / 2 - normal[0] * HALF_THICKNESS,
               tip[1] + along[1] * length / 2 - normal[1] * HALF_THICKNESS, 0.0)
     turn = yade.Quaternion((0, 0, 1), math.pi / 2 - a)
-    return utils.box(centre, (HALF_THICKNESS, length / 2, 5 * g.RADIUS), orientation=turn,
-                     fixed=True, material=material), normal
+    return utils.box(centre, (HALF_THICKNESS, length / 2, g.half_z() - 2 * g.RADIUS),
+                     orientation=turn, fixed=True, material=material), normal
 
 
 def main():
-    name = sys.argv[-1]
+    name = g.configure(sys.argv[1:])[-1]
     depth, alpha, travel = CUTS[name]
-    with open(os.path.join(HERE, 'results', 'bed.json')) as f:
+    travel = (g.TRAVEL or travel) * depth
+    run = '%s_%s%s' % (name, g.tag(), '' if g.SPEED == 0.04 else '_v%g' % (g.SPEED * 1e3))
+    with open(g.path('results', 'beds', 'bed_%s.json' % g.tag())) as f:
         bed = json.load(f)
-    O.load(os.path.join(HERE, 'bed.yade.gz'))
+    O.load(g.path('beds', 'bed_%s.yade.gz' % g.tag()))
     level = bed['surface_level_m']
     tip = (0.0, level - depth)
     length = 3.5 * depth / math.sin(math.radians(alpha))
@@ -111,22 +163,26 @@ def main():
             O.bodies.erase(b.id)
     blade_id = O.bodies.append(body)
     blade = O.bodies[blade_id]
-    blade.state.vel = yade.Vector3(SPEED, 0, 0)
-    rec = Recorder(name, depth, blade, bed['x_end_m'], bed['unit_weight_N_per_m3'], level)
+    blade.state.vel = yade.Vector3(g.SPEED, 0, 0)
+    rec = Recorder(run, depth, blade, normal, bed)
     O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command='rec.sample()')])
     O.dt = 0.5 * utils.PWaveTimeStep()
     globals()['rec'] = rec
-    steps = int(travel / SPEED / O.dt) + 20
+    steps = int(travel / g.SPEED / O.dt) + 20
     O.run(steps, True)
     rec.write()
-    meta = {'yade_version': bed['yade_version'], 'seed': bed['seed'], 'name': name,
+    meta = {'yade_version': bed['yade_version'], 'seed': g.SEED, 'name': name, 'run': run,
+            'ratio_d_over_D': g.RATIO, 'slab_layers': g.SLAB, 'thickness_m': g.THICKNESS,
+            'mean_diameter_m': 2 * g.RADIUS, 'grains': bed['grains'],
             'depth_mm': depth * 1e3, 'rake_deg': alpha, 'travel_mm': travel * 1e3,
-            'speed_m_per_s': SPEED, 'dt_s': O.dt, 'steps': steps,
+            'speed_m_per_s': g.SPEED, 'dt_s': O.dt, 'steps': steps,
             'unit_weight_N_per_m3': bed['unit_weight_N_per_m3'],
+            'solid_fraction': bed['solid_fraction'],
+            'floor_below_tip_mm': (level - depth) * 1e3,
             'end_wall_mm': bed['x_end_m'] * 1e3, 'wall_time_s': time.time() - rec.start}
-    with open(os.path.join(HERE, 'results', 'cut_%s.json' % name), 'w') as f:
+    with open(g.path('results', 'cuts', run + '.json'), 'w') as f:
         json.dump(meta, f, indent=1)
-    print(json.dumps(meta))
+    print(json.dumps(meta), flush=True)
 
 
 main()

@@ -1,19 +1,43 @@
 """The grains, contact law and bin shared by every DEM script (Yade, SI units).
 
-A quasi-2D bed: one layer of spheres in the plane z = 0 whose out-of-plane
-translation and in-plane-axis rotations are blocked (blockedDOFs 'zXY'),
-which is what two frictionless side walls one grain apart impose. Forces per
-unit width and the in-plane unit weight use the same slab thickness
-(`THICKNESS`), so P / (gamma d^2) does not depend on it.
+Every script takes the same options after its name (`configure`):
+
+    --seed S      the random seed of the bed (default 14)
+    --ratio R     d / D: the blade depth d = 20 mm over the mean grain
+                  diameter D (default 10, D = 2 mm)
+    --slab N      0 (default): one layer of spheres in the plane z = 0 whose
+                  out-of-plane translation and in-plane-axis rotations are
+                  blocked (what two frictionless side walls one grain apart
+                  impose: a Schneebeli-type 2D analogue); N >= 3: a slab N
+                  lattice layers thick (N x 1.3 D) between two frictionless
+                  side walls, the grains free in 3D
+    --speed V     blade speed in m/s (cut.py only, default 0.04)
+    --travel T    the blade's travel in d (cut.py only; default: the cut's)
+    --short       the short, shallow bin (bed.py makes it, cut.py cuts it):
+                  end wall at 140 mm, bed 60 mm deep (7 d and 2 d from the
+                  tip of a 20 mm cut), for the costly beds (d/D = 15, the
+                  slab) and 1 d of travel
+
+Forces per unit width and the in-plane unit weight use the same slab
+thickness (`THICKNESS`), so P / (gamma d^2) does not depend on it.
 """
 
 import math
+import os
+import sys
 
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
+DEPTH_REF = 0.020  # the blade depth d the grain size is set from (m)
 SEED = 14
-RADIUS = 1.0e-3  # mean grain radius (m); mean diameter D = 2 mm
+RATIO = 10.0  # d / D
+SLAB = 0  # 0: monolayer; else lattice layers between frictionless side walls
+SPEED = 0.04  # blade speed (m/s)
+TRAVEL = None  # travel in d (None: the cut's own)
+SHORT = False  # the short bin (bed.py)
+RADIUS = 1.0e-3  # mean grain radius (m), set by configure from RATIO
 FUZZ = 0.25  # radii uniform in RADIUS * (1 -/+ FUZZ)
 DENSITY = 2650.0  # grain density (kg/m^3)
-YOUNG = 5.0e5  # contact modulus (Pa): kn ~ YOUNG * r; overlaps ~ 4e-3 D at 1 kPa
+YOUNG = 5.0e5  # contact modulus (Pa): kn ~ YOUNG * r, so kn / (p D) does not depend on D
 POISSON = 0.3  # ks / kn
 FRICTION = 30.0  # grain-grain contact friction (degrees)
 ETA_ROLL = 0.3  # rolling resistance: rolling moment <= ETA_ROLL * r * Fn
@@ -21,7 +45,51 @@ DEPOSIT_FRICTION = 5.0  # contact friction while raining the bed (denser packing
 BLADE_FRICTION = 20.0  # blade-grain contact friction (degrees), set
 DAMPING = 0.2  # Cundall's non-viscous damping
 GRAVITY = 9.81
+PITCH = 2.6  # lattice pitch of the rained cloud in mean radii (no overlaps at FUZZ)
 THICKNESS = 2.0 * RADIUS  # slab thickness that turns forces into forces per unit width
+
+
+def configure(argv):
+    """Reads the options of the module docstring from argv; returns the positional words."""
+    global SEED, RATIO, SLAB, SPEED, TRAVEL, SHORT, RADIUS, THICKNESS
+    words, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ('--seed', '--ratio', '--slab', '--speed', '--travel'):
+            v = argv[i + 1]
+            if a == '--seed':
+                SEED = int(v)
+            elif a == '--ratio':
+                RATIO = float(v)
+            elif a == '--slab':
+                SLAB = int(v)
+            elif a == '--travel':
+                TRAVEL = float(v)
+            else:
+                SPEED = float(v)
+            i += 2
+        elif a == '--short':
+            SHORT = True
+            i += 1
+        else:
+            words.append(a)
+            i += 1
+    if SLAB not in (0,) and SLAB < 3:
+        raise SystemExit('--slab must be 0 (monolayer) or >= 3 layers')
+    RADIUS = DEPTH_REF / RATIO / 2
+    THICKNESS = 2.0 * RADIUS if SLAB == 0 else SLAB * PITCH * RADIUS
+    return words
+
+
+def tag():
+    """The name of a bed: r<ratio>_s<seed>[_slab<N>][_short]."""
+    return 'r%g_s%d%s%s' % (RATIO, SEED, '_slab%d' % SLAB if SLAB else '', '_short' if SHORT else '')
+
+
+def path(*parts):
+    p = os.path.join(HERE, *parts)
+    os.makedirs(os.path.dirname(p), exist_ok=True)
+    return p
 
 
 def materials(O, CohFrictMat):
@@ -38,11 +106,30 @@ def materials(O, CohFrictMat):
     return grain, blade, wall
 
 
+def half_z():
+    """Half the out-of-plane extent of the bin's boxes (m): past the slab."""
+    return 5 * RADIUS if SLAB == 0 else THICKNESS / 2 + 3 * RADIUS
+
+
+def side_walls(O, utils, x0, x1, height, wall):
+    """The slab's two frictionless side walls (nothing for a monolayer)."""
+    if SLAB == 0:
+        return []
+    out = []
+    for side in (-1, 1):
+        z = side * (THICKNESS / 2 + RADIUS)
+        out.append(O.bodies.append(utils.box(((x0 + x1) / 2, height / 2, z),
+                                             ((x1 - x0) / 2 + 4 * RADIUS, height / 2, RADIUS),
+                                             fixed=True, material=wall)))
+    return out
+
+
 def flatten(O):
-    """Constrain every dynamic sphere to the plane z = 0."""
+    """Constrain every dynamic sphere to the plane z = 0 (monolayer only)."""
     for b in O.bodies:
         if b.dynamic:
-            b.state.blockedDOFs = 'zXY'
+            if SLAB == 0:
+                b.state.blockedDOFs = 'zXY'
             b.state.vel = b.state.vel * 0
 
 
@@ -60,19 +147,21 @@ def set_friction(O, degrees):
 
 
 def area_weight(O, x0, x1, y0, y1):
-    """In-plane weight per unit area (N/m^3 once divided by THICKNESS) of the grains whose
-    centres lie in the window; returns (gamma, solid fraction of disks)."""
+    """In-plane unit weight (N/m^3 of the slab) of the grains whose centres lie
+    in the window; returns (gamma, solid fraction of disks or spheres)."""
     mass = 0.0
-    disk = 0.0
+    solid = 0.0
     for b in O.bodies:
         if not b.dynamic:
             continue
         p = b.state.pos
         if x0 <= p[0] < x1 and y0 <= p[1] < y1:
             mass += b.state.mass
-            disk += math.pi * b.shape.radius ** 2
+            r = b.shape.radius
+            solid += math.pi * r ** 2 if SLAB == 0 else 4.0 / 3.0 * math.pi * r ** 3
     area = (x1 - x0) * (y1 - y0)
-    return mass * GRAVITY / area / THICKNESS, disk / area
+    volume = area if SLAB == 0 else area * THICKNESS
+    return mass * GRAVITY / area / THICKNESS, solid / volume
 
 
 def surface(O, x0, x1, width):
@@ -92,7 +181,7 @@ def surface(O, x0, x1, width):
     return [(x0 + (k + 0.5) * width, h) for k, h in enumerate(top) if h is not None]
 
 
-def engines(O, yade, extra, gravity=True, periodic=False):
+def engines(O, yade, extra, gravity=True):
     """The engine list: collider, sphere/box contacts with rolling resistance, integrator."""
     g = (0.0, -GRAVITY, 0.0) if gravity else (0.0, 0.0, 0.0)
     bounds = [yade.Bo1_Sphere_Aabb(), yade.Bo1_Box_Aabb()]
@@ -120,18 +209,32 @@ def fmt(v):
 
 
 def rain_cloud(x0, x1, y0, rows, seed):
-    """Grain centres and radii on a jittered lattice (spacing 2.6 mean radii, no overlaps):
-    the loose cloud that is rained. Radii uniform in RADIUS (1 -/+ FUZZ)."""
+    """Grain centres and radii on a jittered lattice (PITCH mean radii, no overlaps):
+    the loose cloud that is rained; SLAB layers of it across a slab. Radii
+    uniform in RADIUS (1 -/+ FUZZ)."""
     import random
 
     rng = random.Random(seed)
-    pitch = 2.6 * RADIUS * (1 + FUZZ) / 1.25
+    pitch = PITCH * RADIUS
     cols = int((x1 - x0) / pitch)
     slack = pitch - 2 * RADIUS * (1 + FUZZ)
+    layers = [0.0] if SLAB == 0 else [(k + 0.5) * pitch - THICKNESS / 2 for k in range(SLAB)]
     out = []
     for j in range(rows):
-        for i in range(cols):
-            r = RADIUS * (1 + FUZZ * (2 * rng.random() - 1))
-            jx = (rng.random() - 0.5) * max(slack, 0.0)
-            out.append(((x0 + (i + 0.5) * pitch + jx, y0 + (j + 0.5) * pitch, 0.0), r))
+        for z in layers:
+            for i in range(cols):
+                r = RADIUS * (1 + FUZZ * (2 * rng.random() - 1))
+                jx = (rng.random() - 0.5) * max(slack, 0.0)
+                out.append(((x0 + (i + 0.5) * pitch + jx, y0 + (j + 0.5) * pitch, z), r))
     return out
+
+
+def settle(O, utils, limit, chunk=2000, cap=200000):
+    """Run until the unbalanced force ratio is below `limit` (or `cap` steps)."""
+    done = 0
+    while done < cap:
+        O.run(chunk, True)
+        done += chunk
+        if utils.unbalancedForce() < limit:
+            return done
+    return done

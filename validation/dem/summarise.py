@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""Every DEM cut's numbers, with their spread over seeds (stdlib only).
+
+Usage: python3 validation/dem/summarise.py
+
+Reads results/cuts/*.json, *_forces.csv and results/mechanism/*.csv (run
+mechanism.py first) and writes results/summary.json: for every
+configuration (cut, d/D, slab, speed) the seeds run and, over them, the
+mean, sample standard deviation and count of
+
+- `window_k`: the mean of force_norm (the face's resultant over gamma d^2,
+  blade-bottom contacts excluded) over u in [k, k+1) d, and of its
+  horizontal and vertical parts (`window_h_k`, `window_v_k`);
+- `early`: the mean force_norm over u in [0.05, 0.25] d, the DEM's first
+  mobilisation, beside Coulomb's wedge (the first increment of soilcut);
+- `wall_share_k`: the end wall's horizontal force over window k less its
+  mean over the first 0.1 d, as a share of the blade's mean draft over the
+  window (both N/m): how much of the blade's push the far wall takes;
+- the mechanism's columns at every 0.25 d (mechanism.py) and their means
+  over u >= 0.5 d (`mean_*`);
+- `wall_time_s` of each run.
+It also writes results/cut_NAME_mean.csv for the d/D = 10 monolayer cuts at
+the default speed: the seeds' mean force per record (u in mm, force per unit
+width in units of gamma0 mm^2 with gamma0 = 1: what `soilcut fit` and
+`soilcut compare --measured` read). It prints the tables docs/validation.md
+quotes.
+"""
+import csv
+import json
+import math
+import statistics
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent / "results"
+MECH = ("beta_deg", "emergence_mm", "band_thickness_mm", "pile_height_mm", "pile_ahead_mm",
+        "pile_slope_deg", "block_ratio")
+
+
+def spread(values):
+    v = [x for x in values if x is not None and math.isfinite(x)]
+    if not v:
+        return None
+    return {"mean": statistics.fmean(v), "sd": statistics.stdev(v) if len(v) > 1 else 0.0,
+            "n": len(v)}
+
+
+def run_numbers(meta):
+    rows = rows_of(meta)
+    out = {}
+    last = int(math.floor(rows[-1]["u_over_d"] + 1e-6))
+    for k in range(last):
+        sel = [r for r in rows if k <= r["u_over_d"] < k + 1]
+        if len(sel) >= 25:
+            out[f"window_{k}"] = statistics.fmean(r["force_norm"] for r in sel)
+            out[f"window_h_{k}"] = statistics.fmean(r["force_h_norm"] for r in sel)
+            out[f"window_v_{k}"] = statistics.fmean(r["force_v_norm"] for r in sel)
+    early = [r["force_norm"] for r in rows if 0.05 <= r["u_over_d"] <= 0.25]
+    out["early"] = statistics.fmean(early)
+    start = statistics.fmean(r["end_wall_N_per_m"] for r in rows if r["u_over_d"] <= 0.1)
+    for k in range(last):
+        sel = [r for r in rows if k <= r["u_over_d"] < k + 1]
+        if len(sel) >= 25:
+            wall = statistics.fmean(r["end_wall_N_per_m"] for r in sel) - start
+            out[f"wall_share_{k}"] = wall / statistics.fmean(r["force_h_N_per_m"] for r in sel)
+    mech = HERE / "mechanism" / (meta["run"] + ".csv")
+    if mech.exists():
+        m = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(mech.open())]
+        for row in m:
+            for key in MECH:
+                out[f"{key}@{row['u_over_d']:.2f}"] = row[key]
+        for key in MECH:
+            vals = [r[key] for r in m if r["u_over_d"] >= 0.5 - 1e-9 and math.isfinite(r[key])]
+            out[f"mean_{key}"] = statistics.fmean(vals) if vals else None
+    out["wall_time_s"] = meta["wall_time_s"]
+    return out
+
+
+def write_mean(name, metas):
+    """The seeds' mean force curve, record by record (the records are 0.02 d apart in all)."""
+    curves = [rows_of(m) for m in metas]
+    n = min(len(c) for c in curves)
+    d = metas[0]["depth_mm"]
+    with open(HERE / f"cut_{name}_mean.csv", "w") as f:
+        f.write("u,force\n")
+        for i in range(n):
+            u = statistics.fmean(c[i]["u_mm"] for c in curves)
+            force = statistics.fmean(c[i]["force_norm"] for c in curves) * d * d
+            f.write(f"{u:.6g},{force:.6g}\n")
+
+
+def rows_of(meta):
+    return [{k: float(v) for k, v in r.items()} for r in
+            csv.DictReader((HERE / "cuts" / (meta["run"] + "_forces.csv")).open())]
+
+
+def main():
+    configs = {}
+    for path in sorted((HERE / "cuts").glob("*.json")):
+        meta = json.loads(path.read_text())
+        key = "%s_r%g%s%s%s" % (meta["name"], meta["ratio_d_over_D"],
+                                "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
+                                "_short" if "_short" in meta["run"] else "",
+                                "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3))
+        configs.setdefault(key, []).append((meta, run_numbers(meta)))
+    for key, runs in configs.items():
+        if key.endswith("_r10"):
+            write_mean(key[: -len("_r10")], [m for m, _ in runs])
+    summary = {}
+    for key, runs in sorted(configs.items()):
+        numbers = sorted({k for _, n in runs for k in n})
+        entry = {"seeds": [m["seed"] for m, _ in runs], "grains": [m["grains"] for m, _ in runs],
+                 "speed_m_per_s": runs[0][0]["speed_m_per_s"], "depth_mm": runs[0][0]["depth_mm"],
+                 "rake_deg": runs[0][0]["rake_deg"]}
+        for k in numbers:
+            entry[k] = spread([n.get(k) for _, n in runs])
+        summary[key] = entry
+    (HERE / "summary.json").write_text(json.dumps(summary, indent=1, sort_keys=True) + "\n")
+    fmt = lambda s: "–" if s is None else (f"{s['mean']:.2f} ± {s['sd']:.2f}" if s["n"] > 1 else f"{s['mean']:.2f}")
+    print("| configuration | seeds | early | [0,1) d | [1,2) d | [2,3) d | h [0,1) | v [0,1) | h [1,2) | v [1,2) | wall share [0,1) | [1,2) | wall time (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for key, e in summary.items():
+        print(f"| {key} | {len(e['seeds'])} | {fmt(e.get('early'))} | {fmt(e.get('window_0'))} | "
+              f"{fmt(e.get('window_1'))} | {fmt(e.get('window_2'))} | {fmt(e.get('window_h_0'))} | "
+              f"{fmt(e.get('window_v_0'))} | {fmt(e.get('window_h_1'))} | {fmt(e.get('window_v_1'))} | "
+              f"{fmt(e.get('wall_share_0'))} | {fmt(e.get('wall_share_1'))} | "
+              f"{fmt(e.get('wall_time_s'))} |")
+    print()
+    print("| configuration | β (°) | emergence ahead of tip (mm) | band thickness (mm) | pile height (mm) | pile slope (°) | block speed ratio |")
+    print("|---|---|---|---|---|---|---|")
+    for key, e in summary.items():
+        print(f"| {key} | " + " | ".join(fmt(e.get(f"mean_{m}")) for m in MECH[:4] + MECH[5:]) + " |")
+
+
+if __name__ == "__main__":
+    main()
