@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# soilcut beside the DEM cuts: runs cases/validation/*.toml to u = 1 ... 5 d
-# (each travel its own run, so that profile.csv is the ground at that u),
-# overlays the force curves on the DEM's (soilcut compare) and prints the
-# figures docs/validation.md quotes (validation/compare.py). From the
-# repository root:   bash validation/run.sh      (about a minute)
+# soilcut beside the DEM cuts: for every cut of cases/validation/ an ensemble
+# of 7 perturbed runs (docs/model.md §12.1) with the element-test keys, the
+# same with the face friction rule before issue 20 (choices.face_friction =
+# "sign"), and one with the friction angles fitted to the vertical DEM cut;
+# prints the figures docs/validation.md quotes (validation/compare.py) and
+# draws the force curves beside the DEM's seed mean. From the repository
+# root:   bash validation/run.sh      (a few minutes)
 # The DEM results it reads are committed in validation/dem/results/; to
 # rerun the DEM itself see validation/dem/README.md.
 set -euo pipefail
@@ -12,33 +14,33 @@ cargo build --release -q -p soilcut
 soilcut=${CARGO_TARGET_DIR:-target}/release/soilcut
 out=out/validation
 mkdir -p "$out"
-lastrun() {
-  local case=cases/validation/$1.toml d travel
-  d=$(grep -E '^depth' "$case" | sed 's/[^0-9.]*\([0-9.]*\).*/\1/')
-  travel=$(grep -E '^travel' "$case" | sed 's/[^0-9.]*\([0-9.]*\).*/\1/')
-  python3 -c "print(round($travel / $d))"
-}
+ensemble() { "$soilcut" run "$@" --ensemble 7 --quiet --no-plots --force >/dev/null; }
+peak() { python3 -c "import tomllib; print(tomllib.load(open('cases/validation/$1.toml', 'rb'))['soil']['friction']['peak'])"; }
 for name in vertical raked30 deep; do
-  case=cases/validation/$name.toml
-  d=$(grep -E '^depth' "$case" | sed 's/[^0-9.]*\([0-9.]*\).*/\1/')
-  for k in $(seq 1 "$(lastrun "$name")"); do
-    "$soilcut" run "$case" --quiet --no-plots --force --out "$out/$name-u$k" \
-      --set "run.travel=$(python3 -c "print($k * $d)")" >/dev/null
-  done
+  # Coulomb's wedge at the case's initial and peak friction angles.
+  "$soilcut" analytic "cases/validation/$name.toml" > "$out/$name-analytic.txt"
+  "$soilcut" analytic "cases/validation/$name.toml" --set "soil.friction.initial=$(peak "$name")" \
+    > "$out/$name-analytic-peak.txt"
+  ensemble "cases/validation/$name.toml" --out "$out/$name" --set 'title="element-test keys"'
+  ensemble "cases/validation/$name.toml" --out "$out/$name-sign" --set choices.face_friction=sign \
+    --set 'title="element-test keys, former face friction rule (sign)"'
 done
 # Calibrate on the vertical cut (friction angles only), predict the others.
-"$soilcut" fit cases/validation/vertical.toml --set run.travel=100.1 \
-  --measured validation/dem/results/cut_vertical_measured.csv \
+"$soilcut" fit cases/validation/vertical.toml \
+  --measured validation/dem/results/cut_vertical_mean.csv \
   --free soil.friction.initial,soil.friction.peak,soil.friction.residual \
-  --starts 2 --iterations 60 --quiet --force --out "$out/fit-vertical" >/dev/null
+  --objective means:5 --evaluations 160 --polish 20 --profile-points 0 --jobs 2 \
+  --quiet --force --out "$out/fit-vertical" >/dev/null
 friction=$(python3 -c "import tomllib; f = tomllib.load(open('$out/fit-vertical/best.toml', 'rb'))['soil']['friction']; print('{ initial = %r, peak = %r, residual = %r }' % (f['initial'], f['peak'], f['residual']))")
+echo "fitted on the vertical cut: soil.friction = $friction"
 for name in vertical raked30 deep; do
-  "$soilcut" run "cases/validation/$name.toml" --quiet --no-plots --force --out "$out/$name-fitted" \
-    --set "soil.friction=$friction" --set 'title="friction angles fitted to the vertical DEM cut"' >/dev/null
+  ensemble "cases/validation/$name.toml" --out "$out/$name-fitted" \
+    --set "soil.friction=$friction" --set 'title="friction angles fitted to the vertical DEM cut"'
 done
 python3 validation/compare.py "$out"
 for name in vertical raked30 deep; do
-  [ -f "validation/dem/results/cut_${name}_measured.csv" ] || continue
-  "$soilcut" compare "$out/$name-u$(lastrun "$name")" "$out/$name-fitted" --measured "validation/dem/results/cut_${name}_measured.csv" \
-    --out "docs/img/validation_force_$name.png"
+  [ -f "validation/dem/results/cut_${name}_mean.csv" ] || continue
+  "$soilcut" compare "$out/$name/k+0" "$out/$name-sign/k+0" "$out/$name-fitted/k+0" \
+    --measured "validation/dem/results/cut_${name}_mean.csv" \
+    --out "docs/img/validation_force_$name.png" >/dev/null
 done

@@ -35,7 +35,8 @@ compression positive, gamma = eps_1 - eps_3, eps_v = eps_1 + eps_3):
   at gamma_0 d / 2 (the mean vertical stress along a band from the tip to
   the surface) between the two tests that bracket it;
 - band: dB the mean of the DEM band thickness (mechanism.py) over every
-  interval of the d/D = 10 monolayer cuts at the default speed, u >= 0.5 d,
+  interval of the vertical d/D = 10 monolayer cuts in the full bin at the
+  default speed (the calibration cut), u >= 0.5 d,
   but at most 0.9 d (soilcut's band is thinner than the cut is deep);
   u_p = gamma_p dB, u_r = gamma_r dB;
 - repose: the heap test (results/repose.json); the DEM pile's own front
@@ -127,10 +128,10 @@ def interpolate(tests, sigma, key):
 
 
 def band_width():
-    """Mean DEM band thickness (mm) over the d/D = 10 monolayer cuts at the default speed."""
+    """Mean DEM band thickness (mm) over the vertical d/D = 10 monolayer cuts at the default speed."""
     values = []
-    for path in sorted((HERE / "mechanism").glob("*_r10_s*.csv")):
-        if "_slab" in path.name or "_v" in path.stem.split("_s")[-1]:
+    for path in sorted((HERE / "mechanism").glob("vertical_r10_s*.csv")):
+        if "_slab" in path.name or "_short" in path.name or "_v" in path.stem.split("_s")[-1]:
             continue
         for row in csv.DictReader(path.open()):
             t = float(row["band_thickness_mm"])
@@ -148,12 +149,13 @@ def main():
     bed = json.loads((HERE / "beds" / "bed_r10_s14.json").read_text())
     repose = json.loads((HERE / "repose.json").read_text())["repose_deg"]
     band, n = band_width()
-    print("| σ3 (Pa) | E (kPa) | ν | εv/ε1 first | φc | ψc | φp | ψp | γp | φr | ψr | γr | drift of φr |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| σ3 (Pa) | solid fraction | E (kPa) | ν | εv/ε1 first | φc | ψc | φp | ψp | γp | φr (noise) | ψr | γr | drift of φr |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s, t in sorted(tests.items()):
-        print(f"| {s:g} | {t['young_Pa'] / 1e3:.0f} | {t['poisson']:.2f} | {t['eps_v_first_over_eps_1']:.2f} | "
+        solid = json.loads((HERE / "element" / f"biaxial_{s:g}.json").read_text())["solid_fraction_before_shear"]
+        print(f"| {s:g} | {solid:.3f} | {t['young_Pa'] / 1e3:.0f} | {t['poisson']:.2f} | {t['eps_v_first_over_eps_1']:.2f} | "
               f"{t['phi_c']:.1f} | {t['psi_c']:.1f} | {t['phi_p']:.1f} | {t['psi_p']:.1f} | {t['gamma_p']:.3f} | "
-              f"{t['phi_r']:.1f} | {t['psi_r']:.1f} | {t['gamma_r']:.3f} | {t['drift_deg']:+.2f} |")
+              f"{t['phi_r']:.1f} (± {t['noise_deg']:.1f}) | {t['psi_r']:.1f} | {t['gamma_r']:.3f} | {t['drift_deg']:+.1f} |")
     keys = {}
     for name, (depth, _) in CUTS.items():
         sigma = bed["unit_weight_N_per_m3"] * depth * 1e-3 / 2
@@ -184,7 +186,7 @@ def main():
 
 
 def write_case(name, k, bed):
-    """cases/validation/NAME.toml from the rule's keys: nothing else is set."""
+    """cases/validation/<name>.toml from the rule's keys: nothing else is set."""
     depth, rake = CUTS[name]
     wall = f"\n[bin]\nlength = {X_END:g}  # the DEM bin's end wall ahead of the tip's start\n" if rake == 90.0 else ""
     text = f"""# The DEM soil-bin cut {name} of validation/dem/ (docs/validation.md), with
