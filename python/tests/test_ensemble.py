@@ -41,7 +41,8 @@ def test_spread_of_the_members_window_means():
             means.append(f[np.floor(u / d) == w].mean())
         assert ens.windows["mean"][w] == pytest.approx(np.mean(means), rel=1e-12)
         assert ens.windows["std"][w] == pytest.approx(np.std(means, ddof=1), rel=1e-9, abs=1e-15)
-        assert ens.windows["min"][w] == min(means)
+        # NumPy sums a window in another order than Rust: equal to round-off.
+        assert ens.windows["min"][w] == pytest.approx(min(means), rel=1e-12)
     d50 = [m.case.to_dict()["soil"]["d50"] for m in ens.members]
     assert d50 == pytest.approx([0.6 * (1 + 0.001 * k) for k in (-2, -1, 0, 1)], rel=1e-15)
     assert ens.summary["perturbation"]["key"] == "soil.d50"
