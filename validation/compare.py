@@ -172,6 +172,7 @@ def main(out):
     print("| cut | rule | soilcut first | DEM early | soilcut [0,1) | DEM [0,1) | ratio | soilcut [1,2) | DEM [1,2) | ratio |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     components, mechanism, first = [], [], []
+    default = {}  # each cut's members under the element-test keys, for the speed table
     for name, (depth, rake) in CUTS.items():
         d = summary.get(f"{name}_r10")
         if d is None:
@@ -182,6 +183,7 @@ def main(out):
                 continue
             s = soilcut_numbers(folder, depth, rake)
             if rule == "":
+                default[name] = s
                 svg(name, depth, *surfaces(name, folder, depth))
             get = lambda key: spread([n.get(key) for n in s])
             cells = [fmt(*get("first")), fmt(*dem(d, "early"))]
@@ -233,8 +235,8 @@ def main(out):
     print("\n".join(mechanism))
     speeds = [(f"{summary[key]['speed_m_per_s'] * 1e3:g} mm/s", summary[key]) for key in
               ("vertical_r10", "vertical_r10_v20", "vertical_r10_v10") if key in summary]
-    if speeds and (out / "vertical").exists():
-        s = soilcut_numbers(out / "vertical", *CUTS["vertical"])
+    if speeds and "vertical" in default:
+        s = default["vertical"]
         print()
         print("The vertical cut's mean force over [0, 0.5) d against the DEM blade's speed (DEM: seeds as in the")
         print("tables above; the slower blades cut the bed of seed 14), and soilcut's (element-test keys):")

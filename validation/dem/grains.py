@@ -74,7 +74,7 @@ def configure(argv):
         else:
             words.append(a)
             i += 1
-    if SLAB not in (0,) and SLAB < 3:
+    if 0 < SLAB < 3:
         raise SystemExit('--slab must be 0 (monolayer) or >= 3 layers')
     RADIUS = DEPTH_REF / RATIO / 2
     THICKNESS = 2.0 * RADIUS if SLAB == 0 else SLAB * PITCH * RADIUS

@@ -57,10 +57,10 @@ def pile(ground, tip_x, face_x):
     return top, xt - tip_x, slope
 
 
-def interval(meta, p0, p1, du, tip_x, ground, radius):
+def interval(meta, p0, p1, du, tip_x, ground):
     d = meta['depth_mm'] * 1e-3
     D = meta['mean_diameter_m']
-    level = meta['surface_level_m'] if 'surface_level_m' in meta else None
+    level = meta['surface_level_m']
     cot = 1.0 / math.tan(math.radians(meta['rake_deg']))
     tip_y = level - d
     ok = ~np.isnan(p0[:, 0]) & ~np.isnan(p1[:, 0])
@@ -129,7 +129,7 @@ def analyse(run):
     bed = json.loads((HERE / 'results' / 'beds' / ('bed_%s.json' % tag)).read_text())
     meta['surface_level_m'] = bed['surface_level_m']
     f = np.load(HERE / 'fields' / (run + '.npz'))
-    u, pos, radius = f['u'], f['pos'], f['radius']
+    u, pos = f['u'], f['pos']
     grounds = {}
     with open(HERE / 'results' / 'cuts' / (run + '_surface.csv')) as fh:
         for row in csv.DictReader(fh):
@@ -140,7 +140,7 @@ def analyse(run):
     for k in range(1, len(u)):
         s = round(u[k] / d / 0.25) * 0.25
         ground = grounds.get(round(s, 2)) or grounds[min(grounds, key=lambda v: abs(v - s))]
-        row = interval(meta, pos[k - 1], pos[k], u[k] - u[k - 1], u[k], ground, radius)
+        row = interval(meta, pos[k - 1], pos[k], u[k] - u[k - 1], u[k], ground)
         out.append((u[k] / d,) + row)
     path = HERE / 'results' / 'mechanism' / (run + '.csv')
     path.parent.mkdir(parents=True, exist_ok=True)
