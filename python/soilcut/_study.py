@@ -209,7 +209,10 @@ def analytic(case: Case) -> dict[str, dict[str, Any] | None]:
     ``force`` (per unit width, γ·length²), ``force_norm`` (P/(γ0 d²)),
     ``force_h``, ``force_v`` (positive upward), ``failure_angle_deg`` and,
     for the FEE, ``factors`` (``n_gamma``, ``n_c``, ``n_a``, ``n_q``); None
-    where no wedge is admissible."""
+    where no wedge is admissible. With ``blade.width`` also ``mckyes_ali``
+    (McKyes & Ali's blade of finite width: ``force`` per blade,
+    ``force_norm`` P/(γ0 d² w), its ``factors`` Nγ3 … Nq3, ``rupture``, the
+    rupture distance (length), and ``crescent_angle_deg``)."""
     return _soilcut.analytic(text_of(case))
 
 

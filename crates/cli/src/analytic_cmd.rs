@@ -7,7 +7,8 @@ use soilcut_model::Case;
 pub const EXAMPLES: &str = "\
 Examples:
   soilcut analytic cases/paper/fig5.toml
-  soilcut analytic cases/tools/inclined.toml --set soil.cohesion=5";
+  soilcut analytic cases/tools/inclined.toml --set soil.cohesion=5
+  soilcut analytic cases/tools/tine.toml";
 
 /// The table `soilcut analytic` prints.
 pub fn report(case: &Case) -> String {
@@ -55,8 +56,62 @@ pub fn report(case: &Case) -> String {
             f.n_gamma, f.n_c, f.n_a, f.n_q
         ));
     }
+    if let Some(w) = case.blade.width {
+        out.push_str(&narrow_report(&wedge, w, norm));
+    }
     out.push_str(
         "\nvertical: the soil's force on the blade, positive upward; Rankine ignores φw, α and a.\n",
     );
+    out
+}
+
+/// McKyes & Ali's blade of width w (M46), per blade, beside plane strain
+/// times w.
+fn narrow_report(wedge: &Wedge, w: f64, norm: f64) -> String {
+    let Some(n) = wedge.mckyes_ali(w) else {
+        return format!("\nMcKyes-Ali (w = {w}): no admissible wedge\n");
+    };
+    let b = n.baseline;
+    let mut out = format!(
+        "\nBlade of width w = {w} (w/d = {:.4}), forces per blade:\n\
+         {:<32} {:>12} {:>12} {:>12} {:>12} {:>10}\n\
+         {:<32} {:>12.6} {:>12.6} {:>12.6} {:>12.6} {:>10.3}\n",
+        w / wedge.depth,
+        "method",
+        "P",
+        "P/(γ0 d² w)",
+        "horizontal",
+        "vertical",
+        "β* (°)",
+        "McKyes-Ali (centre + crescents)",
+        b.force,
+        b.force / (norm * w),
+        b.force_h,
+        b.force_v,
+        b.failure_angle.to_degrees()
+    );
+    if let Some(plane) = wedge.fee() {
+        out.push_str(&format!(
+            "{:<32} {:>12.6} {:>12.6}\n",
+            "FEE × w (plane strain)",
+            plane.force * w,
+            plane.force / norm
+        ));
+    }
+    out.push_str(&format!(
+        "rupture distance r = {:.6} ({:.4} d), crescent half-angle ρ = {:.3}°\n",
+        n.rupture,
+        n.rupture / wedge.depth,
+        n.crescent_angle.to_degrees()
+    ));
+    if let Some(f) = b.factors {
+        out.push_str(&format!(
+            "factors at β*: Nγ3 = {:.6}, Nc3 = {:.6}, Na3 = {:.6}, Nq3 = {:.6}\n",
+            f.n_gamma, f.n_c, f.n_a, f.n_q
+        ));
+    }
+    if w < wedge.depth * soilcut_model::crescent::NARROWEST {
+        out.push_str("w/d < 1/6: below the critical depth the soil fails sideways, which this wedge does not describe (docs/model.md §16.4)\n");
+    }
     out
 }

@@ -292,7 +292,10 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
 
 /// A case that runs but whose grid is known to cost accuracy.
 fn warn_accuracy(case: &Case, quiet: bool) {
-    if let Some(warning) = case.accuracy_warning().filter(|_| !quiet) {
+    if quiet {
+        return;
+    }
+    for warning in case.accuracy_warnings() {
         eprintln!("warning: {warning}");
     }
 }

@@ -147,7 +147,7 @@ impl ChoicesFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { depth, wall_friction, rake, adhesion, depth_path }"
+    expecting = "a table { depth, wall_friction, rake, adhesion, depth_path, width }"
 )]
 struct BladeFile {
     depth: f64,
@@ -158,6 +158,8 @@ struct BladeFile {
     adhesion: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     depth_path: Option<Vec<[f64; 2]>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    width: Option<f64>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -430,6 +432,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             rake,
             adhesion,
             depth_path: file.blade.depth_path.clone().unwrap_or_default(),
+            width: file.blade.width,
         },
         soil,
         run: Run {

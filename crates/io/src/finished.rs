@@ -246,6 +246,7 @@ mod tests {
             y,
             accumulated_shear: 0.0,
             unit_weight: 1.0,
+            ridge_height: 0.0,
         };
         let surface: Vec<ProfilePoint> = (0..5000)
             .map(|i| point(i as f64 * 0.01, if i < 100 { 0.5 } else { 0.0 }))

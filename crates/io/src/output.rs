@@ -16,10 +16,10 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Columns of `history.csv`, in order.
-pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth";
+pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth,mass_spilled";
 
 /// Columns of `profile.csv`, in order.
-pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight";
+pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight,ridge_height";
 
 /// Everything a finished run writes.
 pub struct RunOutput<'a> {
@@ -71,6 +71,7 @@ impl RunOutput<'_> {
                 &r.dilation_deg,
                 &r.dilation_area,
                 &r.depth,
+                &r.mass_spilled,
             ]);
         }
         out.finish()
@@ -80,7 +81,13 @@ impl RunOutput<'_> {
     pub fn profile_csv(&self) -> String {
         let mut out = CsvText::new(PROFILE_HEADER);
         for p in self.profile {
-            out.row(&[&p.x, &p.y, &p.accumulated_shear, &p.unit_weight]);
+            out.row(&[
+                &p.x,
+                &p.y,
+                &p.accumulated_shear,
+                &p.unit_weight,
+                &p.ridge_height,
+            ]);
         }
         out.finish()
     }
@@ -178,6 +185,18 @@ struct BaselinesJson {
     rankine: BaselineJson,
     coulomb: Option<BaselineJson>,
     fee: Option<BaselineJson>,
+    /// McKyes & Ali for a blade of finite width (per blade).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mckyes_ali: Option<NarrowJson>,
+}
+
+/// McKyes & Ali's least force per blade (M46), normalised by γ0 d² w.
+#[derive(Serialize)]
+struct NarrowJson {
+    #[serde(flatten)]
+    baseline: BaselineJson,
+    rupture: f64,
+    crescent_angle_deg: f64,
 }
 
 #[derive(Serialize)]
@@ -203,7 +222,7 @@ impl BaselinesJson {
     fn of(case: &soilcut_model::Case) -> Self {
         let wedge = Wedge::of_case(case);
         let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
-        let json = |b: Baseline| BaselineJson {
+        let normalised = |b: Baseline, norm: f64| BaselineJson {
             force: b.force,
             force_norm: b.force / norm,
             force_h: b.force_h,
@@ -216,10 +235,20 @@ impl BaselinesJson {
                 n_q: f.n_q,
             }),
         };
+        let json = |b: Baseline| normalised(b, norm);
+        let narrow = case.blade.width.and_then(|w| {
+            let n = wedge.mckyes_ali(w)?;
+            Some(NarrowJson {
+                baseline: normalised(n.baseline, norm * w),
+                rupture: n.rupture,
+                crescent_angle_deg: n.crescent_angle.to_degrees(),
+            })
+        });
         BaselinesJson {
             rankine: json(wedge.rankine()),
             coulomb: wedge.coulomb().map(json),
             fee: wedge.fee().map(json),
+            mckyes_ali: narrow,
         }
     }
 }

@@ -35,6 +35,9 @@
 //! P sin(α + φw) and the vertical component of the soil's force on the blade
 //! (positive upward) is −P cos(α + φw).
 
+mod mckyes_ali;
+pub use mckyes_ali::Narrow;
+
 /// A wedge problem on flat ground; angles in radians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wedge {
@@ -136,10 +139,16 @@ impl Wedge {
         }
     }
 
-    /// The trial wedge of least force (FEE, (M37)), by a scan of β refined
-    /// by golden sections around the best point.
+    /// The trial wedge of least force (FEE, (M37)).
     pub fn fee(&self) -> Option<Baseline> {
-        let force = |beta: f64| self.factors(beta).map(|f| self.force_with(&f));
+        let beta = self.least_over_beta(|beta| self.factors(beta).map(|f| self.force_with(&f)))?;
+        let factors = self.factors(beta)?;
+        Some(self.baseline(self.force_with(&factors), beta, Some(factors)))
+    }
+
+    /// The failure angle of least `force` over admissible β: a scan of
+    /// 4000 angles refined by golden sections around the best.
+    fn least_over_beta(&self, force: impl Fn(f64) -> Option<f64>) -> Option<f64> {
         let upper = PI - self.rake - self.friction - self.wall_friction;
         let n = 4000;
         let best = (1..n)
@@ -147,13 +156,11 @@ impl Wedge {
             .filter_map(|b| force(b).map(|f| (b, f)))
             .min_by(|a, b| a.1.total_cmp(&b.1))?;
         let step = upper / n as f64;
-        let beta = golden_minimum(
+        Some(golden_minimum(
             |b| force(b).unwrap_or(f64::INFINITY),
             best.0 - step,
             best.0 + step,
-        );
-        let factors = self.factors(beta)?;
-        Some(self.baseline(self.force_with(&factors), beta, Some(factors)))
+        ))
     }
 
     /// Coulomb's passive wedge: the trial wedge without cohesion, adhesion

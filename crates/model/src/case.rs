@@ -75,6 +75,10 @@ pub struct Blade {
     /// rise. Empty: always `depth`, which is also the reference depth of
     /// normalised forces.
     pub depth_path: Vec<[f64; 2]>,
+    /// w: the blade's width (a length). `None`: plane strain, forces per
+    /// unit width; with a width, forces are per blade and the mechanism has
+    /// side crescents (docs/model.md §16).
+    pub width: Option<f64>,
 }
 
 /// The soil: unit weight, material laws (docs/model.md §4), band width,
@@ -314,21 +318,37 @@ fn open_range(key: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<(),
 }
 
 impl Case {
-    /// Why the results may be less accurate than the grid suggests: nodes
-    /// coarser than the increment where the soil softens converge to a
-    /// limit of their own (docs/model.md §9). `None` when nothing is known
-    /// against the case's resolution.
-    pub fn accuracy_warning(&self) -> Option<String> {
+    /// Why the results may be less accurate than they look, one sentence
+    /// each (empty when nothing is known against the case):
+    /// * nodes coarser than the increment where the soil softens converge
+    ///   to a limit of their own (docs/model.md §9);
+    /// * a blade narrower than a sixth of its depth fails the soil
+    ///   sideways below a critical depth, which the side crescents do not
+    ///   describe (docs/model.md §16.4).
+    pub fn accuracy_warnings(&self) -> Vec<String> {
         let (h, v0) = (self.run.node_spacing, self.run.increment);
-        (self.soil.softens() && h > v0).then(|| {
-            format!(
+        let mut warnings = Vec::new();
+        if self.soil.softens() && h > v0 {
+            warnings.push(format!(
                 "run.node_spacing = {h} is coarser than run.increment = {v0} in soil that \
                  softens: such a grid converges to a limit of its own, 7-18 times the \
                  ensemble rule's tolerance off the reference grid in the unit-window mean \
                  forces of Table 1 S, HS and Fig. 5 (docs/model.md §9, §12.1); leave \
                  run.node_spacing out for the reference grid"
-            )
-        })
+            ));
+        }
+        if let Some(w) = self.blade.width {
+            let d = self.deepest();
+            if w < d * crate::crescent::NARROWEST {
+                warnings.push(format!(
+                    "blade.width = {w} is narrower than 1/6 of the deepest tip depth {d}: \
+                     below a critical depth of about 6 widths a narrow tine fails the soil \
+                     sideways (Godwin & Spoor 1977), which the side crescents do not \
+                     describe, so the force is underestimated there (docs/model.md §16.4)"
+                ));
+            }
+        }
+        warnings
     }
 
     /// Number of increments: the run ends at the first increment at or beyond
@@ -388,6 +408,9 @@ impl Case {
         self.validate_rake(rake)?;
         non_negative("blade.adhesion", self.blade.adhesion)?;
         self.validate_depth_path()?;
+        if let Some(width) = self.blade.width {
+            positive("blade.width", width)?;
+        }
         // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
         // search's bounds rely on that.
         let phi_min = self.soil.friction.min();

@@ -8,6 +8,7 @@
 use crate::avalanche::Avalanche;
 use crate::band::Band;
 use crate::case::{Case, CaseError};
+use crate::crescent::Crescents;
 use crate::grid::Scheme;
 use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
@@ -15,6 +16,7 @@ use crate::laws::Laws;
 use crate::mechanism::{Face, Loads};
 use crate::rake::Rake;
 use crate::search::{Choice, Search, SearchInput};
+use crate::spill::SideHeaps;
 use crate::surface::Surface;
 use std::fmt;
 
@@ -23,7 +25,8 @@ const GROW_DEPTHS: f64 = 4.0;
 /// No mechanism reaches further than this many depths ahead of the blade.
 const MAX_REACH_DEPTHS: f64 = 1000.0;
 
-/// What one increment produced. Forces are per unit width.
+/// What one increment produced. Forces and masses are per unit width, or
+/// per blade for a blade of finite width (`blade.width`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepRecord {
     /// Increment number, from 1.
@@ -32,7 +35,8 @@ pub struct StepRecord {
     pub u: f64,
     /// P*: resultant blade force.
     pub force: f64,
-    /// P* / (γ0 d²), d the reference depth `blade.depth`.
+    /// P* / (γ0 d²), d the reference depth `blade.depth` (P* / (γ0 d² w)
+    /// for a blade of width w).
     pub force_norm: f64,
     /// Horizontal (draft) component P* cos φw.
     pub force_h: f64,
@@ -54,8 +58,12 @@ pub struct StepRecord {
     pub slip: f64,
     /// Area added by the band's dilation in this increment (Δuv A0 / dB).
     pub dilation_area: f64,
-    /// Weight of soil after the increment (ground that existed at the start).
+    /// Weight of soil ahead of the blade after the increment (ground that
+    /// existed at the start).
     pub mass: f64,
+    /// Weight of soil that has spilled around the blade's edges into the
+    /// side heaps (0 in plane strain): `mass + mass_spilled` is conserved.
+    pub mass_spilled: f64,
 }
 
 /// Why an increment could not be computed.
@@ -107,6 +115,9 @@ pub struct ProfilePoint {
     pub accumulated_shear: f64,
     /// γ of the node's soil column.
     pub unit_weight: f64,
+    /// Crest height of the side heaps beside the blade's path (0 in plane
+    /// strain), above the original ground.
+    pub ridge_height: f64,
 }
 
 /// A running simulation of one case.
@@ -122,6 +133,10 @@ pub struct Simulation {
     search: Search,
     kinematics: Kinematics,
     avalanche: Avalanche,
+    /// Soil spilled around the edges of a blade of finite width.
+    side: SideHeaps,
+    /// w for a blade of finite width, else 1: forces and masses per blade.
+    per_blade: f64,
     /// Increments done.
     done: usize,
     initial_mass: f64,
@@ -156,6 +171,8 @@ impl Simulation {
             search: Search::default(),
             kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
+            side: SideHeaps::default(),
+            per_blade: case.blade.width.unwrap_or(1.0),
             done: 0,
             initial_mass,
             case: case.clone(),
@@ -188,14 +205,21 @@ impl Simulation {
         &self.surface
     }
 
-    /// Current weight of soil (ground that existed at the start).
+    /// Current weight of soil ahead of the blade (ground that existed at
+    /// the start), per blade for a blade of finite width.
     pub fn mass(&self) -> f64 {
-        self.surface.mass(self.surface.face.node)
+        self.surface.mass(self.surface.face.node) * self.per_blade
     }
 
-    /// Weight of soil at the start (docs/model.md (M24)).
+    /// Weight of soil spilled into the side heaps so far (M45), per blade.
+    pub fn mass_spilled(&self) -> f64 {
+        self.side.spilled * self.per_blade
+    }
+
+    /// Weight of soil at the start (docs/model.md (M24)), per blade for a
+    /// blade of finite width.
     pub fn initial_mass(&self) -> f64 {
-        self.initial_mass
+        self.initial_mass * self.per_blade
     }
 
     /// Candidate evaluations so far (for benchmarks).
@@ -213,6 +237,7 @@ impl Simulation {
                 y: s.height[i],
                 accumulated_shear: s.accumulated_shear[i],
                 unit_weight: s.unit_weight[i],
+                ridge_height: self.side.height.get(i).copied().unwrap_or(0.0),
             })
             .collect()
     }
@@ -241,7 +266,8 @@ impl Simulation {
         }
     }
 
-    /// P / (γ0 d²), d the reference depth `blade.depth`.
+    /// P / (γ0 d²), d the reference depth `blade.depth`, for P per unit
+    /// width.
     fn normalised(&self, force: f64) -> f64 {
         let c = &self.case;
         force / (c.soil.unit_weight * c.blade.depth * c.blade.depth)
@@ -262,6 +288,17 @@ impl Simulation {
     fn find_mechanism(&mut self, face: Face) -> Option<Choice> {
         let d = self.tip_depth();
         let dx = self.surface.scheme.spacing;
+        let c = &self.case;
+        let crescents = c.blade.width.map(|width| Crescents {
+            width,
+            unit_weight: c.soil.unit_weight,
+            tan_repose: c.soil.repose.to_radians().tan(),
+            face_x: self.surface.x(self.surface.face.node),
+            spacing: dx,
+            ridges: self.side.any_from(self.surface.face.node),
+            ridge_height: &self.side.height,
+            ridge_unit_weight: &self.side.unit_weight,
+        });
         let input = SearchInput {
             laws: &self.laws,
             blade: self.surface.face.node,
@@ -271,6 +308,7 @@ impl Simulation {
             rake: self.rake,
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
+            crescents,
         };
         let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.
@@ -315,7 +353,7 @@ impl Simulation {
                     x_emergence: self.rake.x(self.surface.x(choice.node), y, depth),
                     y_emergence: y,
                     beta_deg: choice.tan_beta.atan().to_degrees(),
-                    force: choice.force,
+                    force: choice.force * self.per_blade,
                     force_norm: self.normalised(choice.force),
                     friction_deg: choice.friction.to_degrees(),
                     dilation_deg: choice.dilation.to_degrees(),
@@ -383,6 +421,11 @@ impl Simulation {
         );
         self.surface.disturb(moved.end);
         self.laws.refresh_angles(&mut self.surface, moved);
+        if let Some(width) = self.case.blade.width {
+            let tan_repose = self.case.soil.repose.to_radians().tan();
+            let ahead = first..self.surface.pristine_from.min(self.surface.len());
+            self.side.spill(&mut self.surface, width, tan_repose, ahead);
+        }
         // Face friction opposes the block's motion along the face. The
         // reaction is at the mobilised m φw from the face normal, which is
         // α − 90° from the horizontal: ω = m φw + α − 90° (M41), as in the
@@ -392,13 +435,14 @@ impl Simulation {
             .laws
             .face_angle(face.mobilisation(choice.tan_beta, choice.dilation));
         let (cos_w, sin_w) = (omega.cos(), omega.sin());
+        let force = choice.force * self.per_blade;
         Ok(StepRecord {
             step,
             u,
-            force: choice.force,
+            force,
             force_norm: self.normalised(choice.force),
-            force_h: choice.force * cos_w,
-            force_v: choice.force * sin_w,
+            force_h: force * cos_w,
+            force_v: force * sin_w,
             beta_deg: choice.tan_beta.atan().to_degrees(),
             friction_deg: choice.friction.to_degrees(),
             dilation_deg: choice.dilation.to_degrees(),
@@ -408,6 +452,7 @@ impl Simulation {
             slip: update.slip,
             dilation_area: update.dilation_area,
             mass: self.mass(),
+            mass_spilled: self.mass_spilled(),
         })
     }
 

@@ -80,7 +80,9 @@ impl Summary {
                 index: i,
             })
             .collect();
-        let final_mass = history.last().map_or(initial_mass, |r| r.mass);
+        let final_mass = history
+            .last()
+            .map_or(initial_mass, |r| r.mass + r.mass_spilled);
         Summary {
             initial_force_norm: forces.first().copied().unwrap_or(f64::NAN),
             max_force_norm,

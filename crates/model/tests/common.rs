@@ -17,6 +17,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             rake: 90.0,
             adhesion: 0.0,
             depth_path: Vec::new(),
+            width: None,
         },
         soil: Soil {
             unit_weight: 1.0,

@@ -23,14 +23,14 @@ fn package_class<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>
 }
 
 /// Warns with `soilcut.AccuracyWarning` where the command line warns on
-/// stderr (`Case::accuracy_warning`).
+/// stderr (`Case::accuracy_warnings`).
 pub fn warn_accuracy(py: Python<'_>, case: &soilcut_model::Case) -> PyResult<()> {
-    let Some(message) = case.accuracy_warning() else {
-        return Ok(());
-    };
-    let class = package_class(py, "AccuracyWarning")?;
-    let message = std::ffi::CString::new(message)?;
-    PyErr::warn(py, &class, &message, 1)
+    for message in case.accuracy_warnings() {
+        let class = package_class(py, "AccuracyWarning")?;
+        let message = std::ffi::CString::new(message)?;
+        PyErr::warn(py, &class, &message, 1)?;
+    }
+    Ok(())
 }
 
 /// `soilcut.CaseError(message, key)`: the message is the command line's.

@@ -274,6 +274,15 @@ pub fn analytic<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>
     out.set_item("rankine", baseline(py, Some(wedge.rankine()), norm)?)?;
     out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
     out.set_item("fee", baseline(py, wedge.fee(), norm)?)?;
+    if let Some(w) = case.blade.width {
+        let narrow = wedge.mckyes_ali(w);
+        let d = baseline(py, narrow.map(|n| n.baseline), norm * w)?;
+        if let (Some(n), Ok(dict)) = (narrow, d.cast::<PyDict>()) {
+            dict.set_item("rupture", n.rupture)?;
+            dict.set_item("crescent_angle_deg", n.crescent_angle.to_degrees())?;
+        }
+        out.set_item("mckyes_ali", d)?;
+    }
     Ok(out)
 }
 

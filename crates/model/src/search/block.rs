@@ -36,7 +36,8 @@ pub(super) enum BlockEnd {
 pub(super) struct Block {
     /// Its first node.
     start: usize,
-    /// W_j of each node from `start`, −∞ where the line is not admissible.
+    /// W_j of each node from `start` as the bounds take it
+    /// (`SearchInput::bound_weight`), −∞ where the line is not admissible.
     weight: Vec<f64>,
     /// The lines of the first pass; the first `near` passed its bound.
     passed: Vec<Line>,
@@ -86,22 +87,24 @@ impl Block {
             self.prefix.push(surface, j - 1);
             least.include(surface, j, input);
             let admitted = lines.advance(surface, j);
+            let rupture = lines.face.spacings(j) * lines.dx;
+            let floor = admitted.map(|(_, weight)| input.bound_weight(weight, rupture));
             // Inadmissible lines never stop the scan.
-            self.weight
-                .push(admitted.map_or(f64::NEG_INFINITY, |(_, weight)| weight));
+            self.weight.push(floor.unwrap_or(f64::NEG_INFINITY));
             let line = admitted.and_then(|(grid, weight)| {
                 let slope = Slope::on_grid(grid, &input.rake)?;
                 Some(Line {
                     node: j,
                     slope,
                     weight,
+                    floor: floor.unwrap_or(weight),
                 })
             });
             if let Some(line) = line {
                 self.passed[near] = line;
                 // Kept without a branch: which lines pass is data.
                 let t = line.slope.tan_beta;
-                let pass = !best.prune || least.lower.can_beat(line.weight, t, best.bar, input);
+                let pass = !best.prune || least.lower.can_beat(line.floor, t, best.bar, input);
                 near += usize::from(pass);
             }
             j += 1;

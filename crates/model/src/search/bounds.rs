@@ -118,13 +118,11 @@ pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar
     let table = &input.laws.table;
     let rising = table.below(angles.friction, true);
     let sinking = table.below(angles.friction, false);
-    rising.can_beat(line.weight, t, bar)
+    rising.can_beat(line.floor, t, bar)
         || (t <= input.face.sinking_below
             && match input.face.rule {
-                FaceFrictionRule::Sign => sinking.can_beat(line.weight, t, bar),
-                FaceFrictionRule::Mobilised => {
-                    sinking.can_beat_between(rising, line.weight, t, bar)
-                }
+                FaceFrictionRule::Sign => sinking.can_beat(line.floor, t, bar),
+                FaceFrictionRule::Mobilised => sinking.can_beat_between(rising, line.floor, t, bar),
             }
             && input.face.mobilisation(t, angles.dilation) < 1.0)
 }

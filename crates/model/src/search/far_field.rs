@@ -57,6 +57,11 @@ impl FarField {
                 - r * (self.sum_gk + self.gamma * triangle))
     }
 
+    /// The weight the bounds use for candidate n (`SearchInput::bound_weight`).
+    fn floor(&self, input: &SearchInput, n: usize) -> f64 {
+        input.bound_weight(self.weight(n), self.spacings(n) * self.dx)
+    }
+
     /// Spacings from the face to node b + n.
     fn spacings(&self, n: usize) -> f64 {
         self.face.spacings(self.face.node + n)
@@ -100,14 +105,14 @@ impl FarField {
         // A candidate needs a node ahead of it within `max_nodes` (an end
         // wall may set it).
         while b + n1 + 1 < max_nodes {
-            if best.beyond_reach(self.weight(n1), input.laws.min_factor) {
+            if best.beyond_reach(self.floor(input, n1), input.laws.min_factor) {
                 break;
             }
             let n2 = (n1 + (n1 / 16).max(64) - 1).min(max_nodes - 2 - b);
             if self.may_win(input, &fresh_walls, best, (n1, n2)) {
                 for n in n1..=n2 {
-                    let weight = self.weight(n);
-                    if best.beyond_reach(weight, input.laws.min_factor) {
+                    let (weight, floor) = (self.weight(n), self.floor(input, n));
+                    if best.beyond_reach(floor, input.laws.min_factor) {
                         return evaluations;
                     }
                     if let Some(slope) = self.slope(n, &input.rake) {
@@ -116,6 +121,7 @@ impl FarField {
                             node: b + n,
                             slope,
                             weight,
+                            floor,
                         };
                         best.consider(input, lines, line, fresh);
                     }
@@ -142,12 +148,13 @@ impl FarField {
         };
         let length = first.length(self.spacings(n1), self.dx);
         let t2 = last.tan_beta;
-        let bound = |factor: &ForceFactor| input.loads.force(factor, self.weight(n1), length, t2);
+        let floor = self.floor(input, n1);
+        let bound = |factor: &ForceFactor| input.loads.force(factor, floor, length, t2);
         let below = |p: Option<f64>| p.is_some_and(|p| p <= best.bar);
         let could_sink = t2 <= input.face.sinking_below;
         !best.prune
             || below(bound(&fresh_walls.rising))
-            || (could_sink && below(fresh_walls.least_sinking(input, self.weight(n1), length, t2)))
+            || (could_sink && below(fresh_walls.least_sinking(input, floor, length, t2)))
     }
 }
 

@@ -1,5 +1,6 @@
 //! What the search needs to know about the soil besides the surface.
 
+use crate::crescent::Crescents;
 use crate::laws::Laws;
 use crate::mechanism::{Face, Loads};
 use crate::rake::Rake;
@@ -26,4 +27,20 @@ pub struct SearchInput<'a> {
     /// Loads beside the block's weight (all ≥ 0, so every bound on the
     /// weight alone stays a bound).
     pub loads: Loads,
+    /// The side crescents of a blade of finite width (`None`: plane
+    /// strain); forces compared are then the blade's per unit width.
+    pub crescents: Option<Crescents<'a>>,
+}
+
+impl SearchInput<'_> {
+    /// The weight the bounds use for a band of weight W emerging `rupture`
+    /// ahead of the face: W, plus the crescents' least weight per unit
+    /// width for a blade of finite width (`Crescents::weight_floor`).
+    #[inline]
+    pub fn bound_weight(&self, weight: f64, rupture: f64) -> f64 {
+        match &self.crescents {
+            None => weight,
+            Some(c) => weight + c.weight_floor(rupture, self.depth, self.rake.cot),
+        }
+    }
 }

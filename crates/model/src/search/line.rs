@@ -17,6 +17,7 @@
 
 use super::input::SearchInput;
 use crate::band::{stretch, Band};
+use crate::crescent::BandTerms;
 use crate::grid::FaceNode;
 use crate::laws::BandAngles;
 use crate::rake::Rake;
@@ -119,11 +120,14 @@ pub(super) struct Line {
     pub(super) node: usize,
     pub(super) slope: Slope,
     pub(super) weight: f64,
+    /// The weight the bounds use (`SearchInput::bound_weight`).
+    pub(super) floor: f64,
 }
 
 impl Line {
     /// P_j: Eq. (1) for the band's angles, with the loads, if admissible
-    /// (M4, M6, M8).
+    /// (M4, M6, M8); for a blade of finite width, plus its side crescents
+    /// per unit width (M42).
     pub(super) fn force(
         &self,
         input: &SearchInput,
@@ -132,7 +136,18 @@ impl Line {
     ) -> Option<f64> {
         let t = self.slope.tan_beta;
         let factor = input.laws.factor(angles, t, input.face);
-        let length = self.slope.length(lines.face.spacings(self.node), lines.dx);
-        input.loads.force(&factor, self.weight, length, t)
+        let spacings = lines.face.spacings(self.node);
+        let length = self.slope.length(spacings, lines.dx);
+        let band = input.loads.force(&factor, self.weight, length, t)?;
+        let Some(crescents) = &input.crescents else {
+            return Some(band);
+        };
+        let terms = BandTerms {
+            factor: factor.at(t)?,
+            cohesion: input.loads.cohesion * length * factor.cohesion_at(t),
+            surcharge: input.loads.surcharge,
+        };
+        let rupture = spacings * lines.dx;
+        Some(band + crescents.force_per_width(terms, rupture, lines.d, input.rake.cot))
     }
 }

@@ -29,6 +29,7 @@ pub(super) fn seed(
         node: j,
         slope: Slope::on_grid(grid, &input.rake)?,
         weight,
+        floor: weight,
     };
     let band = line.slope.band(&lines, j, input.band_width);
     let m = band.footprint(&surface.height);

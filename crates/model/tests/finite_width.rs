@@ -1,0 +1,137 @@
+//! A blade of finite width (docs/model.md §16): the first increment is
+//! McKyes & Ali's closed form minimised over the failure angle, the force
+//! per unit width falls to plane strain as the blade widens, soil spilled
+//! around the edges is conserved, and runs are deterministic.
+
+mod common;
+
+use soilcut_model::analytic::Wedge;
+use soilcut_model::{AngleLaw, Case, Simulation};
+
+/// The literature's sand (φ = 35°, φw = 20°, γ = 1, d = 1) at `per_depth`
+/// nodes per depth, with rake α and cohesion c.
+fn tine(rake: f64, cohesion: f64, width: f64, per_depth: f64) -> Case {
+    let mut case = common::original(0.02, per_depth);
+    case.blade.depth = 1.0;
+    case.blade.wall_friction = 20.0;
+    case.blade.rake = rake;
+    case.blade.width = Some(width);
+    case.soil.friction = AngleLaw::constant(35.0);
+    case.soil.repose = 25.0;
+    case.soil.cohesion = cohesion;
+    case.run.increment = 1.0 / per_depth;
+    case.run.node_spacing = 1.0 / per_depth;
+    case.run.travel = case.run.increment;
+    case
+}
+
+fn first_force(case: &Case) -> f64 {
+    Simulation::new(case).unwrap().step().unwrap().force
+}
+
+#[test]
+fn first_increment_is_mckyes_ali() {
+    for rake in [90.0, 45.0] {
+        for cohesion in [0.0, 0.2] {
+            for w in [0.25, 0.5, 1.0, 2.0, 5.0, 20.0] {
+                let case = tine(rake, cohesion, w, 2000.0);
+                let exact = Wedge::of_case(&case).mckyes_ali(w).unwrap().baseline.force;
+                let got = first_force(&case);
+                let rel = (got - exact).abs() / exact;
+                assert!(
+                    rel < 1e-4,
+                    "α={rake} c={cohesion} w/d={w}: {got} vs McKyes-Ali {exact} (rel {rel:e})"
+                );
+                assert!(
+                    got >= exact * (1.0 - 1e-12),
+                    "α={rake} c={cohesion} w/d={w}: the grid cannot beat the least force"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn wide_blade_is_plane_strain_times_width() {
+    for rake in [90.0, 45.0] {
+        let mut plane = tine(rake, 0.0, 1.0, 400.0);
+        plane.blade.width = None;
+        let per_width = first_force(&plane);
+        let wide = first_force(&tine(rake, 0.0, 1000.0, 400.0));
+        let rel = wide / (1000.0 * per_width) - 1.0;
+        assert!(rel > 0.0 && rel < 5e-3, "α={rake}: {rel:e}");
+    }
+}
+
+#[test]
+fn force_per_width_falls_as_the_blade_widens() {
+    for rake in [90.0, 45.0] {
+        let mut last = f64::INFINITY;
+        for w in [0.25, 0.5, 1.0, 2.0, 5.0, 20.0, 100.0] {
+            let per_width = first_force(&tine(rake, 0.1, w, 200.0)) / w;
+            assert!(per_width < last, "α={rake} w/d={w}: {per_width} ≥ {last}");
+            last = per_width;
+        }
+    }
+}
+
+/// A developed cut of a narrow blade: its pile spills sideways.
+fn narrow_cut(width: f64) -> Case {
+    let mut case = common::refined("fig5", 1.5, 100.0);
+    case.blade.width = Some(width * case.blade.depth);
+    case
+}
+
+#[test]
+fn spilled_soil_is_conserved() {
+    for (width, rake) in [(0.5, 90.0), (3.0, 90.0), (1.0, 60.0)] {
+        let mut case = narrow_cut(width);
+        case.blade.rake = rake;
+        let mut sim = Simulation::new(&case).unwrap();
+        let history = sim.run_to_end(|_| {}).unwrap();
+        let last = history.last().unwrap();
+        assert!(
+            last.mass_spilled > 0.0,
+            "w/d={width} α={rake}: nothing spilled"
+        );
+        let drift = (last.mass + last.mass_spilled - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-12, "w/d={width} α={rake}: drift {drift:e}");
+        // Spill only grows, and the narrower blade spills more of its pile.
+        assert!(history
+            .windows(2)
+            .all(|p| p[1].mass_spilled >= p[0].mass_spilled));
+    }
+    let spilled = |w: f64| {
+        let mut sim = Simulation::new(&narrow_cut(w)).unwrap();
+        let h = sim.run_to_end(|_| {}).unwrap();
+        h.last().unwrap().mass_spilled / w
+    };
+    assert!(spilled(0.5) > spilled(3.0), "spill per unit width");
+}
+
+#[test]
+fn plane_strain_has_no_spill_and_a_wide_blade_nearly_none() {
+    let mut plane = narrow_cut(1.0);
+    plane.blade.width = None;
+    let h = Simulation::new(&plane).unwrap().run_to_end(|_| {}).unwrap();
+    assert!(h.iter().all(|r| r.mass_spilled == 0.0));
+    let wide = Simulation::new(&narrow_cut(1e6))
+        .unwrap()
+        .run_to_end(|_| {})
+        .unwrap();
+    let spilled = wide.last().unwrap().mass_spilled / wide.last().unwrap().mass;
+    assert!(spilled < 1e-5, "{spilled}");
+    let mean = |h: &[soilcut_model::StepRecord]| h.iter().map(|r| r.force_norm).sum::<f64>();
+    let rel = mean(&wide) / mean(&h) - 1.0;
+    assert!(rel.abs() < 1e-3, "{rel:e}");
+}
+
+#[test]
+fn runs_are_deterministic() {
+    let case = narrow_cut(1.0);
+    let a = Simulation::new(&case).unwrap().run_to_end(|_| {}).unwrap();
+    let mut sim = Simulation::new(&case).unwrap();
+    let b = sim.run_to_end(|_| {}).unwrap();
+    assert_eq!(a, b);
+    assert!(sim.profile().iter().any(|p| p.ridge_height > 0.0));
+}
