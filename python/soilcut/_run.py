@@ -61,11 +61,15 @@ class RunResult:
             (``step``, ``u``, ``u_over_d``, ``force``, ``force_norm``,
             ``force_h``, ``force_v``, ``beta_deg``, ``x_emergence``, ``mass``,
             ``y_emergence``, ``friction_deg``, ``slip``, ``dilation_deg``,
-            ``dilation_area``, ``depth``): forces per unit width
-            (γ·length², force per unit width), ``force_norm`` = P/(γ0 d²), lengths in the case's
-            unit, angles in degrees. The numbers are the file's exactly.
-        profile: the final ground surface, arrays ``x``, ``y``,
-            ``accumulated_shear`` (length) and ``unit_weight`` (force/length³).
+            ``dilation_area``, ``depth``, ``mass_spilled``): forces and
+            masses per unit width (γ·length²), ``force_norm`` = P/(γ0 d²);
+            with ``blade.width`` per blade (γ·length³) and ``force_norm`` =
+            P/(γ0 d² w); lengths in the case's unit, angles in degrees. The
+            numbers are the file's exactly.
+        profile: the final ground surface, arrays ``x``, ``y`` (the
+            centreline), ``accumulated_shear`` (length), ``unit_weight``
+            (force/length³) and ``ridge_height`` (length: the side heaps'
+            crest beside a blade of finite width, 0 in plane strain).
         summary: the content of ``summary.json`` (peaks, baselines, mass
             drift, ``wall_time_s``, ...).
         frames: the surfaces captured for the animation (:class:`Frame`),

@@ -15,7 +15,8 @@ __version__: str
 
 class Step:
     """One increment (a row of ``history.csv``): forces per unit width
-    (γ·length², force per unit width), lengths in the case's unit, angles in degrees."""
+    (γ·length², force per unit width), or per blade with ``blade.width``
+    (γ·length³), lengths in the case's unit, angles in degrees."""
 
     @property
     def step(self) -> int:
@@ -61,7 +62,12 @@ class Step:
         """Area added by dilation in this increment (length²)."""
     @property
     def mass(self) -> float:
-        """Weight of the soil after the increment (γ·length², force per unit width)."""
+        """Weight of the soil ahead of the blade after the increment
+        (γ·length² per unit width; per blade with ``blade.width``)."""
+    @property
+    def mass_spilled(self) -> float:
+        """Weight of the soil spilled around the blade's edges so far (0 in
+        plane strain; units of ``mass``)."""
 
 class Simulation:
     """A running simulation of one case, stepped from Python (a control
@@ -83,8 +89,9 @@ class Simulation:
         records; returns how many were made."""
     def surface(self) -> dict[str, np.ndarray]:
         """The free surface from the face to the end of the domain: ``x``,
-        ``y``, ``accumulated_shear`` (length), ``unit_weight``
-        (force/length³)."""
+        ``y`` (the centreline), ``accumulated_shear`` (length),
+        ``unit_weight`` (force/length³), ``ridge_height`` (length: the side
+        heaps' crest beside a blade of finite width, 0 in plane strain)."""
     @property
     def blade_position(self) -> float:
         """Blade displacement u (length): the face is at x = u."""
@@ -102,7 +109,12 @@ class Simulation:
         """Depth of the blade tip now (length)."""
     @property
     def mass(self) -> float:
-        """Weight of the soil now (γ·length², force per unit width)."""
+        """Weight of the soil ahead of the blade now (γ·length² per unit
+        width; per blade with ``blade.width``)."""
+    @property
+    def mass_spilled(self) -> float:
+        """Weight of the soil spilled around the blade's edges so far (0 in
+        plane strain; units of ``mass``)."""
     @property
     def case(self) -> Case:
         """The case, every default filled in."""

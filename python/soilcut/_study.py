@@ -192,6 +192,11 @@ def fit(
     if width is not None:
         if not (np.isfinite(width) and width > 0):
             raise ValueError(f"width {width}: must be a finite number > 0")
+        if "width" in case.to_dict().get("blade", {}):
+            raise ValueError(
+                f"width {width}: the case's blade.width makes the simulated force the "
+                "blade's total already; give the measured total force without width"
+            )
         points = [(u, p / width) for u, p in points]
     bounds_list = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
     budget = (evaluations, population, polish, profile_points)

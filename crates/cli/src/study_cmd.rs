@@ -333,11 +333,17 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
             ));
         }
     }
-    let title = base
-        .load(&[])
-        .map_err(|e| Failure::input(path, e))?
-        .case
-        .title;
+    let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
+    if let (Some(w), Some(_)) = (args.width, case.blade.width) {
+        return Err(Failure::input(
+            path,
+            format!(
+                "--width {w}: the case's blade.width makes the simulated force the blade's \
+                 total already; give the measured total force without --width"
+            ),
+        ));
+    }
+    let title = case.title;
     let mut tests = vec![test_of(&args.measured, base.clone(), args.width)?];
     for also in &args.also {
         let (case, measured) = also

@@ -163,6 +163,11 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
             }
         }
     }
+    // Runs from before finite widths have no side heaps.
+    let ridges = match run.profile.optional_column("ridge_height") {
+        Some(h) if h.iter().any(|&v| v > 0.0) => x.iter().copied().zip(h).collect(),
+        _ => Vec::new(),
+    };
     let case = &run.case;
     Ok(RunData {
         title: case.title.clone(),
@@ -173,6 +178,7 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
         history,
         profile: surface(&x, &y, &shear),
         frames,
+        ridges,
     })
 }
 

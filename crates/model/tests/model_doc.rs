@@ -427,7 +427,9 @@ fn every_tag_the_model_document_cites_is_in_the_index() {
     let rows = index_rows(&doc);
     // Everything but the index itself (later sections follow it).
     let start = doc.find("## 15. Equation index").unwrap();
-    let end = doc[start + 3..].find("\n## ").map_or(doc.len(), |k| start + 3 + k);
+    let end = doc[start + 3..]
+        .find("\n## ")
+        .map_or(doc.len(), |k| start + 3 + k);
     let body = format!("{}{}", &doc[..start], &doc[end..]);
     let mut unknown: Vec<&str> = tags_cited(&doc)
         .into_iter()

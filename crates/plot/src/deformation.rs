@@ -147,6 +147,7 @@ impl Picture for Deformation<'_> {
             )?;
         }
         draw_outline(&mut chart, run, &run.profile, u_final, self.extent, PAPER)?;
+        draw_ridges(&mut chart, run, self.extent)?;
         colour_bar(root, &bar_area, u_max, PAPER)?;
 
         let shear: Vec<(f64, f64)> = run
@@ -175,7 +176,7 @@ impl Deformation<'_> {
         } else {
             "slip lines, coloured by u/d"
         };
-        let entries = vec![
+        let mut entries = vec![
             ("initial ground".to_string(), Mark::Dashed(BLACK)),
             ("ground surface".to_string(), Mark::Line(style::GROUND_EDGE)),
             ("blade".to_string(), Mark::Block(style::BLADE)),
@@ -185,8 +186,42 @@ impl Deformation<'_> {
                 Mark::Line(style::SHEAR),
             ),
         ];
+        if !self.run.ridges.is_empty() {
+            entries.push((
+                "side heaps' crest beside the blade".to_string(),
+                Mark::Dashed(style::RIDGE),
+            ));
+        }
         Legend::new(entries, WIDTH - 60, PAPER)
     }
+}
+
+/// The crest of the side heaps beside a blade of finite width (dashed), over
+/// the ground in front of the blade.
+fn draw_ridges<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Chart<'a, DB>,
+    run: &RunData,
+    ext: Extent,
+) -> DrawResult {
+    if run.ridges.is_empty() {
+        return Ok(());
+    }
+    let d = run.depth;
+    let crest: Vec<(f64, f64)> = run
+        .ridges
+        .iter()
+        .map(|&(x, h)| (x / d, h / d))
+        .filter(|p| p.0 <= ext.x.1)
+        .collect();
+    chart
+        .draw_series(DashedLineSeries::new(
+            thin(chart, &crest),
+            10,
+            6,
+            style::RIDGE.stroke_width(PAPER.line),
+        ))
+        .map_err(text)?;
+    Ok(())
 }
 
 /// For each pixel column of `points`: its first x and largest value, so

@@ -110,6 +110,9 @@ pub struct RunData {
     pub profile: Vec<SurfacePoint>,
     /// Surfaces during the run, in order (for the animation).
     pub frames: Vec<Frame>,
+    /// (x, crest height) of the side heaps beside a blade of finite width,
+    /// along the final surface (empty in plane strain).
+    pub ridges: Vec<(f64, f64)>,
 }
 
 impl Default for RunData {
@@ -124,6 +127,7 @@ impl Default for RunData {
             history: Vec::new(),
             profile: Vec::new(),
             frames: Vec::new(),
+            ridges: Vec::new(),
         }
     }
 }

@@ -58,6 +58,8 @@ pub const GROUND_EDGE: RGBColor = RGBColor(110, 90, 60);
 pub const BLADE: RGBColor = RGBColor(70, 70, 70);
 pub const CURVE: RGBColor = RGBColor(31, 119, 180);
 pub const SHEAR: RGBColor = RGBColor(160, 60, 40);
+/// The side heaps' crest beside a blade of finite width.
+pub const RIDGE: RGBColor = RGBColor(60, 110, 170);
 
 /// Distinct colours for overlaid curves (Tableau 10).
 pub const SERIES: [RGBColor; 8] = [

@@ -53,6 +53,7 @@ fn run(band_width: f64) -> RunData {
         history,
         profile: surface(20.0, 10.0),
         frames,
+        ridges: Vec::new(),
     }
 }
 

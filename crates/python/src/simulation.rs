@@ -16,8 +16,9 @@ pub struct Simulation {
     resolved: String,
 }
 
-/// One increment (a row of `history.csv`): forces per unit width in the
-/// case's units (γ·length²), lengths in the case's unit, angles in degrees.
+/// One increment (a row of `history.csv`): forces and masses per unit width
+/// in the case's units (γ·length²), per blade with `blade.width`
+/// (γ·length³), lengths in the case's unit, angles in degrees.
 #[pyclass(module = "soilcut._soilcut", frozen)]
 pub struct Step(StepRecord);
 
@@ -68,7 +69,9 @@ impl Simulation {
     }
 
     /// The free surface from the face to the end of the domain: arrays x,
-    /// y (length), accumulated_shear (length), unit_weight (force/length³).
+    /// y (length, the centreline), accumulated_shear (length), unit_weight
+    /// (force/length³), ridge_height (length: the side heaps' crest beside
+    /// a blade of finite width, 0 in plane strain).
     fn surface<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let p = self.sim.profile();
         let column = |f: fn(&soilcut_model::ProfilePoint) -> f64| p.iter().map(f).collect();
@@ -79,6 +82,7 @@ impl Simulation {
                 ("y".into(), column(|q| q.y)),
                 ("accumulated_shear".into(), column(|q| q.accumulated_shear)),
                 ("unit_weight".into(), column(|q| q.unit_weight)),
+                ("ridge_height".into(), column(|q| q.ridge_height)),
             ],
         )
     }
@@ -113,10 +117,18 @@ impl Simulation {
         self.sim.tip_depth()
     }
 
-    /// Weight of the soil now, per unit width (γ·length², force per unit width).
+    /// Weight of the soil ahead of the blade now (γ·length² per unit width;
+    /// per blade with `blade.width`).
     #[getter]
     fn mass(&self) -> f64 {
         self.sim.mass()
+    }
+
+    /// Weight of the soil spilled around the blade's edges so far (0 in
+    /// plane strain; units of `mass`).
+    #[getter]
+    fn mass_spilled(&self) -> f64 {
+        self.sim.mass_spilled()
     }
 
     /// The case, every default filled in (a `soilcut.Case`).
@@ -211,10 +223,18 @@ impl Step {
     fn dilation_area(&self) -> f64 {
         self.0.dilation_area
     }
-    /// Weight of the soil after the increment (γ·length², force per unit width).
+    /// Weight of the soil ahead of the blade after the increment
+    /// (γ·length² per unit width; γ·length³ per blade with `blade.width`).
     #[getter]
     fn mass(&self) -> f64 {
         self.0.mass
+    }
+
+    /// Weight of the soil spilled around the blade's edges so far (0 in
+    /// plane strain; units of `mass`).
+    #[getter]
+    fn mass_spilled(&self) -> f64 {
+        self.0.mass_spilled
     }
 
     fn __repr__(&self) -> String {
