@@ -83,3 +83,26 @@ fn fig8b_equal_accuracy(bencher: Bencher, grid: &str) {
         .counter(ItemsCount::new(evaluations))
         .bench(|| run(divan::black_box(&case)));
 }
+
+/// Whole run of the finite-width tools (`cases/tools/tine.toml`,
+/// `dozer.toml`) with their width and, for the cost of the crescents and the
+/// spill, the same case in plane strain (`blade.width` removed).
+#[divan::bench(
+    args = ["tine", "tine-plane-strain", "dozer", "dozer-plane-strain"],
+    sample_count = 3,
+    sample_size = 1
+)]
+fn finite_width_tool(bencher: Bencher, name: &str) {
+    let (tool, plane) = match name.strip_suffix("-plane-strain") {
+        Some(tool) => (tool, true),
+        None => (name, false),
+    };
+    let mut case = shipped_case(&format!("tools/{tool}.toml"), &[]);
+    if plane {
+        case.blade.width = None;
+    }
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}

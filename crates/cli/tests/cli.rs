@@ -509,6 +509,27 @@ fn coarse_nodes_in_softening_soil_are_warned_about() {
     );
     assert_eq!(check(softening, &[]), "");
     assert_eq!(check("cases/paper/fig8b.toml", &[]), "");
+    // A tine narrower than a sixth of its depth runs, with a warning.
+    let tine = "cases/tools/tine.toml";
+    let narrow = check(tine, &["blade.width=20"]);
+    assert!(narrow.starts_with("warning: blade.width = 20"), "{narrow}");
+    assert_eq!(check(tine, &[]), "");
+}
+
+/// A width that is not a length > 0 is refused with exit code 2, naming
+/// the key.
+#[test]
+fn a_bad_blade_width_names_the_key() {
+    for bad in ["0", "-5", "nan", "\"wide\""] {
+        let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+            .arg("check")
+            .arg(workspace().join("cases/tools/tine.toml"))
+            .args(["--set", &format!("blade.width={bad}")])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(stderr(&o).contains("blade.width"), "{bad}: {}", stderr(&o));
+    }
 }
 
 #[test]

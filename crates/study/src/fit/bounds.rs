@@ -52,7 +52,8 @@ pub fn is_angle(key: &str) -> bool {
 /// * dilation angles (`soil.dilation.*`): x ± 10° within [−45°, 45°];
 /// * lengths and other positive sizes (`soil.peak_shear`,
 ///   `soil.residual_shear`, `soil.d50`, `soil.band_width`,
-///   `soil.band_width_d50`, `soil.unit_weight`, `blade.depth`):
+///   `soil.band_width_d50`, `soil.unit_weight`, `blade.depth`,
+///   `blade.width`):
 ///   0.5 x to 2 x (x must be > 0).
 ///
 /// Any other key needs `--bounds`. [`Free`]s made by [`free_keys`] are
@@ -75,7 +76,8 @@ pub fn default_bounds(key: &str, x: f64) -> Result<(f64, f64), String> {
         | "soil.band_width"
         | "soil.band_width_d50"
         | "soil.unit_weight"
-        | "blade.depth" => {
+        | "blade.depth"
+        | "blade.width" => {
             if x > 0.0 {
                 Ok((0.5 * x, 2.0 * x))
             } else {
