@@ -85,13 +85,19 @@ pub struct BandTerms {
     pub surcharge: f64,
 }
 
+/// (cos ρ, sin ρ) of the fans of radius r for a tip at depth d behind a
+/// face at cot α: cos ρ = min(1, d cot α / r) (F8).
+fn fan(r: f64, depth: f64, cot_rake: f64) -> (f64, f64) {
+    let cos_rho = (depth * cot_rake / r).min(1.0);
+    (cos_rho, (1.0 - cos_rho * cos_rho).sqrt())
+}
+
 impl Crescents<'_> {
     /// P_cr / w for a band whose emergence lies `rupture` = r ahead of the
     /// face on the grid, the tip at depth d, the face at cot α (M42).
     pub fn force_per_width(&self, band: BandTerms, rupture: f64, depth: f64, cot_rake: f64) -> f64 {
         let r = rupture;
-        let cos_rho = (depth * cot_rake / r).min(1.0);
-        let sin_rho = (1.0 - cos_rho * cos_rho).sqrt();
+        let (cos_rho, sin_rho) = fan(r, depth, cot_rake);
         let weight =
             self.unit_weight * depth * r * r * sin_rho / 3.0 + self.ridge_weight(r, cos_rho);
         let total =
@@ -104,8 +110,7 @@ impl Crescents<'_> {
     /// stopping rule on the band's weight (M31) hold for W + this.
     pub fn weight_floor(&self, rupture: f64, depth: f64, cot_rake: f64) -> f64 {
         let r = rupture;
-        let cos_rho = (depth * cot_rake / r).min(1.0);
-        let sin_rho = (1.0 - cos_rho * cos_rho).sqrt();
+        let (_, sin_rho) = fan(r, depth, cot_rake);
         self.unit_weight * depth * r * r * sin_rho / (3.0 * self.width)
     }
 
