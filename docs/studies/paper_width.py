@@ -12,7 +12,7 @@ plane strain, at the experiment's w/d = 14.2 and, to show the trend, at
 w/d = 3, and writes docs/studies/paper-width/README.md and results.csv:
 the unit-window ensemble means of P/(γ0 d²) (P/(γ0 d² w) with a width) with
 their standard deviation over the members, the rise from the first window to
-the last, and the share of the soil met that has spilled by the end.
+the last, and the share of the soil swept that has spilled by the end.
 Standard library only:
 
     python3 docs/studies/paper_width.py --soilcut target/release/soilcut
@@ -57,14 +57,19 @@ def windows(folder):
 
 
 def spilled(folder):
-    """(mean, sd) over the members of the spilled share of the soil met."""
+    """(mean, sd) over the members of the spilled share of the soil swept,
+    γ0 d u w at the end of the run."""
     summary = json.loads((folder / "summary.json").read_text())
     shares = []
     for name in summary["perturbation"]["folders"]:
-        with open(folder / name / "history.csv", newline="") as f:
+        member = folder / name
+        case = tomllib.loads((member / "case.resolved.toml").read_text())
+        with open(member / "history.csv", newline="") as f:
             last = list(csv.DictReader(f))[-1]
-        total = float(last["mass"]) + float(last["mass_spilled"])
-        shares.append(float(last["mass_spilled"]) / total)
+        blade, soil = case["blade"], case["soil"]
+        travel = float(last["u"]) + case["run"]["increment"]
+        swept = soil["unit_weight"] * blade["depth"] * travel * blade["width"]
+        shares.append(float(last["mass_spilled"]) / swept)
     mean = sum(shares) / len(shares)
     sd = math.sqrt(sum((s - mean) ** 2 for s in shares) / (len(shares) - 1))
     return mean, sd
