@@ -46,10 +46,8 @@ impl Writer {
 
     pub fn f64s(&mut self, v: &[f64]) {
         self.usize(v.len());
-        self.0.reserve(8 * v.len());
-        for &x in v {
-            self.f64(x);
-        }
+        self.0
+            .extend(v.iter().flat_map(|x| x.to_bits().to_le_bytes()));
     }
 }
 

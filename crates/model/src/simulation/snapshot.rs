@@ -121,15 +121,19 @@ impl Simulation {
     /// Python package keeps the case file's text there); the model does
     /// not read them.
     pub fn snapshot_with_note(&self, note: &[u8]) -> Vec<u8> {
-        let mut body = Writer::default();
-        write_case(&mut body, &self.case);
-        body.bytes(note);
-        self.write_state(&mut body);
         let mut w = Writer::default();
         w.0.extend_from_slice(&MAGIC);
         w.u32(FORMAT_VERSION);
         w.str(CRATE_VERSION);
-        w.bytes(&body.0);
+        // The body's length, patched in once the body is written (no copy
+        // of a body the size of the domain).
+        let at = w.0.len();
+        w.u64(0);
+        write_case(&mut w, &self.case);
+        w.bytes(note);
+        self.write_state(&mut w);
+        let length = (w.0.len() - at - 8) as u64;
+        w.0[at..at + 8].copy_from_slice(&length.to_le_bytes());
         let sum = checksum(&w.0);
         w.u64(sum);
         w.0
