@@ -13,13 +13,15 @@
     sim = soilcut.Simulation(case)        # step by step, for a control loop
     for step in sim:
         step.force, step.beta_deg
+    branch = copy.deepcopy(sim)           # or Simulation.from_snapshot(sim.snapshot())
+    branch.advance_to(80.0, depth=15.0)   # to u = 80, the tip linearly to 15
 
 Lengths are in the case's unit (the paper's cases use mm), angles in
 degrees, forces per unit width.
 """
 
 from ._case import Case
-from ._errors import AccuracyWarning, CaseError, StepError
+from ._errors import AccuracyWarning, CaseError, SnapshotError, StepError
 from ._run import Ensemble, Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
 from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
@@ -34,6 +36,7 @@ __all__ = [
     "Frame",
     "RunResult",
     "Simulation",
+    "SnapshotError",
     "Step",
     "StepError",
     "__version__",

@@ -33,6 +33,21 @@ class StepError(ValueError):
         return (type(self), (str(self), self.key))
 
 
+class SnapshotError(ValueError):
+    """Bytes that :meth:`soilcut.Simulation.from_snapshot` cannot restore:
+    not a snapshot, a snapshot of another version of soilcut (the model's
+    numbers may differ between versions, so only its own are restored),
+    truncated, corrupt (its checksum does not match) or holding a state no
+    run reaches. The message names which, and where."""
+
+    def __init__(self, message: str, key: str | None = None) -> None:
+        super().__init__(message)
+        self.key = key
+
+    def __reduce__(self):
+        return (type(self), (str(self), self.key))
+
+
 class AccuracyWarning(UserWarning):
     """A case that runs, on a grid known to cost accuracy: nodes coarser
     than the increment (``run.node_spacing`` > ``run.increment``) in soil

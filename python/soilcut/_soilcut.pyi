@@ -71,8 +71,11 @@ class Step:
 
 class Simulation:
     """A running simulation of one case, stepped from Python (a control
-    loop): ``for step in Simulation(case): ...``. Each step runs with the
-    interpreter released."""
+    loop): ``for step in Simulation(case): ...``, or to blade positions
+    (:meth:`advance_to`). Each step runs with the interpreter released.
+    Copies (``copy.copy``, ``copy.deepcopy``), pickles and
+    :meth:`snapshot` bytes continue bit for bit as the original would: a
+    planner branches from them."""
 
     def __init__(self, case: Case | str) -> None:
         """Flat ground for ``case`` (a :class:`soilcut.Case` or a case file's
@@ -87,6 +90,41 @@ class Simulation:
     def advance(self, n: int) -> int:
         """Advances by up to ``n`` increments without returning their
         records; returns how many were made."""
+    def advance_to(self, x: float, depth: float | None = None) -> list[Step]:
+        """Runs the increments that bring the blade to displacement ``x``
+        (length) and returns their records: up to the first whole increment
+        at or beyond ``x`` (u = n·v0, n = ⌈x/v0⌉ with x within 10⁻⁹ of a
+        whole number counting as it; the rule of ``run.travel``), none if
+        the blade is there already. An increment is never shortened: the
+        grid is tied to whole increments. Beyond ``run.travel`` the travel
+        becomes ``x``. With ``depth`` (length) the tip goes linearly from
+        its depth now to ``depth`` at ``x`` and stays there: the case's
+        depth path ahead of the blade is replaced (vertical blades only;
+        deeper than ``run.increment`` and the band width, no deeper than
+        the case's deepest tip depth, which sets the ground the simulation
+        holds). ``sim.case`` shows the steered case. Raises ``ValueError``
+        for a bad ``x`` (NaN, negative, behind the blade's last whole
+        increment) or ``depth``, :class:`soilcut.CaseError` if the steered
+        case does not validate (nothing changes then) and
+        :class:`soilcut.StepError` if an increment has no admissible
+        mechanism (the increments before it stay made)."""
+    def snapshot(self) -> bytes:
+        """The state as bytes, with the case file's text: everything that
+        determines the rest of the run, so that
+        :meth:`from_snapshot` continues bit for bit as this simulation
+        would. Tied to this version of soilcut (``docs/model.md`` §17)."""
+    @staticmethod
+    def from_snapshot(data: bytes) -> Simulation:
+        """The simulation a :meth:`snapshot` holds (also one made from Rust,
+        whose :attr:`case` is then unknown). Raises
+        :class:`soilcut.SnapshotError` for bytes that are not a snapshot of
+        this version, truncated or corrupt."""
+    def __copy__(self) -> Simulation:
+        """An independent copy of the state (``copy.copy`` and
+        ``copy.deepcopy`` alike: a simulation shares nothing)."""
+    def __deepcopy__(self, memo: Any) -> Simulation: ...
+    def __reduce__(self) -> tuple[Any, tuple[bytes]]:
+        """Pickles as :meth:`snapshot`, unpickles by :meth:`from_snapshot`."""
     def surface(self) -> dict[str, np.ndarray]:
         """The free surface from the face to the end of the domain: ``x``,
         ``y`` (the centreline), ``accumulated_shear`` (length),
@@ -117,7 +155,10 @@ class Simulation:
         plane strain; units of ``mass``)."""
     @property
     def case(self) -> Case:
-        """The case, every default filled in."""
+        """The case, every default filled in, as :meth:`advance_to` has
+        steered it (its depth path and travel). ``RuntimeError`` for a
+        simulation restored from a snapshot made outside Python, which
+        carries no case file text."""
     def __iter__(self) -> Iterator[Step]: ...
     def __next__(self) -> Step: ...
 

@@ -67,6 +67,46 @@ fn fig5_step_on_developed_pile(bencher: Bencher) {
         });
 }
 
+/// A planner's branch of fig5 at d/1000 on the pile developed after 3 d of
+/// travel (`docs/performance.md`, "Snapshots"): copying the state, writing
+/// it as bytes and restoring it; the counter is the snapshot's bytes.
+mod snapshot {
+    use super::*;
+    use divan::counter::BytesCount;
+    use std::sync::LazyLock;
+
+    static DEVELOPED: LazyLock<Simulation> = LazyLock::new(|| {
+        let case = shipped_case("paper/fig5.toml", &["run.increment=0.02"]);
+        developed(&case, 3.0)
+    });
+
+    fn bytes() -> BytesCount {
+        BytesCount::new(DEVELOPED.snapshot().len())
+    }
+
+    #[divan::bench(sample_count = 50, sample_size = 10)]
+    fn clone(bencher: Bencher) {
+        bencher
+            .counter(bytes())
+            .bench(|| divan::black_box(&*DEVELOPED).clone());
+    }
+
+    #[divan::bench(sample_count = 50, sample_size = 10)]
+    fn snapshot(bencher: Bencher) {
+        bencher
+            .counter(bytes())
+            .bench(|| divan::black_box(&*DEVELOPED).snapshot());
+    }
+
+    #[divan::bench(sample_count = 50, sample_size = 10)]
+    fn from_snapshot(bencher: Bencher) {
+        let data = DEVELOPED.snapshot();
+        bencher
+            .counter(bytes())
+            .bench(|| Simulation::from_snapshot(divan::black_box(&data)).unwrap());
+    }
+}
+
 /// Whole run of `cases/paper/fig8b.toml` (soil that only hardens) at about
 /// equal accuracy on the two node grids (`docs/performance.md`, "Time to
 /// accuracy"): the reference grid at d/500 (0.69 % from d/2000) and the

@@ -225,6 +225,19 @@ pub struct LoadedCase {
 }
 
 impl LoadedCase {
+    /// The case as a running simulation has steered it
+    /// (`Simulation::advance_to`): `case`'s depth path and travel, in both
+    /// forms; every other key stays this case's.
+    pub fn steered(&self, case: &Case) -> LoadedCase {
+        let mut loaded = self.clone();
+        let path = &case.blade.depth_path;
+        loaded.case.blade.depth_path = path.clone();
+        loaded.case.run.travel = case.run.travel;
+        loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone());
+        loaded.resolved.run.travel = case.run.travel;
+        loaded
+    }
+
     /// `case.resolved.toml`: every default filled in, only the keys valid
     /// for the case's model. Reading it back gives the same [`Case`].
     pub fn resolved_toml(&self) -> String {
@@ -599,6 +612,20 @@ mod tests {
             assert_eq!(again.case, loaded.case);
             assert_eq!(again.resolved_toml(), loaded.resolved_toml());
         }
+    }
+
+    #[test]
+    fn a_steered_case_reads_back_as_steered() {
+        let loaded = parse_case(ORIGINAL, &[]).unwrap();
+        let mut case = loaded.case.clone();
+        case.blade.depth_path = vec![[0.0, 20.0], [31.5, 12.25]];
+        case.run.travel = 123.5;
+        case.soil.cohesion = 7.0; // not steered: stays the case's
+        let steered = loaded.steered(&case);
+        assert_eq!(steered.case.blade.depth_path, case.blade.depth_path);
+        assert_eq!(steered.case.soil.cohesion, loaded.case.soil.cohesion);
+        let again = parse_case(&steered.resolved_toml(), &[]).unwrap();
+        assert_eq!(again.case, steered.case);
     }
 
     #[test]

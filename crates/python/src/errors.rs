@@ -1,10 +1,10 @@
 //! Rust errors as the Python package's exceptions (defined in
 //! `soilcut/_errors.py`, so that they carry docstrings and attributes).
 
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use soilcut_io::InputError;
-use soilcut_model::StepError;
+use soilcut_model::{AdvanceError, StepError};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -58,8 +58,32 @@ pub fn key_error(py: Python<'_>, key: &str, message: &str) -> PyErr {
 }
 
 /// `soilcut.StepError`: an increment without an admissible mechanism.
-fn step_error(py: Python<'_>, e: &StepError) -> PyErr {
+fn step_error(py: Python<'_>, e: StepError) -> PyErr {
     raise(py, "StepError", e.to_string(), None)
+}
+
+/// `soilcut.SnapshotError`: bytes that are no snapshot this build restores.
+pub fn snapshot_error(py: Python<'_>, message: impl Into<String>) -> PyErr {
+    raise(py, "SnapshotError", message.into(), None)
+}
+
+/// `advance_to`'s errors: a bad argument as `ValueError`, a steered case
+/// that does not validate as `soilcut.CaseError` (naming its key), a failed
+/// increment as `soilcut.StepError`.
+pub fn advance_error(py: Python<'_>, e: AdvanceError) -> PyErr {
+    match e {
+        AdvanceError::Argument { .. } => PyValueError::new_err(e.to_string()),
+        AdvanceError::Case(c) => {
+            let message = format!("advance_to: {}", c.message);
+            raise(
+                py,
+                "CaseError",
+                format!("{}: {message}", c.key),
+                Some(c.key),
+            )
+        }
+        AdvanceError::Step { error, .. } => step_error(py, error),
+    }
 }
 
 /// A panic of the model (a bug) as a `RuntimeError`, so that it never
@@ -79,9 +103,18 @@ pub fn detached<T: Send>(
     py: Python<'_>,
     f: impl FnOnce() -> Result<T, StepError> + Send,
 ) -> PyResult<T> {
+    detached_map(py, f, step_error)
+}
+
+/// `detached` for any error of the model, which `error` converts.
+pub fn detached_map<T: Send, E: Send>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, E> + Send,
+    error: impl FnOnce(Python<'_>, E) -> PyErr,
+) -> PyResult<T> {
     match py.detach(|| catch_unwind(AssertUnwindSafe(f))) {
         Ok(Ok(value)) => Ok(value),
-        Ok(Err(e)) => Err(step_error(py, &e)),
+        Ok(Err(e)) => Err(error(py, e)),
         Err(panic) => Err(panic_error(panic)),
     }
 }

@@ -9,6 +9,7 @@ mod ensemble;
 mod errors;
 mod run;
 mod simulation;
+mod step;
 mod study;
 
 use pyo3::prelude::*;
@@ -32,6 +33,6 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ensemble::ensemble, m)?)?;
     m.add_class::<ensemble::EnsembleRun>()?;
     m.add_class::<simulation::Simulation>()?;
-    m.add_class::<simulation::Step>()?;
+    m.add_class::<step::Step>()?;
     Ok(())
 }

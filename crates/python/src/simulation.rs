@@ -1,26 +1,26 @@
 //! `soilcut.Simulation`: one case stepped increment by increment from
-//! Python (a controller's loop), and `soilcut.Step`, one increment's record.
+//! Python (a controller's loop), copied, pickled and restored from
+//! snapshots (docs/model.md §17).
 
 use crate::case::load;
 use crate::convert::columns;
-use crate::errors::{case_error, detached};
+use crate::errors::{advance_error, case_error, detached, detached_map, snapshot_error};
+use crate::step::Step;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
-use soilcut_model::StepRecord;
+use pyo3::types::{PyBytes, PyDict, PyTuple};
+use soilcut_io::{parse_case, LoadedCase};
 
 /// A running simulation of one case.
 #[pyclass(module = "soilcut._soilcut")]
+#[derive(Clone)]
 pub struct Simulation {
     sim: soilcut_model::Simulation,
-    resolved: String,
+    /// The case in both forms, as steered so far; `None` for a simulation
+    /// restored from a snapshot made without the case's text (outside
+    /// Python).
+    loaded: Option<LoadedCase>,
 }
-
-/// One increment (a row of `history.csv`): forces and masses per unit width
-/// in the case's units (γ·length²), per blade with `blade.width`
-/// (γ·length³), lengths in the case's unit, angles in degrees.
-#[pyclass(module = "soilcut._soilcut", frozen)]
-pub struct Step(StepRecord);
 
 #[pymethods]
 impl Simulation {
@@ -38,8 +38,75 @@ impl Simulation {
             soilcut_model::Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
         Ok(Simulation {
             sim,
-            resolved: loaded.resolved_toml(),
+            loaded: Some(loaded),
         })
+    }
+
+    /// The state as bytes (`soilcut.Simulation.from_snapshot` restores it),
+    /// with the case file's text.
+    fn snapshot<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        let text = self.loaded.as_ref().map(LoadedCase::resolved_toml);
+        let bytes = self
+            .sim
+            .snapshot_with_note(text.unwrap_or_default().as_bytes());
+        PyBytes::new(py, &bytes)
+    }
+
+    /// A simulation restored from `snapshot()`'s bytes; raises
+    /// `soilcut.SnapshotError` for bytes it cannot restore.
+    #[staticmethod]
+    fn from_snapshot(py: Python<'_>, data: &[u8]) -> PyResult<Self> {
+        let (sim, note) = soilcut_model::Simulation::from_snapshot_with_note(data)
+            .map_err(|e| snapshot_error(py, e.to_string()))?;
+        if note.is_empty() {
+            return Ok(Simulation { sim, loaded: None });
+        }
+        // The note is under the checksum: only a snapshot made by hand
+        // gets these errors.
+        let text = String::from_utf8(note)
+            .map_err(|_| snapshot_error(py, "snapshot invalid: its case text is not UTF-8"))?;
+        let loaded = parse_case(&text, &[])
+            .map_err(|e| snapshot_error(py, format!("snapshot invalid: its case text: {e}")))?;
+        if loaded.case != *sim.case() {
+            return Err(snapshot_error(
+                py,
+                "snapshot invalid: its case text is not the case of its state",
+            ));
+        }
+        Ok(Simulation {
+            sim,
+            loaded: Some(loaded),
+        })
+    }
+
+    /// An independent copy (the state is cloned, not shared).
+    fn __copy__(&self) -> Self {
+        self.clone()
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.clone()
+    }
+
+    /// Pickles as its snapshot.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let restore = slf.get_type().getattr("from_snapshot")?;
+        let data = slf.borrow().snapshot(py);
+        PyTuple::new(py, [restore, PyTuple::new(py, [data])?.into_any()])
+    }
+
+    /// Runs the increments that bring the blade to displacement `x` (the
+    /// first whole increment at or beyond it) and returns their records;
+    /// with `depth`, the tip goes linearly to that depth at x
+    /// (`Simulation::advance_to` of soilcut-model).
+    #[pyo3(signature = (x, depth=None))]
+    fn advance_to(&mut self, py: Python<'_>, x: f64, depth: Option<f64>) -> PyResult<Vec<Step>> {
+        let sim = &mut self.sim;
+        let made = detached_map(py, || sim.advance_to(x, depth), advance_error);
+        // The case may be steered even if an increment failed.
+        self.loaded = self.loaded.take().map(|l| l.steered(self.sim.case()));
+        Ok(made?.into_iter().map(Step).collect())
     }
 
     /// Advances the blade by one increment and returns its record.
@@ -134,9 +201,14 @@ impl Simulation {
     /// The case, every default filled in (a `soilcut.Case`).
     #[getter]
     fn case<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let Some(loaded) = &self.loaded else {
+            return Err(PyRuntimeError::new_err(
+                "restored from a snapshot made without the case file's text (outside Python): its case is not known as a case file",
+            ));
+        };
         py.import("soilcut")?
             .getattr("Case")?
-            .call1((self.resolved.as_str(),))
+            .call1((loaded.resolved_toml(),))
     }
 
     fn __iter__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {
@@ -148,100 +220,5 @@ impl Simulation {
             return Ok(None);
         }
         self.step(py).map(Some)
-    }
-}
-
-#[pymethods]
-impl Step {
-    /// Increment number, from 1.
-    #[getter]
-    fn step(&self) -> usize {
-        self.0.step
-    }
-    /// Blade displacement u at which the mechanism was evaluated (length).
-    #[getter]
-    fn u(&self) -> f64 {
-        self.0.u
-    }
-    /// Resultant blade force P per unit width (γ·length², force per unit width).
-    #[getter]
-    fn force(&self) -> f64 {
-        self.0.force
-    }
-    /// P/(γ0 d²), d = blade.depth.
-    #[getter]
-    fn force_norm(&self) -> f64 {
-        self.0.force_norm
-    }
-    /// Horizontal (draft) component of P (γ·length², force per unit width).
-    #[getter]
-    fn force_h(&self) -> f64 {
-        self.0.force_h
-    }
-    /// Vertical component of P, positive upward (γ·length², force per unit width).
-    #[getter]
-    fn force_v(&self) -> f64 {
-        self.0.force_v
-    }
-    /// β*, the angle of the least-force slip line or band (degrees).
-    #[getter]
-    fn beta_deg(&self) -> f64 {
-        self.0.beta_deg
-    }
-    /// Friction angle mobilised on the band (degrees).
-    #[getter]
-    fn friction_deg(&self) -> f64 {
-        self.0.friction_deg
-    }
-    /// Dilation angle on the band (degrees).
-    #[getter]
-    fn dilation_deg(&self) -> f64 {
-        self.0.dilation_deg
-    }
-    /// x of the emergence point of the band at the surface (length).
-    #[getter]
-    fn x_emergence(&self) -> f64 {
-        self.0.x_emergence
-    }
-    /// y of the emergence point (length).
-    #[getter]
-    fn y_emergence(&self) -> f64 {
-        self.0.y_emergence
-    }
-    /// Depth of the blade tip during the increment (length).
-    #[getter]
-    fn depth(&self) -> f64 {
-        self.0.depth
-    }
-    /// Slip along the band in this increment (length).
-    #[getter]
-    fn slip(&self) -> f64 {
-        self.0.slip
-    }
-    /// Area added by dilation in this increment (length²).
-    #[getter]
-    fn dilation_area(&self) -> f64 {
-        self.0.dilation_area
-    }
-    /// Weight of the soil ahead of the blade after the increment
-    /// (γ·length² per unit width; γ·length³ per blade with `blade.width`).
-    #[getter]
-    fn mass(&self) -> f64 {
-        self.0.mass
-    }
-
-    /// Weight of the soil spilled around the blade's edges so far (0 in
-    /// plane strain; units of `mass`).
-    #[getter]
-    fn mass_spilled(&self) -> f64 {
-        self.0.mass_spilled
-    }
-
-    fn __repr__(&self) -> String {
-        let r = &self.0;
-        format!(
-            "Step(step={}, u={}, force={}, force_norm={}, beta_deg={}, x_emergence={})",
-            r.step, r.u, r.force, r.force_norm, r.beta_deg, r.x_emergence
-        )
     }
 }
