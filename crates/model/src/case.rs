@@ -355,8 +355,17 @@ impl Case {
     /// `travel` (a travel within 1e-9 of a whole number of increments counts
     /// as that number).
     pub fn steps(&self) -> usize {
-        let ratio = self.run.travel / self.run.increment;
-        (ratio - 1e-9 * ratio.max(1.0)).ceil().max(1.0) as usize
+        self.increments_to(self.run.travel).max(1)
+    }
+
+    /// Increments that bring the blade from its start to displacement `u`
+    /// (a length, ≥ 0): the first whole increment at or beyond u, n =
+    /// ⌈u / v0⌉, where a u within 1e-9 (relative) of a whole number of
+    /// increments counts as that number. `run.travel`'s rule and
+    /// `Simulation::advance_to`'s.
+    pub fn increments_to(&self, u: f64) -> usize {
+        let ratio = u / self.run.increment;
+        (ratio - 1e-9 * ratio.max(1.0)).ceil().max(0.0) as usize
     }
 
     /// Checks every value against its allowed range; the error names the key.

@@ -7,6 +7,10 @@
 
 #![warn(missing_docs)]
 
+// The integration tests' case builders (tests/common.rs) in unit tests.
+#[cfg(test)]
+extern crate self as soilcut_model;
+
 pub mod accuracy;
 pub mod analytic;
 pub mod avalanche;
@@ -34,5 +38,7 @@ pub use case::{
     Model, Run, Soil, UnitWeightRule, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
 };
 pub use landscape::Candidate;
-pub use simulation::{ProfilePoint, Simulation, StepError, StepRecord};
+pub use simulation::{
+    AdvanceError, ProfilePoint, Simulation, SnapshotError, StepError, StepRecord,
+};
 pub use summary::{Peak, Summary};

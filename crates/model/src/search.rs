@@ -71,6 +71,21 @@ struct Landscape {
 }
 
 impl Search {
+    /// A search resumed from a snapshot: seeded from node `previous`,
+    /// with `evaluations` already counted.
+    pub fn resumed(previous: Option<usize>, evaluations: u64) -> Self {
+        Search {
+            previous,
+            evaluations,
+            ..Search::default()
+        }
+    }
+
+    /// The previous increment's emergence node, which seeds the next scan.
+    pub fn previous(&self) -> Option<usize> {
+        self.previous
+    }
+
     /// The minimum-effort mechanism, P* = min_j P_j (M11), or `None` if no
     /// admissible candidate exists within a domain of `max_nodes` nodes.
     pub fn run(

@@ -20,6 +20,22 @@ use crate::spill::SideHeaps;
 use crate::surface::Surface;
 use std::fmt;
 
+mod advance;
+mod case_codec;
+mod codec;
+pub mod snapshot;
+
+pub use advance::AdvanceError;
+pub use snapshot::SnapshotError;
+
+/// φ and ψ of fresh soil (ut = 0), radians.
+fn fresh_angles(laws: &Laws) -> (f64, f64) {
+    (
+        laws.material.friction.at(0.0),
+        laws.material.dilation.at(0.0),
+    )
+}
+
 /// Depths the domain grows by when the search reaches its end.
 const GROW_DEPTHS: f64 = 4.0;
 /// No mechanism reaches further than this many depths ahead of the blade.
@@ -146,24 +162,36 @@ impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
         case.validate()?;
-        let (d, dx) = (case.deepest(), case.run.node_spacing);
         let nodes = case.initial_nodes() as usize;
         let laws = Laws::new(case);
-        let fresh = (
-            laws.material.friction.at(0.0),
-            laws.material.dilation.at(0.0),
+        let fresh = fresh_angles(&laws);
+        let surface = Surface::flat(
+            Self::scheme(case),
+            case.deepest(),
+            case.soil.unit_weight,
+            fresh,
+            nodes,
         );
-        let scheme = Scheme {
-            spacing: dx,
+        let initial_mass = surface.mass(0);
+        Ok(Self::assemble(case.clone(), laws, surface, initial_mass))
+    }
+
+    /// The node grid of a case: h = k v0.
+    fn scheme(case: &Case) -> Scheme {
+        Scheme {
+            spacing: case.run.node_spacing,
             increment: case.run.increment,
             increments_per_node: case.increments_per_node(),
-        };
-        let surface = Surface::flat(scheme, d, case.soil.unit_weight, fresh, nodes);
-        let initial_mass = surface.mass(0);
+        }
+    }
+
+    /// A simulation of a validated case on `surface`, before its first
+    /// increment: what the case determines is derived here, once.
+    fn assemble(case: Case, laws: Laws, surface: Surface, initial_mass: f64) -> Self {
         let rake = Rake::new(case.blade.rake);
         // The repose slopes on the grid (M29), per unit of x'.
         let tan_repose = case.soil.repose.to_radians().tan();
-        Ok(Simulation {
+        Simulation {
             laws,
             rake,
             repose_slopes: rake.repose_slopes(tan_repose),
@@ -175,8 +203,8 @@ impl Simulation {
             per_blade: case.blade.width.unwrap_or(1.0),
             done: 0,
             initial_mass,
-            case: case.clone(),
-        })
+            case,
+        }
     }
 
     /// The case being run.

@@ -50,7 +50,7 @@ pub struct Surface {
     pub trench_mass: f64,
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
-    appended_mass: f64,
+    pub(crate) appended_mass: f64,
 }
 
 impl Surface {

@@ -1,0 +1,152 @@
+//! Position-based steps for controllers (docs/model.md §17): bring the
+//! blade to a displacement, and its tip to a depth on the way.
+//!
+//! The grid is tied to whole increments (h = k v0, and a block moves by
+//! v0), so an increment is never shortened: `advance_to(x)` makes the
+//! increments up to the first whole increment at or beyond x,
+//! `Case::increments_to`, the rule of `run.travel`. The blade stops at most
+//! one increment past x and the results stay those of the case.
+
+use super::{Simulation, StepRecord};
+use crate::case::{Case, CaseError};
+use crate::simulation::StepError;
+use std::fmt;
+
+/// Why `advance_to` could not bring the blade to a position.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AdvanceError {
+    /// An argument out of range; nothing was changed.
+    Argument {
+        /// `x` or `depth`.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// What it must satisfy.
+        message: String,
+    },
+    /// The case as steered (its depth path or travel) does not validate;
+    /// nothing was changed.
+    Case(CaseError),
+    /// An increment had no admissible mechanism; the increments before it
+    /// were made, and these are their records.
+    Step {
+        /// The records of the increments made.
+        records: Vec<StepRecord>,
+        /// Why the next one failed.
+        error: StepError,
+    },
+}
+
+impl fmt::Display for AdvanceError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            AdvanceError::Argument {
+                name,
+                value,
+                message,
+            } => write!(f, "advance_to: {name} = {value}: {message}"),
+            AdvanceError::Case(e) => write!(f, "advance_to: {e}"),
+            AdvanceError::Step { error, .. } => write!(f, "{error}"),
+        }
+    }
+}
+
+impl std::error::Error for AdvanceError {}
+
+impl Simulation {
+    /// Runs the increments that bring the blade to displacement `x` (a
+    /// length, measured as `blade_position`) and returns their records:
+    /// up to the first whole increment at or beyond x (`Case::increments_to`;
+    /// none if the blade is there already). With `depth` (a length, > 0),
+    /// the tip goes linearly from its depth now to `depth` at x and stays
+    /// there: the case's depth path beyond the blade is replaced by that
+    /// segment (vertical blades only, as every depth path; no deeper than
+    /// the ground the simulation was set up with, `Case::deepest`). Beyond
+    /// `run.travel`, the travel becomes x. Errors leave the simulation as
+    /// it was, except a failed increment (`AdvanceError::Step`).
+    pub fn advance_to(
+        &mut self,
+        x: f64,
+        depth: Option<f64>,
+    ) -> Result<Vec<StepRecord>, AdvanceError> {
+        let target = self.target(x)?;
+        let todo = target - self.done;
+        let mut case = match depth {
+            Some(depth) => self.steered(x, depth, todo)?,
+            None => self.case.clone(),
+        };
+        case.run.travel = case.run.travel.max(x);
+        if case != self.case {
+            case.validate().map_err(AdvanceError::Case)?;
+            self.case = case;
+        }
+        let mut records = Vec::with_capacity(todo);
+        while self.done < target {
+            match self.step() {
+                Ok(record) => records.push(record),
+                Err(error) => return Err(AdvanceError::Step { records, error }),
+            }
+        }
+        Ok(records)
+    }
+
+    /// The increments done once the blade is at x.
+    fn target(&self, x: f64) -> Result<usize, AdvanceError> {
+        let argument = |message: String| AdvanceError::Argument {
+            name: "x",
+            value: x,
+            message,
+        };
+        if !x.is_finite() || x < 0.0 {
+            return Err(argument("must be a finite length >= 0".into()));
+        }
+        let target = self.case.increments_to(x);
+        if target < self.done {
+            return Err(argument(format!(
+                "behind the blade at u = {} ({} increments done; x takes {target}, the first whole increment at or beyond it)",
+                self.blade_position(),
+                self.done
+            )));
+        }
+        Ok(target)
+    }
+
+    /// The case with the tip going linearly from its depth now to `depth`
+    /// at x (the caller validates it); `todo` increments get it there.
+    fn steered(&self, x: f64, depth: f64, todo: usize) -> Result<Case, AdvanceError> {
+        let argument = |message: String| AdvanceError::Argument {
+            name: "depth",
+            value: depth,
+            message,
+        };
+        let floor = -self.surface.floor;
+        // A depth path's rule (`Case::validate`): deeper than an increment
+        // and the band.
+        let least = self.case.run.increment.max(self.case.soil.band_width);
+        if !(depth.is_finite() && depth > least && depth <= floor) {
+            return Err(argument(format!(
+                "must be in ({least}, {floor}]: deeper than run.increment and the band width, and no deeper than the ground the simulation holds, down to the deepest tip depth of its case (give the case a blade.depth_path reaching the deepest depth to steer to)"
+            )));
+        }
+        let mut case = self.case.clone();
+        // A tip that stays where the case holds it needs no path (nor a
+        // vertical blade).
+        if case.blade.depth_path.is_empty() && depth == case.blade.depth {
+            return Ok(case);
+        }
+        if todo == 0 {
+            return Err(argument(format!(
+                "x = {x} needs no increment (the blade is at u = {}), so the tip cannot move to a new depth over it",
+                self.blade_position()
+            )));
+        }
+        let u0 = self.blade_position();
+        let path = &mut case.blade.depth_path;
+        // What lies behind the blade stays as run; the tip is pinned where
+        // it is now, so that the increments to come start from it.
+        path.retain(|p| p[0] < u0);
+        path.push([u0, self.tip_depth()]);
+        path.push([x, depth]);
+        Ok(case)
+    }
+}
