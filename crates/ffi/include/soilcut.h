@@ -197,6 +197,15 @@ typedef struct SoilcutState {
   double initial_mass;
 } SoilcutState;
 
+/**
+ * Called by `soilcut_advance_to` with each increment's record, in order,
+ * and the caller's `user` pointer. The record is valid during the call
+ * only. It is called after the increments are made and the handle is
+ * released, so it may call soilcut functions, on this handle too; it must
+ * not unwind (a C++ exception) into soilcut.
+ */
+typedef void (*SoilcutOnStep)(const struct SoilcutStep *record, void *user);
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -366,6 +375,74 @@ int soilcut_surface(const struct SoilcutSimulation *sim,
                     double *unit_weight,
                     double *ridge_height,
                     size_t len);
+
+/**
+ * Runs the increments that bring the blade to displacement `x` (length,
+ * measured as `SoilcutState.blade_position`): up to the first whole
+ * increment at or beyond x, since an increment is never shortened (the
+ * grid moves by whole increments: the rule of `run.travel`, so the blade
+ * stops less than one increment past x and the records are the case's
+ * own). None if the blade is there already. With `depth` a length (not
+ * NaN), the tip goes linearly from its depth now to `depth` at x and
+ * stays there (vertical blades only, no deeper than the deepest tip depth
+ * of the case); NaN leaves the case's depth (or depth path) as it is.
+ * Beyond `run.travel` the travel becomes x.
+ *
+ * `on_step` (may be NULL) is called with each increment's record;
+ * `*steps_made` (may be NULL) is the number of increments made, also on
+ * `SOILCUT_ERR_STEP`, when the increments before the failed one were made
+ * and are reported. The last one's record is then `soilcut_last_step`'s.
+ *
+ * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `steps_made`
+ * misaligned), `SOILCUT_ERR_ARGUMENT` (x NaN, infinite, negative or
+ * behind the blade; depth out of range or not allowed for the case;
+ * nothing was changed), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
+ *
+ * # Safety
+ * `sim` is NULL or a live handle; `steps_made` is NULL or valid for a
+ * write; `on_step` is NULL or a function of that type.
+ */
+int soilcut_advance_to(struct SoilcutSimulation *sim,
+                       double x,
+                       double depth,
+                       SoilcutOnStep on_step,
+                       void *user,
+                       uint64_t *steps_made);
+
+/**
+ * Copies the simulation's state as bytes into `buf` (`soilcut_restore`
+ * makes a simulation that continues from them bit for bit as this one
+ * would) and stores their length in `*needed`. With `buf` NULL and `len`
+ * 0 it only stores the length. The bytes are versioned: they restore only
+ * in this version of soilcut. The last step's record is not part of
+ * them. Each call serialises the state anew (so ask for the length and
+ * copy in two calls, or keep a buffer large enough).
+ *
+ * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` or `needed` NULL, `buf`
+ * NULL with `len` > 0), `SOILCUT_ERR_LENGTH` (`len` < `*needed`: nothing
+ * is copied) or `SOILCUT_ERR_PANIC`.
+ *
+ * # Safety
+ * `sim` is NULL or a live handle; `buf` is NULL or valid for writes of
+ * `len` bytes; `needed` is NULL or valid for a write.
+ */
+int soilcut_snapshot(const struct SoilcutSimulation *sim, uint8_t *buf, size_t len, size_t *needed);
+
+/**
+ * Creates a simulation from the `len` bytes of a snapshot
+ * (`soilcut_snapshot`, or the Python package's `Simulation.snapshot`),
+ * stored in `*out` as `soilcut_new_from_toml` does; it has no last step
+ * until it steps.
+ *
+ * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
+ * `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,
+ * truncated, corrupt: the message says which) or `SOILCUT_ERR_PANIC`.
+ *
+ * # Safety
+ * `bytes` is NULL or valid for reads of `len` bytes; `out` is NULL or
+ * valid for a write of a pointer.
+ */
+int soilcut_restore(const uint8_t *bytes, size_t len, struct SoilcutSimulation **out);
 
 #ifdef __cplusplus
 }  // extern "C"

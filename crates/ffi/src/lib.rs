@@ -31,8 +31,8 @@ pub use record::{SoilcutState, SoilcutStep};
 
 use error::{catch, copy_message, fail, guard, thread_last_error, Failure};
 use soilcut_io::{parse_case, read_case, InputError, LoadedCase, Override, HISTORY_HEADER};
-use soilcut_model::{Simulation, StepRecord};
-use std::ffi::{c_char, CStr, CString};
+use soilcut_model::{AdvanceError, Simulation, StepRecord};
+use std::ffi::{c_char, c_void, CStr, CString};
 use std::os::raw::c_int;
 use std::path::Path;
 use std::sync::{Mutex, OnceLock};
@@ -88,6 +88,31 @@ impl SoilcutSimulation {
     }
 }
 
+impl SoilcutSimulation {
+    /// Runs `f` on the state, catching a panic (which poisons the lock, so
+    /// that every later call fails).
+    fn run<T>(&self, f: impl FnOnce(&mut State) -> Result<T, Failure>) -> Result<T, Failure> {
+        catch(|| {
+            let mut state = self.state.lock().map_err(|_| {
+                Failure::new(
+                    SOILCUT_ERR_PANIC,
+                    "an earlier call on this simulation panicked, so its state is unknown: free it",
+                )
+            })?;
+            f(&mut state)
+        })
+    }
+}
+
+/// The handle `sim`, or the thread's failure for a NULL one.
+///
+/// # Safety
+/// `sim` is NULL or a live handle.
+unsafe fn handle<'a>(sim: *const SoilcutSimulation) -> Result<&'a SoilcutSimulation, c_int> {
+    // SAFETY: NULL or a live handle, by the caller's contract.
+    unsafe { sim.as_ref() }.ok_or_else(|| fail(Failure::null("sim")))
+}
+
 /// Runs `f` on the state of the handle `sim`; a failure is kept by the
 /// handle and the thread.
 ///
@@ -97,20 +122,12 @@ unsafe fn with_handle(
     sim: *const SoilcutSimulation,
     f: impl FnOnce(&mut State) -> Result<(), Failure>,
 ) -> c_int {
-    // SAFETY: NULL or a live handle, by the caller's contract.
-    let Some(handle) = (unsafe { sim.as_ref() }) else {
-        return fail(Failure::null("sim"));
+    // SAFETY: by the caller's contract.
+    let handle = match unsafe { handle(sim) } {
+        Ok(handle) => handle,
+        Err(code) => return code,
     };
-    let outcome = catch(|| {
-        let mut state = handle.state.lock().map_err(|_| {
-            Failure::new(
-                SOILCUT_ERR_PANIC,
-                "an earlier call on this simulation panicked, so its state is unknown: free it",
-            )
-        })?;
-        f(&mut state)
-    });
-    match outcome {
+    match handle.run(f) {
         Ok(()) => SOILCUT_OK,
         Err(failure) => handle.fail(failure),
     }
@@ -187,20 +204,26 @@ fn input(e: &InputError) -> Failure {
     Failure::new(SOILCUT_ERR_INPUT, e.to_string())
 }
 
-/// Creates a handle for the case `load` reads and stores it in `*out`.
+/// The simulation of the case `load` reads.
+fn simulation(load: impl FnOnce() -> Result<LoadedCase, Failure>) -> Result<Simulation, Failure> {
+    let loaded = load()?;
+    Simulation::new(&loaded.case).map_err(|e| input(&e.into()))
+}
+
+/// Creates a handle for the simulation `make` sets up and stores it in
+/// `*out`.
 ///
 /// # Safety
 /// `out` is NULL or valid for a write of a pointer.
 unsafe fn create(
     out: *mut *mut SoilcutSimulation,
-    load: impl FnOnce() -> Result<LoadedCase, Failure>,
+    make: impl FnOnce() -> Result<Simulation, Failure>,
 ) -> c_int {
     guard(|| {
         writable(out, "out")?;
         // SAFETY: checked by `writable`; a failure leaves NULL there.
         unsafe { put(out, std::ptr::null_mut()) };
-        let loaded = load()?;
-        let sim = Simulation::new(&loaded.case).map_err(|e| input(&e.into()))?;
+        let sim = make()?;
         let handle = Box::into_raw(Box::new(SoilcutSimulation::new(sim)));
         // SAFETY: as above.
         unsafe { put(out, handle) };
@@ -280,9 +303,11 @@ pub unsafe extern "C" fn soilcut_new_from_toml(
     // SAFETY: by the caller's contract.
     unsafe {
         create(out, || {
-            let text = self::text(text, "text")?;
-            let overrides = overrides(sets, n_sets)?;
-            parse_case(text, &overrides).map_err(|e| input(&e))
+            simulation(|| {
+                let text = self::text(text, "text")?;
+                let overrides = overrides(sets, n_sets)?;
+                parse_case(text, &overrides).map_err(|e| input(&e))
+            })
         })
     }
 }
@@ -306,10 +331,12 @@ pub unsafe extern "C" fn soilcut_new_from_file(
     // SAFETY: by the caller's contract.
     unsafe {
         create(out, || {
-            let path = text(path, "path")?;
-            let overrides = overrides(sets, n_sets)?;
-            read_case(Path::new(path), &overrides)
-                .map_err(|e| Failure::new(SOILCUT_ERR_INPUT, format!("{path}: {e}")))
+            simulation(|| {
+                let path = text(path, "path")?;
+                let overrides = overrides(sets, n_sets)?;
+                read_case(Path::new(path), &overrides)
+                    .map_err(|e| Failure::new(SOILCUT_ERR_INPUT, format!("{path}: {e}")))
+            })
         })
     }
 }
@@ -547,6 +574,178 @@ pub unsafe extern "C" fn soilcut_surface(
                 }
             }
             Ok(())
+        })
+    }
+}
+
+/// Called by `soilcut_advance_to` with each increment's record, in order,
+/// and the caller's `user` pointer. The record is valid during the call
+/// only. It is called after the increments are made and the handle is
+/// released, so it may call soilcut functions, on this handle too; it must
+/// not unwind (a C++ exception) into soilcut.
+pub type SoilcutOnStep =
+    Option<unsafe extern "C" fn(record: *const SoilcutStep, user: *mut c_void)>;
+
+/// Runs the increments that bring the blade to displacement `x` (length,
+/// measured as `SoilcutState.blade_position`): up to the first whole
+/// increment at or beyond x, since an increment is never shortened (the
+/// grid moves by whole increments: the rule of `run.travel`, so the blade
+/// stops less than one increment past x and the records are the case's
+/// own). None if the blade is there already. With `depth` a length (not
+/// NaN), the tip goes linearly from its depth now to `depth` at x and
+/// stays there (vertical blades only, no deeper than the deepest tip depth
+/// of the case); NaN leaves the case's depth (or depth path) as it is.
+/// Beyond `run.travel` the travel becomes x.
+///
+/// `on_step` (may be NULL) is called with each increment's record;
+/// `*steps_made` (may be NULL) is the number of increments made, also on
+/// `SOILCUT_ERR_STEP`, when the increments before the failed one were made
+/// and are reported. The last one's record is then `soilcut_last_step`'s.
+///
+/// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `steps_made`
+/// misaligned), `SOILCUT_ERR_ARGUMENT` (x NaN, infinite, negative or
+/// behind the blade; depth out of range or not allowed for the case;
+/// nothing was changed), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
+///
+/// # Safety
+/// `sim` is NULL or a live handle; `steps_made` is NULL or valid for a
+/// write; `on_step` is NULL or a function of that type.
+#[no_mangle]
+pub unsafe extern "C" fn soilcut_advance_to(
+    sim: *mut SoilcutSimulation,
+    x: f64,
+    depth: f64,
+    on_step: SoilcutOnStep,
+    user: *mut c_void,
+    steps_made: *mut u64,
+) -> c_int {
+    // SAFETY: by the caller's contract.
+    let handle = match unsafe { handle(sim) } {
+        Ok(handle) => handle,
+        Err(code) => return code,
+    };
+    let outcome = handle.run(|state| {
+        if !steps_made.is_null() {
+            writable(steps_made, "steps_made")?;
+        }
+        let depth = (!depth.is_nan()).then_some(depth);
+        let (records, failed) = match state.sim.advance_to(x, depth) {
+            Ok(records) => (records, None),
+            Err(AdvanceError::Step { records, error }) => (
+                records,
+                Some(Failure::new(SOILCUT_ERR_STEP, error.to_string())),
+            ),
+            Err(e) => return Err(Failure::new(SOILCUT_ERR_ARGUMENT, e.to_string())),
+        };
+        if let Some(last) = records.last() {
+            state.last = Some(*last);
+        }
+        let d = state.sim.case().blade.depth;
+        let records: Vec<SoilcutStep> = records.iter().map(|r| SoilcutStep::new(r, d)).collect();
+        Ok((records, failed))
+    });
+    let (records, failed) = match outcome {
+        Ok(made) => made,
+        Err(failure) => return handle.fail(failure),
+    };
+    if !steps_made.is_null() {
+        // SAFETY: checked by `writable` above.
+        unsafe { put(steps_made, records.len() as u64) };
+    }
+    if let Some(on_step) = on_step {
+        for record in &records {
+            // SAFETY: a function of this type, by the caller's contract.
+            unsafe { on_step(record, user) };
+        }
+    }
+    match failed {
+        Some(failure) => handle.fail(failure),
+        None => SOILCUT_OK,
+    }
+}
+
+/// Copies the simulation's state as bytes into `buf` (`soilcut_restore`
+/// makes a simulation that continues from them bit for bit as this one
+/// would) and stores their length in `*needed`. With `buf` NULL and `len`
+/// 0 it only stores the length. The bytes are versioned: they restore only
+/// in this version of soilcut. The last step's record is not part of
+/// them. Each call serialises the state anew (so ask for the length and
+/// copy in two calls, or keep a buffer large enough).
+///
+/// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` or `needed` NULL, `buf`
+/// NULL with `len` > 0), `SOILCUT_ERR_LENGTH` (`len` < `*needed`: nothing
+/// is copied) or `SOILCUT_ERR_PANIC`.
+///
+/// # Safety
+/// `sim` is NULL or a live handle; `buf` is NULL or valid for writes of
+/// `len` bytes; `needed` is NULL or valid for a write.
+#[no_mangle]
+pub unsafe extern "C" fn soilcut_snapshot(
+    sim: *const SoilcutSimulation,
+    buf: *mut u8,
+    len: usize,
+    needed: *mut usize,
+) -> c_int {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        with_handle(sim, |state| {
+            writable(needed, "needed")?;
+            if buf.is_null() && len > 0 {
+                return Err(Failure::null("buf"));
+            }
+            let bytes = state.sim.snapshot();
+            put(needed, bytes.len());
+            if buf.is_null() {
+                return Ok(());
+            }
+            if len < bytes.len() {
+                return Err(Failure::new(
+                    SOILCUT_ERR_LENGTH,
+                    format!("len is {len} but the snapshot has {} bytes", bytes.len()),
+                ));
+            }
+            // SAFETY: `len` >= the bytes' length writable bytes at `buf`.
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf, bytes.len());
+            Ok(())
+        })
+    }
+}
+
+/// Creates a simulation from the `len` bytes of a snapshot
+/// (`soilcut_snapshot`, or the Python package's `Simulation.snapshot`),
+/// stored in `*out` as `soilcut_new_from_toml` does; it has no last step
+/// until it steps.
+///
+/// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
+/// `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,
+/// truncated, corrupt: the message says which) or `SOILCUT_ERR_PANIC`.
+///
+/// # Safety
+/// `bytes` is NULL or valid for reads of `len` bytes; `out` is NULL or
+/// valid for a write of a pointer.
+#[no_mangle]
+pub unsafe extern "C" fn soilcut_restore(
+    bytes: *const u8,
+    len: usize,
+    out: *mut *mut SoilcutSimulation,
+) -> c_int {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        create(out, || {
+            let bytes = match len {
+                0 => &[][..],
+                _ if bytes.is_null() => return Err(Failure::null("bytes")),
+                _ if len > isize::MAX as usize => {
+                    return Err(Failure::new(
+                        SOILCUT_ERR_ARGUMENT,
+                        format!("len = {len} is not the length of an array"),
+                    ))
+                }
+                // SAFETY: `len` readable bytes, by the caller's contract.
+                _ => std::slice::from_raw_parts(bytes, len),
+            };
+            Simulation::from_snapshot(bytes)
+                .map_err(|e| Failure::new(SOILCUT_ERR_INPUT, e.to_string()))
         })
     }
 }
