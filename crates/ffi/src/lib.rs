@@ -31,7 +31,7 @@ pub use record::{SoilcutState, SoilcutStep};
 
 use error::{catch, copy_message, fail, guard, thread_last_error, Failure};
 use soilcut_io::{parse_case, read_case, InputError, LoadedCase, Override, HISTORY_HEADER};
-use soilcut_model::{AdvanceError, Simulation, StepRecord};
+use soilcut_model::{AdvanceError, ProfilePoint, Simulation, StepRecord};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::os::raw::c_int;
 use std::path::Path;
@@ -505,6 +505,10 @@ pub unsafe extern "C" fn soilcut_surface_len(
     }
 }
 
+/// An array of `soilcut_surface`: where, its name, whether it is
+/// required, and the value of a point it takes.
+type Column<'a> = (*mut f64, &'a str, bool, fn(&ProfilePoint) -> f64);
+
 /// Copies the free surface, from the blade face to the end of the domain,
 /// into caller arrays of `len` doubles each (`profile.csv`'s columns): `x`
 /// (length, the node's position), `y` (length, the surface height; 0 is
@@ -534,12 +538,7 @@ pub unsafe extern "C" fn soilcut_surface(
     // SAFETY: by the caller's contract.
     unsafe {
         with_handle(sim, |state| {
-            let columns: [(
-                *mut f64,
-                &str,
-                bool,
-                fn(&soilcut_model::ProfilePoint) -> f64,
-            ); 5] = [
+            let columns: [Column; 5] = [
                 (x, "x", true, |p| p.x),
                 (y, "y", true, |p| p.y),
                 (accumulated_shear, "accumulated_shear", false, |p| {
@@ -712,9 +711,8 @@ pub unsafe extern "C" fn soilcut_snapshot(
 }
 
 /// Creates a simulation from the `len` bytes of a snapshot
-/// (`soilcut_snapshot`, or the Python package's `Simulation.snapshot`),
-/// stored in `*out` as `soilcut_new_from_toml` does; it has no last step
-/// until it steps.
+/// (`soilcut_snapshot`), stored in `*out` as `soilcut_new_from_toml` does;
+/// it has no last step until it steps.
 ///
 /// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
 /// `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,

@@ -221,7 +221,7 @@ fn a_bad_case_file_names_the_path_and_the_key() {
     assert_eq!(state(sim).steps_total, 2);
     unsafe { soilcut_free(sim) };
 
-    let missing = CString::new("/nonexistent/case.toml").unwrap();
+    let missing = CString::new("no-such-folder/case.toml").unwrap();
     let code = unsafe { soilcut_new_from_file(missing.as_ptr(), null(), 0, &mut sim) };
     assert_eq!(code, SOILCUT_ERR_INPUT);
     assert!(last_error(null()).contains("cannot read the case file"));

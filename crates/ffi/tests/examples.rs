@@ -1,8 +1,9 @@
-//! The C and C++ examples (examples/c/run.c, examples/cpp/run.cpp), built
-//! with the system's compilers (`cc` and `c++`, or `$CC` and `$CXX`)
-//! against the libraries cargo built for this test (the static one for C,
-//! the shared one for C++), run on cases/paper/original.toml cut short, and
-//! compared with `soilcut run`'s history.csv: every column, bit for bit.
+//! The C and C++ examples (crates/ffi/examples/c/run.c and
+//! crates/ffi/examples/cpp/run.cpp), built with the system's compilers
+//! (`cc` and `c++`, or `$CC` and `$CXX`) against the libraries cargo built
+//! for this test (the static one for C, the shared one for C++), run on
+//! cases/paper/original.toml cut short, and compared with `soilcut run`'s
+//! history.csv: every column, bit for bit.
 //!
 //! `soilcut run` writes history.csv through `soilcut_io::record_files`,
 //! which this test calls; with `SOILCUT_BIN` set to a built `soilcut`
@@ -150,7 +151,7 @@ fn build_c(program: &Path) {
         "-pedantic".into(),
         "-Werror".into(),
         format!("-I{}", s(&manifest().join("include"))),
-        s(&manifest().join("examples/c/run.c")),
+        s(&manifest().join("../../crates/ffi/examples/c/run.c")),
         s(&library_dir().join(static_library())),
         "-o".into(),
         s(program),
@@ -174,7 +175,7 @@ fn build_cpp(program: &Path) {
         "-pedantic".into(),
         "-Werror".into(),
         format!("-I{}", s(&manifest().join("include"))),
-        s(&manifest().join("examples/cpp/run.cpp")),
+        s(&manifest().join("../../crates/ffi/examples/cpp/run.cpp")),
         format!("-L{}", s(&lib)),
         "-lsoilcut_ffi".into(),
         format!("-Wl,-rpath,{}", s(&lib)),
