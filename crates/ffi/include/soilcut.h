@@ -430,9 +430,8 @@ int soilcut_snapshot(const struct SoilcutSimulation *sim, uint8_t *buf, size_t l
 
 /**
  * Creates a simulation from the `len` bytes of a snapshot
- * (`soilcut_snapshot`, or the Python package's `Simulation.snapshot`),
- * stored in `*out` as `soilcut_new_from_toml` does; it has no last step
- * until it steps.
+ * (`soilcut_snapshot`), stored in `*out` as `soilcut_new_from_toml` does;
+ * it has no last step until it steps.
  *
  * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
  * `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,

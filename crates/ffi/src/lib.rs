@@ -204,9 +204,22 @@ fn input(e: &InputError) -> Failure {
     Failure::new(SOILCUT_ERR_INPUT, e.to_string())
 }
 
-/// The simulation of the case `load` reads.
-fn simulation(load: impl FnOnce() -> Result<LoadedCase, Failure>) -> Result<Simulation, Failure> {
-    let loaded = load()?;
+/// The simulation of the case `read` reads from the string `arg` (named
+/// `name`) with the overrides `sets[0..n_sets]`.
+///
+/// # Safety
+/// As `overrides`, and `arg` is NULL or a NUL-terminated string.
+unsafe fn simulation(
+    (arg, name): (*const c_char, &str),
+    sets: *const *const c_char,
+    n_sets: usize,
+    read: impl FnOnce(&str, &[Override]) -> Result<LoadedCase, Failure>,
+) -> Result<Simulation, Failure> {
+    // SAFETY: by the caller's contract.
+    let arg = unsafe { text(arg, name) }?;
+    // SAFETY: by the caller's contract.
+    let overrides = unsafe { overrides(sets, n_sets) }?;
+    let loaded = read(arg, &overrides)?;
     Simulation::new(&loaded.case).map_err(|e| input(&e.into()))
 }
 
@@ -303,10 +316,8 @@ pub unsafe extern "C" fn soilcut_new_from_toml(
     // SAFETY: by the caller's contract.
     unsafe {
         create(out, || {
-            simulation(|| {
-                let text = self::text(text, "text")?;
-                let overrides = overrides(sets, n_sets)?;
-                parse_case(text, &overrides).map_err(|e| input(&e))
+            simulation((text, "text"), sets, n_sets, |text, overrides| {
+                parse_case(text, overrides).map_err(|e| input(&e))
             })
         })
     }
@@ -331,10 +342,8 @@ pub unsafe extern "C" fn soilcut_new_from_file(
     // SAFETY: by the caller's contract.
     unsafe {
         create(out, || {
-            simulation(|| {
-                let path = text(path, "path")?;
-                let overrides = overrides(sets, n_sets)?;
-                read_case(Path::new(path), &overrides)
+            simulation((path, "path"), sets, n_sets, |path, overrides| {
+                read_case(Path::new(path), overrides)
                     .map_err(|e| Failure::new(SOILCUT_ERR_INPUT, format!("{path}: {e}")))
             })
         })
