@@ -263,7 +263,7 @@ int soilcut_new_from_toml(const char *text,
 /**
  * Creates a simulation of the case file at `path` (UTF-8), with overrides
  * as in `soilcut_new_from_toml`. The error message starts with the path,
- * as `soilcut run`'s does: `cases/x.toml: blade.rake: ...`.
+ * as `soilcut run`'s does: `path/to/case.toml: blade.rake: ...`.
  *
  * Returns the codes of `soilcut_new_from_toml` (an unreadable file is
  * `SOILCUT_ERR_INPUT`).

@@ -325,7 +325,7 @@ pub unsafe extern "C" fn soilcut_new_from_toml(
 
 /// Creates a simulation of the case file at `path` (UTF-8), with overrides
 /// as in `soilcut_new_from_toml`. The error message starts with the path,
-/// as `soilcut run`'s does: `cases/x.toml: blade.rake: ...`.
+/// as `soilcut run`'s does: `path/to/case.toml: blade.rake: ...`.
 ///
 /// Returns the codes of `soilcut_new_from_toml` (an unreadable file is
 /// `SOILCUT_ERR_INPUT`).
@@ -772,12 +772,8 @@ mod tests {
 
     #[test]
     fn a_panic_on_a_handle_poisons_it_for_every_later_call() {
-        let text = std::fs::read_to_string(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../cases/paper/original.toml"
-        ))
-        .unwrap();
-        let sim = Simulation::new(&parse_case(&text, &[]).unwrap().case).unwrap();
+        let text = include_str!("../../../cases/paper/original.toml");
+        let sim = Simulation::new(&parse_case(text, &[]).unwrap().case).unwrap();
         let handle = Box::into_raw(Box::new(SoilcutSimulation::new(sim)));
         unsafe {
             let code = with_handle(handle, |_| panic!("inside the lock"));

@@ -199,11 +199,9 @@ fn a_bad_case_names_the_key_and_leaves_no_handle() {
 
 #[test]
 fn a_bad_case_file_names_the_path_and_the_key() {
-    let path = CString::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../cases/paper/original.toml"
-    ))
-    .unwrap();
+    let file =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/paper/original.toml");
+    let path = CString::new(file.to_str().unwrap()).unwrap();
     let set = CString::new("blade.rake=10").unwrap();
     let sets = [set.as_ptr()];
     let mut sim = null_mut();
