@@ -238,8 +238,14 @@ impl LoadedCase {
 
 /// Reads, overrides, resolves and validates a case file.
 pub fn read_case(path: &Path, overrides: &[Override]) -> Result<LoadedCase, InputError> {
-    let text = std::fs::read_to_string(path).map_err(InputError::Read)?;
-    parse_case(&text, overrides)
+    let bytes = std::fs::read(path).map_err(InputError::Read)?;
+    parse_case_bytes(&bytes, overrides)
+}
+
+/// [`read_case`] on the bytes of a case file, as read from disk: text that
+/// is not UTF-8 is a syntax error naming its line.
+pub fn parse_case_bytes(bytes: &[u8], overrides: &[Override]) -> Result<LoadedCase, InputError> {
+    parse_case(crate::error::utf8(bytes)?, overrides)
 }
 
 /// [`read_case`] on the text of a case file.
@@ -689,6 +695,22 @@ mod tests {
             assert_eq!(e.key, "name", "{bad:?}");
         }
         assert!(parse_case(ORIGINAL, &["name=\"a-1_b.c\"".parse().unwrap()]).is_ok());
+    }
+
+    #[test]
+    fn text_that_is_not_utf8_is_refused_at_its_line() {
+        let mut bytes = ORIGINAL.as_bytes().to_vec();
+        let at = ORIGINAL.find("travel").unwrap();
+        bytes[at + 2] = 0xe9; // a Latin-1 é
+        match parse_case_bytes(&bytes, &[]) {
+            Err(InputError::Syntax { line, message }) => {
+                assert_eq!(line, 14);
+                assert!(message.starts_with("byte 0xe9 at column 3 "), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
+        let text = parse_case_bytes(ORIGINAL.as_bytes(), &[]).unwrap();
+        assert_eq!(text, parse_case(ORIGINAL, &[]).unwrap());
     }
 
     #[test]

@@ -109,3 +109,21 @@ impl std::error::Error for OutputError {}
 pub(crate) fn one_line(text: &str) -> String {
     text.split_whitespace().collect::<Vec<_>>().join(" ")
 }
+
+/// The bytes of a file as text. A file that is not UTF-8 (a spreadsheet's
+/// Latin-1 export, a binary file given by mistake) is refused at the line
+/// of its first invalid byte, rather than as an unreadable file.
+pub(crate) fn utf8(bytes: &[u8]) -> Result<&str, InputError> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let valid = &bytes[..e.valid_up_to()];
+        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
+        let column = valid.len() - valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1) + 1;
+        InputError::Syntax {
+            line,
+            message: format!(
+                "byte 0x{:02x} at column {column} is not UTF-8 text: save the file as UTF-8",
+                bytes[e.valid_up_to()]
+            ),
+        }
+    })
+}
