@@ -29,7 +29,7 @@ pub enum InputError {
 
 impl InputError {
     pub(crate) fn key(key: &str, message: impl Into<String>) -> Self {
-        InputError::Key(CaseError::new(key, one_line(&message.into())))
+        InputError::Key(CaseError::new(&visible(key), one_line(&message.into())))
     }
 }
 
@@ -47,7 +47,9 @@ impl fmt::Display for InputError {
             }
             InputError::Syntax { line, message } => write!(f, "line {line}: {message}"),
             InputError::Key(e) => write!(f, "{e}"),
-            InputError::Override { text, message } => write!(f, "--set {text}: {message}"),
+            InputError::Override { text, message } => {
+                write!(f, "--set {}: {message}", visible(text))
+            }
         }
     }
 }
@@ -104,6 +106,23 @@ impl fmt::Display for OutputError {
 }
 
 impl std::error::Error for OutputError {}
+
+/// Text the user gave (a `--set` argument, a key), with its control
+/// characters escaped (`\n`, `\t`, `\u{1b}`): the message stays one line
+/// and shows what was given, where collapsing would hide it. Found by
+/// fuzzing (docs/fuzzing.md): an argument with a line break broke the
+/// message in two.
+pub(crate) fn visible(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_debug().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
 
 /// Collapses line breaks, so that every error prints as one line.
 pub(crate) fn one_line(text: &str) -> String {
