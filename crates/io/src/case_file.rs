@@ -275,13 +275,15 @@ fn syntax(text: &str, e: &toml::de::Error) -> InputError {
 fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
     let path = e.path().to_string();
     let message = e.inner().message();
+    // The path ends with the field itself where serde had reached it.
     let child = |field: &str| {
-        if path == "." {
-            field.to_string()
-        } else if path.ends_with(&format!(".{field}")) || path == field {
-            path.clone()
+        let written = toml_key(field);
+        if path == "." || path == field {
+            written
+        } else if let Some(parent) = path.strip_suffix(&format!(".{field}")) {
+            format!("{parent}.{written}")
         } else {
-            format!("{path}.{field}")
+            format!("{path}.{written}")
         }
     };
     if let Some(field) = quoted_after(message, "missing field `") {
@@ -297,6 +299,18 @@ fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
     }
     let key = if path == "." { "case" } else { &path };
     InputError::key(key, message)
+}
+
+/// A key as it is written in TOML: bare if it can be, else quoted, so
+/// that an empty key or one with spaces is still named (found by fuzzing,
+/// docs/fuzzing.md: `"" = 1` was reported as ": unknown key").
+fn toml_key(key: &str) -> String {
+    let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
+    if !key.is_empty() && key.chars().all(bare) {
+        key.to_string()
+    } else {
+        format!("{key:?}")
+    }
 }
 
 fn quoted_after<'a>(message: &'a str, prefix: &str) -> Option<&'a str> {
@@ -632,6 +646,10 @@ mod tests {
         assert_eq!(e.key, "colour");
         let e = key_error(&ORIGINAL.replace("name = \"base\"\n", ""), &[]);
         assert_eq!(e.key, "name");
+        // Keys that cannot be written bare are named as TOML quotes them.
+        assert_eq!(key_error(&format!("\"\" = 1\n{ORIGINAL}"), &[]).key, "\"\"");
+        let e = key_error(&ORIGINAL.replace("[run]", "[run]\n\"a b\" = 1"), &[]);
+        assert_eq!(e.key, "run.\"a b\"");
     }
 
     #[test]
