@@ -32,6 +32,7 @@ RATIOS = (1.0, 3.0)
 MEMBERS = 7
 DEPTH = 20.0  # mm, the DEM's d
 TRAVEL = 3  # in d
+STATIONS = (0.25, 0.5, 1.0)  # x ahead of the face of the DEM's lateral profiles (d)
 
 
 def run(soilcut, out, ratio, wall_mm):
@@ -58,24 +59,34 @@ def spread(values):
     return mean, sd
 
 
-def member_figures(folder):
+def member_figures(folder, width):
     """Draft window means per blade (case units), and the pile at the end."""
     h = rows(folder / "history.csv")
     windows = []
     for k in range(TRAVEL):
         sel = [float(r["force_h"]) for r in h if k <= float(r["u_over_d"]) < k + 1]
         windows.append(sum(sel) / len(sel))
-    last = h[-1]
-    met = float(last["mass"]) + float(last["mass_spilled"])
     p = rows(folder / "profile.csv")
     face = float(p[0]["x"])
-    near = min(p, key=lambda r: abs(float(r["x"]) - face - 0.25 * DEPTH))
-    return {
+
+    def ahead(r):
+        return (float(r["x"]) - face) / DEPTH
+
+    def crest(x):
+        return float(min(p, key=lambda r: abs(ahead(r) - x))["ridge_height"]) / DEPTH
+
+    near = [float(r["y"]) / DEPTH for r in p if ahead(r) < 1.0]
+    figures = {
         "windows": windows,
-        "centre": float(near["y"]) / DEPTH,
-        "crest": float(near["ridge_height"]) / DEPTH,
-        "spilled": float(last["mass_spilled"]) / met,
+        "centre_mean_height_0_1d": sum(near) / len(near),
+        "pile_front_d": max(ahead(r) for r in p if float(r["y"]) > 0.02 * DEPTH),
     }
+    if width:
+        # Case units: γ0 = 1; the swept soil is γ0 d u w.
+        swept = DEPTH * TRAVEL * DEPTH * width
+        figures["spilled_share"] = float(h[-1]["mass_spilled"]) / swept
+        figures.update({f"crest_at_{x:g}d": crest(x) for x in STATIONS})
+    return figures
 
 
 def main():
@@ -88,41 +99,48 @@ def main():
     result = {}
     for ratio in RATIOS:
         key = f"w{ratio:g}"
-        d = dem[key]
-        gamma = d["unit_weight_N_per_m3"]
-        wall_mm = 1000.0 * d["end_wall_m"]
+        if key not in dem:
+            continue
+        d = dem[key]["seed_14"]
+        gamma = d["gamma0_N_per_m3"]
         w_mm = ratio * DEPTH
         # Case units: γ0 = 1, mm; per blade γ0·mm³ → N.
         to_newton = gamma * 1e-9
-        norm = gamma * (DEPTH * 1e-3) ** 2 * (w_mm * 1e-3)
-        members = [member_figures(f) for f in run(a.soilcut, out, ratio, wall_mm)]
-        plane = [member_figures(f) for f in run(a.soilcut, out, None, wall_mm)]
-        rows_out = []
+        members = run(a.soilcut, out, ratio, 1000.0 * d["end_wall_x_m"])
+        sims = [member_figures(f, w_mm) for f in members]
+        plane = [member_figures(f, None) for f in run(a.soilcut, out, None, 1000.0 * d["end_wall_x_m"])]
+        table = []
         for k in range(TRAVEL):
-            sim = spread([m["windows"][k] * to_newton for m in members])
+            sim = spread([m["windows"][k] * to_newton for m in sims])
             ps = spread([m["windows"][k] * w_mm * to_newton for m in plane])
-            dw = d["windows"].get(f"window_{k}")
-            rows_out.append(
+            dw = d.get(f"window_{k}")
+            table.append(
                 {
                     "window": [k, k + 1],
                     "soilcut_N": sim,
-                    "soilcut_norm": [sim[0] / norm, sim[1] / norm],
+                    "soilcut_norm": [v / d["norm_N"] for v in sim],
                     "plane_strain_times_w_N": ps,
-                    "dem_N": None if dw is None else [dw["mean_N"], dw["std_N"]],
-                    "ratio": None if dw is None else sim[0] / dw["mean_N"],
+                    "dem_N": None if dw is None else [dw["draft_N"], dw["draft_sd_N"]],
+                    "dem_norm": None if dw is None else dw["draft_norm"],
+                    "dem_wall_share": None if dw is None else dw["wall_share"],
+                    "ratio": None if dw is None else sim[0] / dw["draft_N"],
                 }
             )
+        pile = d["pile"]["u_3d"]
+        soil_pile = {k: spread([m[k] for m in sims]) for k in sims[0] if k != "windows"}
         result[key] = {
             "unit_weight_N_per_m3": gamma,
             "width_mm": w_mm,
-            "end_wall_mm": wall_mm,
-            "windows": rows_out,
-            "soilcut_pile": {
-                k: spread([m[k] for m in members]) for k in ("centre", "crest", "spilled")
+            "windows": table,
+            "soilcut_pile": soil_pile,
+            "dem_pile": {
+                "centre_mean_height_0_1d": pile["centre_mean_height_0_1d"],
+                "pile_front_d": pile["centre_pile_front_x_d"],
+                "spilled_share": pile["spilled"]["outside_share_incl_behind"],
+                **{f"crest_at_{x:g}d": pile[f"ridge_at_{x:g}d"]["peak_height_d"] for x in STATIONS},
             },
-            "dem_pile": d.get("pile"),
         }
-        for r in rows_out:
+        for r in table:
             dem_cell = "–" if r["dem_N"] is None else f"{r['dem_N'][0]:.2f} ± {r['dem_N'][1]:.2f}"
             ratio_cell = "–" if r["ratio"] is None else f"{r['ratio']:.2f}"
             print(
@@ -130,6 +148,8 @@ def main():
                 f"| {r['soilcut_N'][0]:.2f} ± {r['soilcut_N'][1]:.2f} "
                 f"| {r['plane_strain_times_w_N'][0]:.2f} | {dem_cell} | {ratio_cell} |"
             )
+        for k, v in result[key]["dem_pile"].items():
+            print(f"| w/d = {ratio:g} | {k} | {soil_pile[k][0]:.2f} ± {soil_pile[k][1]:.2f} | {v:.2f} |")
     (HERE / "results" / "compare3d.json").write_text(json.dumps(result, indent=1) + "\n")
 
 

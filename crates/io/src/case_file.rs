@@ -251,8 +251,14 @@ impl LoadedCase {
 
 /// Reads, overrides, resolves and validates a case file.
 pub fn read_case(path: &Path, overrides: &[Override]) -> Result<LoadedCase, InputError> {
-    let text = std::fs::read_to_string(path).map_err(InputError::Read)?;
-    parse_case(&text, overrides)
+    let bytes = std::fs::read(path).map_err(InputError::Read)?;
+    parse_case_bytes(&bytes, overrides)
+}
+
+/// [`read_case`] on the bytes of a case file, as read from disk: text that
+/// is not UTF-8 is a syntax error naming its line.
+pub fn parse_case_bytes(bytes: &[u8], overrides: &[Override]) -> Result<LoadedCase, InputError> {
+    parse_case(crate::error::utf8(bytes)?, overrides)
 }
 
 /// [`read_case`] on the text of a case file.
@@ -282,13 +288,15 @@ fn syntax(text: &str, e: &toml::de::Error) -> InputError {
 fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
     let path = e.path().to_string();
     let message = e.inner().message();
+    // The path ends with the field itself where serde had reached it.
     let child = |field: &str| {
-        if path == "." {
-            field.to_string()
-        } else if path.ends_with(&format!(".{field}")) || path == field {
-            path.clone()
+        let written = toml_key(field);
+        if path == "." || path == field {
+            written
+        } else if let Some(parent) = path.strip_suffix(&format!(".{field}")) {
+            format!("{parent}.{written}")
         } else {
-            format!("{path}.{field}")
+            format!("{path}.{written}")
         }
     };
     if let Some(field) = quoted_after(message, "missing field `") {
@@ -304,6 +312,18 @@ fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
     }
     let key = if path == "." { "case" } else { &path };
     InputError::key(key, message)
+}
+
+/// A key as it is written in TOML: bare if it can be, else quoted, so
+/// that an empty key or one with spaces is still named (found by fuzzing,
+/// docs/fuzzing.md: `"" = 1` was reported as ": unknown key").
+fn toml_key(key: &str) -> String {
+    let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
+    if !key.is_empty() && key.chars().all(bare) {
+        key.to_string()
+    } else {
+        format!("{key:?}")
+    }
 }
 
 fn quoted_after<'a>(message: &'a str, prefix: &str) -> Option<&'a str> {
@@ -653,6 +673,10 @@ mod tests {
         assert_eq!(e.key, "colour");
         let e = key_error(&ORIGINAL.replace("name = \"base\"\n", ""), &[]);
         assert_eq!(e.key, "name");
+        // Keys that cannot be written bare are named as TOML quotes them.
+        assert_eq!(key_error(&format!("\"\" = 1\n{ORIGINAL}"), &[]).key, "\"\"");
+        let e = key_error(&ORIGINAL.replace("[run]", "[run]\n\"a b\" = 1"), &[]);
+        assert_eq!(e.key, "run.\"a b\"");
     }
 
     #[test]
@@ -716,6 +740,22 @@ mod tests {
             assert_eq!(e.key, "name", "{bad:?}");
         }
         assert!(parse_case(ORIGINAL, &["name=\"a-1_b.c\"".parse().unwrap()]).is_ok());
+    }
+
+    #[test]
+    fn text_that_is_not_utf8_is_refused_at_its_line() {
+        let mut bytes = ORIGINAL.as_bytes().to_vec();
+        let at = ORIGINAL.find("travel").unwrap();
+        bytes[at + 2] = 0xe9; // a Latin-1 é
+        match parse_case_bytes(&bytes, &[]) {
+            Err(InputError::Syntax { line, message }) => {
+                assert_eq!(line, 14);
+                assert!(message.starts_with("byte 0xe9 at column 3 "), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
+        let text = parse_case_bytes(ORIGINAL.as_bytes(), &[]).unwrap();
+        assert_eq!(text, parse_case(ORIGINAL, &[]).unwrap());
     }
 
     #[test]

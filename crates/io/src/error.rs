@@ -29,7 +29,7 @@ pub enum InputError {
 
 impl InputError {
     pub(crate) fn key(key: &str, message: impl Into<String>) -> Self {
-        InputError::Key(CaseError::new(key, one_line(&message.into())))
+        InputError::Key(CaseError::new(&visible(key), one_line(&message.into())))
     }
 }
 
@@ -47,7 +47,9 @@ impl fmt::Display for InputError {
             }
             InputError::Syntax { line, message } => write!(f, "line {line}: {message}"),
             InputError::Key(e) => write!(f, "{e}"),
-            InputError::Override { text, message } => write!(f, "--set {text}: {message}"),
+            InputError::Override { text, message } => {
+                write!(f, "--set {}: {message}", visible(text))
+            }
         }
     }
 }
@@ -105,7 +107,42 @@ impl fmt::Display for OutputError {
 
 impl std::error::Error for OutputError {}
 
+/// Text the user gave (a `--set` argument, a key), with its control
+/// characters escaped (`\n`, `\t`, `\u{1b}`): the message stays one line
+/// and shows what was given, where collapsing would hide it. Found by
+/// fuzzing (docs/fuzzing.md): an argument with a line break broke the
+/// message in two.
+pub(crate) fn visible(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_debug().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
 /// Collapses line breaks, so that every error prints as one line.
 pub(crate) fn one_line(text: &str) -> String {
     text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The bytes of a file as text. A file that is not UTF-8 (a spreadsheet's
+/// Latin-1 export, a binary file given by mistake) is refused at the line
+/// of its first invalid byte, rather than as an unreadable file.
+pub(crate) fn utf8(bytes: &[u8]) -> Result<&str, InputError> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let valid = &bytes[..e.valid_up_to()];
+        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
+        let column = valid.len() - valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1) + 1;
+        InputError::Syntax {
+            line,
+            message: format!(
+                "byte 0x{:02x} at column {column} is not UTF-8 text: save the file as UTF-8",
+                bytes[e.valid_up_to()]
+            ),
+        }
+    })
 }

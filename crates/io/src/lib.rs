@@ -28,7 +28,7 @@ mod overrides;
 mod pictures;
 mod record;
 
-pub use case_file::{parse_case, read_case, LoadedCase};
+pub use case_file::{parse_case, parse_case_bytes, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
 pub use finished::{
     frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
@@ -38,7 +38,8 @@ pub use landscape::{
     landscape_at, landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
 };
 pub use measured::{
-    parse_measured, parse_measured_curve, read_measured, read_measured_curve, MeasuredCurve,
+    parse_measured, parse_measured_bytes, parse_measured_curve, read_measured, read_measured_curve,
+    MeasuredCurve,
 };
 pub use output::{
     check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,

@@ -28,8 +28,14 @@ pub fn read_measured(path: &Path) -> Result<Vec<(f64, f64)>, InputError> {
 
 /// Reads a measured curve with its weights.
 pub fn read_measured_curve(path: &Path) -> Result<MeasuredCurve, InputError> {
-    let text = std::fs::read_to_string(path).map_err(InputError::Read)?;
-    parse_measured_curve(&text)
+    let bytes = std::fs::read(path).map_err(InputError::Read)?;
+    parse_measured_bytes(&bytes)
+}
+
+/// [`read_measured_curve`] on the bytes of the file, as read from disk:
+/// text that is not UTF-8 is a syntax error naming its line.
+pub fn parse_measured_bytes(bytes: &[u8]) -> Result<MeasuredCurve, InputError> {
+    parse_measured_curve(crate::error::utf8(bytes)?)
 }
 
 /// [`read_measured`] on the text of the file.
@@ -207,6 +213,13 @@ mod tests {
         assert_eq!(error_of("").0, 1);
         assert_eq!(error_of("u,force,weight\n0,1,1\n1,2,-1\n").0, 3);
         assert_eq!(error_of("u,force,weight\n0,1,0\n1,2,0\n").0, 1);
+        match parse_measured_bytes(b"u,force\n0,1\n1,\xff\n") {
+            Err(InputError::Syntax { line, message }) => {
+                assert_eq!(line, 3);
+                assert!(message.contains("0xff at column 3"), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
         let (line, message) = error_of("u,force\n0,1\n\"1,2\n");
         assert!(line >= 3, "{line}: {message}");
     }

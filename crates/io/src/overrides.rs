@@ -120,4 +120,29 @@ mod tests {
             "{e}"
         );
     }
+
+    #[test]
+    fn control_characters_are_shown_escaped_on_one_line() {
+        let e = "run.incr\nement".parse::<Override>().unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "--set run.incr\\nement: expected key.path=value"
+        );
+        let mut t = toml::Table::new();
+        "a\tb.c=1"
+            .parse::<Override>()
+            .unwrap()
+            .apply(&mut t)
+            .unwrap();
+        let e = "a\tb.c.d=1"
+            .parse::<Override>()
+            .unwrap()
+            .apply(&mut t)
+            .unwrap_err();
+        assert!(e.to_string().starts_with("a\\tb.c.d: cannot set"), "{e}");
+        assert_eq!(
+            crate::parse_case("[\"x\\ny\"]\n", &[]).unwrap_err().to_string(),
+            "\"x\\ny\": unknown key (expected one of: `name`, `title`, `model`, `blade`, `soil`, `run`, `bin`, `choices`)"
+        );
+    }
 }

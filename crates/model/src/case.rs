@@ -246,6 +246,9 @@ pub struct Case {
 /// guard: five f64 per node).
 pub const MAX_NODES: f64 = 5.0e7;
 
+/// The narrowest blade, as a fraction of the deepest tip depth.
+pub const THINNEST_WIDTH: f64 = 1e-6;
+
 /// Depths of flat ground ahead of the blade's final position at the start;
 /// the domain grows beyond that only when the search needs it.
 pub const INITIAL_REACH_DEPTHS: f64 = 8.0;
@@ -419,6 +422,19 @@ impl Case {
         self.validate_depth_path()?;
         if let Some(width) = self.blade.width {
             positive("blade.width", width)?;
+            // The search compares P / w: the side crescents' force over a
+            // vanishing width overflows to an infinite force (found by
+            // fuzzing, docs/fuzzing.md: w = 1e-310). A millionth of the
+            // depth is far below any tine (the model warns below d/6).
+            let least = THINNEST_WIDTH * self.deepest();
+            if width < least {
+                return Err(CaseError::new(
+                    "blade.width",
+                    format!(
+                        "must be >= {THINNEST_WIDTH:e} x the deepest tip depth = {least} (got {width})"
+                    ),
+                ));
+            }
         }
         // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
         // search's bounds rely on that.

@@ -51,6 +51,9 @@ pub struct Surface {
     /// Weight of the flat ground appended by `grow`, so that `mass` counts
     /// only the ground that existed at the start.
     pub(crate) appended_mass: f64,
+    /// Area of the same (differs from its weight / γ0 where the old last
+    /// node had a γ of its own).
+    pub(crate) appended_area: f64,
 }
 
 impl Surface {
@@ -79,6 +82,7 @@ impl Surface {
             pristine_from: 0,
             trench_mass: 0.0,
             appended_mass: 0.0,
+            appended_area: 0.0,
         }
     }
 
@@ -125,14 +129,29 @@ impl Surface {
     /// Exact: the search only grows the domain when its proven bound says a
     /// candidate there could still win (see `search`).
     pub fn grow(&mut self, nodes: usize) {
+        if nodes == 0 {
+            return;
+        }
+        // The old last node's column goes from half weight (M24) to whole.
+        // Its other half is no ground that existed at the start: flat
+        // ground as much as an appended node's, and on ground that soil has
+        // reached (y ≠ 0, γ ≠ γ0) the soil on it, which its half weight
+        // already counts. Found by fuzzing (docs/fuzzing.md): a slip line
+        // at 75° friction reached the end, and the growth gained that half.
+        let last = self.len() - 1;
+        let half = 0.5 * self.scheme.spacing * (self.height[last] - self.floor);
+        self.appended_area += half - 0.5 * self.scheme.spacing * (0.0 - self.floor);
+        self.appended_mass += half * self.unit_weight[last]
+            - 0.5 * self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing;
         let n = self.len() + nodes;
         self.height.resize(n, 0.0);
         self.accumulated_shear.resize(n, 0.0);
         self.unit_weight.resize(n, self.ground_unit_weight);
         self.friction.resize(n, self.fresh_angles.0);
         self.dilation.resize(n, self.fresh_angles.1);
-        self.appended_mass +=
-            self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing * nodes as f64;
+        let appended = (0.0 - self.floor) * self.scheme.spacing * nodes as f64;
+        self.appended_area += appended;
+        self.appended_mass += self.ground_unit_weight * appended;
     }
 
     /// Records that nodes before `end` may have changed.
@@ -157,8 +176,8 @@ impl Surface {
     /// Area of soil in front of the blade at node `first` (above the floor,
     /// less appended ground).
     pub fn area(&self, first: usize) -> f64 {
-        let appended = self.appended_mass / self.ground_unit_weight;
-        compensated_sum((first..self.len()).map(|i| self.column_area(i, first))) - appended
+        compensated_sum((first..self.len()).map(|i| self.column_area(i, first)))
+            - self.appended_area
     }
 
     /// Weight of soil in front of the blade at node `first` and of the soil
@@ -223,6 +242,26 @@ mod tests {
         s.grow(37);
         assert!((s.mass(0) - m0).abs() < 1e-12 * m0);
         assert!((s.area(0) - 20.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn growing_past_soil_at_the_end_keeps_mass() {
+        let scheme = Scheme {
+            spacing: 0.1,
+            increment: 0.1,
+            increments_per_node: 1,
+        };
+        let mut s = Surface::flat(scheme, 2.0, 1.5, (0.5, 0.0), 101);
+        // Soil that has reached the last node, looser than the ground.
+        s.height[99] = 0.02;
+        s.height[100] = 0.01;
+        s.unit_weight[99] = 1.2;
+        s.unit_weight[100] = 1.3;
+        s.disturb(101);
+        let (m0, a0) = (s.mass(0), s.area(0));
+        s.grow(37);
+        assert!((s.mass(0) - m0).abs() < 1e-12 * m0, "{} {m0}", s.mass(0));
+        assert!((s.area(0) - a0).abs() < 1e-12 * a0, "{} {a0}", s.area(0));
     }
 
     #[test]

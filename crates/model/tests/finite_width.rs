@@ -155,3 +155,19 @@ fn depth_paths_and_the_bin_keep_the_spilled_soil() {
         assert!(drift.abs() < 1e-12, "drift {drift:e}");
     }
 }
+
+/// A blade a millionth of the depth wide is the narrowest accepted: the
+/// search's P / w would overflow to an infinite force on a vanishing width
+/// (found by fuzzing: w = 1e-310 gave force = inf).
+#[test]
+fn vanishing_widths_are_refused_naming_the_key() {
+    let mut case = tine(90.0, 0.0, 1e-6, 50.0);
+    let force = first_force(&case);
+    assert!(force.is_finite() && force > 0.0, "{force}");
+    for width in [0.99e-6, 1e-310] {
+        case.blade.width = Some(width);
+        let e = Simulation::new(&case).unwrap_err();
+        assert_eq!(e.key, "blade.width");
+        assert!(e.message.contains("deepest tip depth = 0.000001"), "{e}");
+    }
+}

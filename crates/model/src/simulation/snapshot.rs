@@ -170,6 +170,7 @@ impl Simulation {
         w.usize(s.pristine_from);
         w.f64(s.trench_mass);
         w.f64(s.appended_mass);
+        w.f64(s.appended_area);
         for v in [
             &s.height,
             &s.accumulated_shear,
@@ -197,6 +198,7 @@ impl Simulation {
         let pristine_from = r.usize("surface")?;
         let trench_mass = finite("trench mass", r.f64("surface")?)?;
         let appended_mass = finite("appended mass", r.f64("surface")?)?;
+        let appended_area = finite("appended area", r.f64("surface")?)?;
         let mut column = |what| r.f64s(what).and_then(|v| finite_all(what, v));
         let height = column("surface heights")?;
         let accumulated_shear = column("accumulated shear")?;
@@ -240,6 +242,7 @@ impl Simulation {
         s.pristine_from = pristine_from;
         s.trench_mass = trench_mass;
         s.appended_mass = appended_mass;
+        s.appended_area = appended_area;
         s.height = height;
         s.accumulated_shear = accumulated_shear;
         s.unit_weight = unit_weight;
