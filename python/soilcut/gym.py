@@ -163,15 +163,24 @@ class CuttingEnv(gymnasium.Env):
         max_rate: float = 0.5,
         depth_range: tuple[float, float] = (0.4, 1.0),
         start_depth: tuple[float, float] = (0.5, 1.0),
-        force_limit: float = 5.0,
+        force_limit: float = 12.0,
         overload_penalty: float = 1.0,
         failure_penalty: float = 1.0,
         offsets: Sequence[float] = (0.25, 0.5, 1.0, 1.5, 2.0, 3.0),
     ) -> None:
         """The environment for ``case`` (a vertical blade; by default
-        :func:`default_case`). Lengths are in units of d = ``blade.depth``,
-        ``force_limit`` in units of F0 = γ0 d² w. Raises ``ValueError`` for
-        an inclined blade or arguments out of range."""
+        :func:`default_case`). Lengths are in units of d = ``blade.depth``:
+        ``travel`` (the episode's; None: the case's ``run.travel``),
+        ``step_travel``, ``depth_range`` (the depths the tip may be
+        steered to, at most 1: the simulation holds ground down to d),
+        ``start_depth`` (the range reset draws from) and ``offsets`` (where
+        the ground ahead of the face is observed); ``max_rate`` bounds the
+        action, dd/du; ``force_limit`` is in units of F0 = γ0 d² w;
+        ``overload_penalty`` and ``failure_penalty`` scale the reward's
+        penalties. Raises ``ValueError`` for an inclined blade or arguments
+        out of range, :class:`soilcut.CaseError` (a ``ValueError``) for a
+        ``depth_range`` too shallow for the case (its lower end must exceed
+        ``run.increment`` and the band width)."""
         self.case = default_case() if case is None else case
         resolved = self.case.resolved()
         if resolved["blade.rake"] != 90.0:
@@ -194,6 +203,7 @@ class CuttingEnv(gymnasium.Env):
         if not (max_rate > 0 and self.step_travel > 0 and self.travel > 0 and force_limit > 0):
             raise ValueError("max_rate, step_travel, travel and force_limit must be > 0")
         self.depth_range = (lo * self.d, hi * self.d)
+        self.case.set("blade.depth_path", [[0.0, lo * self.d]])  # validates the shallowest
         self.start_depth = start_depth
         self.force_limit = force_limit * self.f0
         self.overload_penalty = overload_penalty
@@ -224,9 +234,9 @@ class CuttingEnv(gymnasium.Env):
         lo, hi = self.depth_range
         if not lo <= depth <= hi:
             raise ValueError(f"options['depth'] = {depth / self.d} is outside depth_range")
-        changes: dict[str, Any] = {"run.travel": self.travel}
-        if depth != self.d:
-            changes["blade.depth_path"] = [[0.0, depth]]
+        # The start depth replaces any depth path of the case: the actions
+        # steer the tip from there.
+        changes: dict[str, Any] = {"run.travel": self.travel, "blade.depth_path": [[0.0, depth]]}
         if options.get("perturb", True):
             key, value = self._perturbation(k)
             changes[key] = value

@@ -167,6 +167,8 @@ def test_bad_arguments_raise():
         CuttingEnv(short().case.set("blade.rake", 60.0))
     with pytest.raises(ValueError, match="depth_range"):
         short(depth_range=(0.5, 1.5))
+    with pytest.raises(soilcut.CaseError, match="shallowest"):
+        short(depth_range=(0.01, 1.0))  # 1.5 mm, less than run.increment
     env = short()
     with pytest.raises(RuntimeError, match="reset"):
         env.step(np.array([0.0]))
