@@ -16,6 +16,8 @@
     branch = copy.deepcopy(sim)           # or Simulation.from_snapshot(sim.snapshot())
     branch.advance_to(80.0, depth=15.0)   # to u = 80, the tip linearly to 15
 
+    import soilcut.gym                    # gymnasium's soilcut/Cutting-v0 (optional)
+
 Lengths are in the case's unit (the paper's cases use mm), angles in
 degrees, forces per unit width.
 """
