@@ -1,5 +1,6 @@
 //! Every shipped case, run in full as shipped, conserves mass (∫γ dA of the
-//! ground that existed at the start) to 1e-9 relative.
+//! ground that existed at the start, with the soil spilled beside a blade
+//! of finite width) to 1e-9 relative.
 
 use soilcut_io::read_case;
 use soilcut_model::Simulation;
@@ -21,7 +22,9 @@ fn every_shipped_case_conserves_mass() {
             let case = read_case(&file, &[]).unwrap().case;
             let mut sim = Simulation::new(&case).unwrap();
             sim.run_to_end(|_| {}).unwrap();
-            let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+            // A blade of finite width spills soil into side heaps (docs/model.md §16.5).
+            let held = sim.mass() + sim.mass_spilled();
+            let drift = (held - sim.initial_mass()) / sim.initial_mass();
             assert!(
                 drift.abs() < 1e-9,
                 "{}: mass drift {drift:e}",
