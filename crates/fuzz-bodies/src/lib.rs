@@ -14,14 +14,16 @@
 //!
 //! The cargo-fuzz targets in `fuzz/fuzz_targets/` call these functions on
 //! nightly; `tests/replay.rs` calls them on every file of the committed
-//! corpus (`fuzz/corpus/<target>/`) in the stable test command. A separate
+//! corpus (`fuzz/corpus/<target>/`) and of the crashes found
+//! (`fuzz/regressions/<target>/`) in the stable test command. A separate
 //! crate rather than a feature of `soilcut-io`: the stable workspace build
 //! and test use it with no flag, and the readers' public API carries
 //! nothing for fuzzing.
 //!
-//! The C ABI's target (`soilcut-ffi`, issue 22) is to be added here as
-//! `ffi_calls`, with its target in `fuzz/fuzz_targets/ffi_calls.rs` and its
-//! corpus in `fuzz/corpus/ffi_calls/`.
+//! The C ABI's target (the crate `soilcut-ffi` of issue 22, not written
+//! yet) is to be added here as a body `ffi_calls`, with its cargo-fuzz
+//! target beside the others in `fuzz/fuzz_targets/`, its corpus beside
+//! theirs in `fuzz/corpus/` and a test in `tests/replay.rs`.
 
 use soilcut_io::{
     parse_case, parse_case_bytes, parse_measured_bytes, parse_measured_curve, parse_value,

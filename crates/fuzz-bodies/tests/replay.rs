@@ -1,25 +1,34 @@
 //! The committed fuzz corpus, replayed on stable: every file of
-//! `fuzz/corpus/<target>/` through its target's body, as `cargo fuzz run`
-//! would feed it. Each crash the fuzzer found is in the corpus, so this
-//! guards its fix.
+//! `fuzz/corpus/<target>/` (minimised by `cargo fuzz cmin`) and of
+//! `fuzz/regressions/<target>/` (each crash the fuzzer found, kept apart so
+//! that no minimisation drops it) through its target's body, as
+//! `cargo fuzz run` would feed it.
 
 use soilcut_fuzz_bodies::{case_toml, measured_csv, set_override, Outcome};
 use std::collections::BTreeSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 
-/// Replays the corpus of `target` and returns the outcomes it reached.
-fn replay(target: &str, body: fn(&[u8]) -> Outcome) -> BTreeSet<Outcome> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../fuzz/corpus")
-        .join(target);
-    let mut files: Vec<_> = std::fs::read_dir(&dir)
+fn inputs(dir: &Path) -> Vec<std::path::PathBuf> {
+    let mut files: Vec<_> = std::fs::read_dir(dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.unwrap().path())
         .collect();
     files.sort();
+    files
+}
+
+/// Replays the corpus of `target` and returns the outcomes it reached.
+fn replay(target: &str, body: fn(&[u8]) -> Outcome) -> BTreeSet<Outcome> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz");
+    let corpus = inputs(&root.join("corpus").join(target));
     // A corpus lost or emptied would pass silently otherwise.
-    assert!(files.len() >= 10, "{target}: only {} inputs", files.len());
+    assert!(corpus.len() >= 10, "{target}: only {} inputs", corpus.len());
+    let regressions = root.join("regressions").join(target);
+    let mut files = corpus;
+    if regressions.exists() {
+        files.extend(inputs(&regressions));
+    }
     let mut reached = BTreeSet::new();
     let mut failed = Vec::new();
     for file in &files {
