@@ -3,7 +3,10 @@
 Run (from the repository root):
     nice -n 10 yade -n -j1 -x validation/dem3d/cut3d.py W [--seed S] [--ratio R] [--speed V] [--travel T]
 W: the blade width over its depth, w/d (1 or 3); travel default 3 d, speed
-0.04 m/s (grains.py's options).
+0.04 m/s (grains.py's options); --dt-factor F: the time step over
+utils.PWaveTimeStep() (default 0.5 as in 2D; the campaign ran 0.7);
+--half-width H: cut the bed's half-bin down to H d wide (the grains beyond
+erased, the side wall moved in, RELAX steps of relaxation before the cut).
 
 The blade: a rigid box 2 mm thick, its soil-side face in the plane x = 0 at the
 start, from the tip (depth d = 20 mm below the bed's level) to 3.5 d above
@@ -42,6 +45,7 @@ RECORD = 0.02  # force record interval (in d)
 FIELD = 0.5  # grain field record interval (in d)
 FACE_COS = math.cos(math.radians(45.0))
 SIDES = 2.0  # the half-bin's forces doubled to the whole blade and bin
+RELAX = 500  # steps of relaxation after trimming the bed to a narrower half-bin (--half-width)
 DT_FACTOR = 0.5  # time step over utils.PWaveTimeStep() (2D campaign: 0.5); --dt-factor F
 
 
@@ -59,6 +63,7 @@ class Recorder:
         self.u0 = blade.state.pos[0]
         self.checked = 0
         self.iter0 = O.iter
+        self.meta = None  # the run's figures, written with every field record
 
     def travel(self):
         return self.blade.state.pos[0] - self.u0
@@ -100,7 +105,10 @@ class Recorder:
             self.sum = [0.0] * 5
             self.count = 0
             self.next_force += RECORD
-            if len(self.forces) % 5 == 0:
+            if len(self.forces) % 5 == 0:  # every 0.1 d: the record so far on disk
+                self.write_forces()
+                if self.meta is not None:
+                    self.write_meta(False)
                 print('  u/d = %.2f  draft %.3f N  kinetic %.3g J  unbalanced %.3g  %.1f steps/s' % (
                     s, self.forces[-1][1], utils.kineticEnergy(), utils.unbalancedForce(),
                     (O.iter - self.iter0) / (time.time() - self.start)), flush=True)
@@ -117,11 +125,23 @@ class Recorder:
         print('u/d = %.2f  iter %d  wall %.0f s  draft %.2f N  end wall %.2f N' % (
             s, O.iter, time.time() - self.start, last[1], last[5]), flush=True)
         self.write()
+        if self.meta is not None:
+            self.write_meta(False)
+
+    def write_meta(self, complete):
+        m = dict(self.meta, travel_reached_m=self.travel(), complete=complete,
+                 wall_time_s=time.time() - self.start)
+        with open(g.path('results', 'cuts', self.run + '.json'), 'w') as f:
+            json.dump(m, f, indent=1)
+        return m
+
+    def write_forces(self):
+        g.write_csv(g.path('results', 'cuts', self.run) + '_forces.csv',
+                    ['u_over_d', 'draft_N', 'vertical_N', 'draft_all_N', 'vertical_all_N', 'wall_N'],
+                    self.forces)
 
     def write(self):
-        base = g.path('results', 'cuts', self.run)
-        g.write_csv(base + '_forces.csv', ['u_over_d', 'draft_N', 'vertical_N', 'draft_all_N',
-                                           'vertical_all_N', 'wall_N'], self.forces)
+        self.write_forces()
         radii = np.array([O.bodies[i].shape.radius if O.bodies[i] is not None else np.nan
                           for i in self.ids])
         np.savez_compressed(g.path('fields', self.run + '.npz'), u=np.array(self.field_u),
@@ -131,6 +151,11 @@ class Recorder:
 def main():
     global DT_FACTOR
     argv = sys.argv[1:]
+    half_width = None
+    if '--half-width' in argv:
+        k = argv.index('--half-width')
+        half_width = float(argv[k + 1]) * b3.DEPTH
+        del argv[k:k + 2]
     if '--dt-factor' in argv:
         k = argv.index('--dt-factor')
         DT_FACTOR = float(argv[k + 1])
@@ -145,6 +170,23 @@ def main():
     O.load(g.path('beds', 'bed3d_%s.yade.gz' % tag))
     level = bed['surface_level_m']
     tip = level - b3.DEPTH
+    O.dt = DT_FACTOR * utils.PWaveTimeStep()
+    trimmed = 0
+    if half_width is not None and half_width < b3.HALF_WIDTH:
+        # a narrower half-bin cut from the bed: the grains beyond erased, the side wall
+        # moved in to touch the outermost, a short relaxation under gravity
+        for b in list(O.bodies):
+            if b.dynamic and b.state.pos[2] + b.shape.radius > half_width:
+                O.bodies.erase(b.id)
+                trimmed += 1
+        side = O.bodies[bed['body_ids']['side_wall']]
+        side.state.pos = yade.Vector3(side.state.pos[0], side.state.pos[1], half_width + g.RADIUS)
+        O.engines = g.engines(O, yade, [])
+        O.run(RELAX, True)
+        print('trimmed to a half-bin %.1f mm wide: %d grains erased, %d steps relaxed, unbalanced %.3g' % (
+            half_width * 1e3, trimmed, RELAX, utils.unbalancedForce()), flush=True)
+    else:
+        half_width = b3.HALF_WIDTH
     height = 3.5 * b3.DEPTH
     z0 = -2 * g.RADIUS  # the box reaches into the symmetry wall (boxes do not interact)
     erased = 0
@@ -163,22 +205,19 @@ def main():
     rec = Recorder(run, blade, bed['body_ids']['end_wall'])
     globals()['rec'] = rec
     O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command='rec.sample()')])
-    O.dt = DT_FACTOR * utils.PWaveTimeStep()
     steps = int(travel / g.SPEED / O.dt) + 20
     print('run %s: %d grains (%d erased), dt %.3g s, %d steps' % (
         run, len(rec.ids), erased, O.dt, steps), flush=True)
+    rec.meta = {'yade_version': bed['yade_version'], 'seed': g.SEED, 'run': run, 'bed': 'bed3d_' + tag,
+                'ratio_d_over_D': g.RATIO, 'mean_diameter_m': 2 * g.RADIUS, 'grains': len(rec.ids),
+                'erased_for_slot': erased, 'depth_m': b3.DEPTH, 'width_m': w,
+                'half_bin_width_m': half_width, 'trimmed_grains': trimmed, 'travel_m': travel,
+                'speed_m_per_s': g.SPEED, 'dt_s': O.dt, 'dt_over_pwave': DT_FACTOR, 'steps': steps,
+                'tip_y_m': tip, 'surface_level_m': level, 'floor_below_tip_m': tip,
+                'end_wall_x_m': b3.X_END, 'start_wall_x_m': b3.X_START}
     O.run(steps, True)
     rec.record_field(rec.travel() / b3.DEPTH)
-    meta = {'yade_version': bed['yade_version'], 'seed': g.SEED, 'run': run, 'bed': 'bed3d_' + tag,
-            'ratio_d_over_D': g.RATIO, 'mean_diameter_m': 2 * g.RADIUS, 'grains': len(rec.ids),
-            'erased_for_slot': erased, 'depth_m': b3.DEPTH, 'width_m': w,
-            'half_bin_width_m': b3.HALF_WIDTH, 'travel_m': travel, 'speed_m_per_s': g.SPEED,
-            'dt_s': O.dt, 'dt_over_pwave': DT_FACTOR, 'steps': steps, 'tip_y_m': tip, 'surface_level_m': level,
-            'floor_below_tip_m': tip, 'end_wall_x_m': b3.X_END, 'start_wall_x_m': b3.X_START,
-            'wall_time_s': time.time() - rec.start}
-    with open(g.path('results', 'cuts', run + '.json'), 'w') as f:
-        json.dump(meta, f, indent=1)
-    print(json.dumps(meta), flush=True)
+    print(json.dumps(rec.write_meta(True)), flush=True)
 
 
 main()

@@ -38,6 +38,7 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 RES = HERE / "results"
 STATIONS = (0.25, 0.5, 1.0)  # x ahead of the face for the lateral profiles (d)
+XWIN = 0.25  # half-length of the x window of a lateral profile (d)
 SNAPS = (1.0, 2.0, 3.0)  # travel of the pile records (d)
 SIDES = 2.0  # half-bin to the whole bin
 
@@ -53,7 +54,7 @@ def windows(f, norm, last):
     start = f["wall_N"][u <= 0.1].mean()
     for k in range(last):
         sel = (u > k) & (u <= k + 1 + 1e-9) if k == 0 else (u > k + 1e-9) & (u <= k + 1 + 1e-9)
-        if sel.sum() < 25:
+        if sel.sum() < 10:
             continue
         d = f["draft_N"][sel]
         out[f"window_{k}"] = {
@@ -64,6 +65,7 @@ def windows(f, norm, last):
             "wall_N": f["wall_N"][sel].mean(),
             "wall_share": (f["wall_N"][sel].mean() - start) / d.mean(),
             "records": int(sel.sum()),
+            "window_complete": bool(sel.sum() >= 49),
         }
     return out
 
@@ -74,34 +76,47 @@ def column_tops(pos, rad, x0, x1, z0, z1):
     return (pos[sel, 1] + rad[sel]).max() if sel.any() else np.nan
 
 
-def pile(pos, rad, face, bed, w):
+def centre_profile(pos, rad, face, bed, w):
+    """The centreline ground: x from the face (d), mean column top over the strip z < w/4 (d
+    above the level), columns D long centred every D/2."""
     d, D = bed["depth_m"], bed["mean_diameter_m"]
     level = bed["surface_level_m"]
-    W = bed["half_width_m"]
-    ok = np.isfinite(pos[:, 0])
-    pos, rad = pos[ok], rad[ok]
-    nz = int(W // D)
     strip = max(1, int(round(w / 4 / D)))  # D-wide columns within z < w/4
-    centre = []
+    out = []
     x = bed["x_start_m"] + D / 2
     while x + D / 2 <= bed["x_end_m"] + 1e-12:
         tops = [column_tops(pos, rad, x - D / 2, x + D / 2, j * D, (j + 1) * D) for j in range(strip)]
         tops = [t for t in tops if np.isfinite(t)]
         if tops:
-            centre.append(((x - face) / d, (np.mean(tops) - level) / d))
+            out.append(((x - face) / d, (np.mean(tops) - level) / d))
         x += D / 2
-    across = {}
-    for s in STATIONS:
-        xs = face + s * d
-        across[s] = [((j + 0.5) * D / d, (column_tops(pos, rad, xs - D / 2, xs + D / 2, j * D, (j + 1) * D) - level) / d)
-                     for j in range(nz)]
-    return centre, across, strip
+    return out, strip
+
+
+def lateral_profile(pos, rad, xs, bed):
+    """The ground across the bin at xs (m): for every D-wide z column, the mean of the column
+    tops of the D-long x columns in xs -/+ XWIN d, then a running mean over 3 z columns
+    (z from the centreline in d, height above the level in d)."""
+    d, D = bed["depth_m"], bed["mean_diameter_m"]
+    level = bed["surface_level_m"]
+    nz = int(bed["half_width_m"] // D)
+    nx = max(1, int(2 * XWIN * d // D))
+    x0 = xs - nx * D / 2
+    raw = []
+    for j in range(nz):
+        t = [column_tops(pos, rad, x0 + i * D, x0 + (i + 1) * D, j * D, (j + 1) * D) for i in range(nx)]
+        t = [v for v in t if np.isfinite(v)]
+        raw.append((np.mean(t) - level) / d if t else np.nan)
+    raw = np.array(raw)
+    smooth = np.array([np.nanmean(raw[max(0, j - 1):j + 2]) for j in range(nz)])
+    return [((j + 0.5) * D / d, raw[j], smooth[j]) for j in range(nz)], nx
 
 
 def ridge(profile, w, d, threshold):
-    """Peak height beside the blade (z > w/2), its z, and the lateral extent beyond
-    the edge: from the edge out to the first column whose heave is below threshold."""
-    beside = [(z, y) for z, y in profile if z * d >= w / 2 and np.isfinite(y)]
+    """Beside the blade (z > w/2): the peak of the smoothed profile, its z, the lateral extent
+    beyond the edge (from the edge out to the first z whose smoothed height is below
+    threshold), and the far field's mean (z > w/2 + 2.5 d: the reference check)."""
+    beside = [(z, y) for z, _, y in profile if z * d >= w / 2 and np.isfinite(y)]
     if not beside:
         return None
     zp, yp = max(beside, key=lambda t: t[1])
@@ -110,9 +125,25 @@ def ridge(profile, w, d, threshold):
         if y < threshold:
             extent = z - w / 2 / d
             break
-    inside = [y for z, y in profile if z * d < w / 2 and np.isfinite(y)]
+    inside = [y for z, y, _ in profile if z * d < w / 2 and np.isfinite(y)]
+    far = [y for z, y, _ in profile if z * d > w / 2 + 2.5 * d and np.isfinite(y)]
     return {"peak_height_d": yp, "peak_z_d": zp, "extent_beyond_edge_d": extent,
-            "inside_mean_height_d": float(np.mean(inside)) if inside else None}
+            "inside_mean_height_d": float(np.mean(inside)) if inside else None,
+            "far_field_mean_height_d": float(np.mean(far)) if far else None}
+
+
+def noise(pos0, rad, bed, w):
+    """The methods' noise in the settled bed before the cut (u = 0): the standard deviation
+    of the centreline heights over 0.5 d <= x < 6 d, and of the smoothed lateral
+    profile's heights at x = 1.5, 2.5 ... 5.5 d (d)."""
+    c, _ = centre_profile(pos0, rad, 0.0, bed, w)
+    cy = [y for x, y in c if 0.5 <= x < 6.0]
+    ly = []
+    for s in (1.5, 2.5, 3.5, 4.5, 5.5):
+        prof, _ = lateral_profile(pos0, rad, s * bed["depth_m"], bed)
+        ly += [y for _, _, y in prof if np.isfinite(y)]
+    return {"centre_sd_d": float(np.std(cy, ddof=1)), "centre_mean_d": float(np.mean(cy)),
+            "lateral_sd_d": float(np.std(ly, ddof=1)), "lateral_mean_d": float(np.mean(ly))}
 
 
 def spilled(pos, rad, pos0, face, bed, w, gamma_grain):
@@ -150,7 +181,7 @@ def main():
     summary = {}
     for path in sorted((RES / "cuts").glob("w*_*.json")):
         meta = json.loads(path.read_text())
-        bed = beds[meta["bed"]]
+        bed = dict(beds[meta["bed"]], half_width_m=meta["half_bin_width_m"])
         run = meta["run"]
         wd = meta["width_m"] / meta["depth_m"]
         key = "w%g" % wd
@@ -179,6 +210,8 @@ def main():
             "floor_below_tip_m": meta["floor_below_tip_m"],
             "norm_N": norm, "norm": "gamma0 d^2 w",
             "travel_d": float(f["u_over_d"][-1]),
+            "complete": meta.get("complete", True), "dt_over_pwave": meta.get("dt_over_pwave"),
+            "trimmed_grains": meta.get("trimmed_grains", 0),
         }
         entry.update(windows(f, norm, 3))
         field = HERE / "fields" / f"{run}.npz"
@@ -187,38 +220,45 @@ def main():
             u = z["u"] / d
             pos, rad = z["pos"], z["radius"]
             gamma_grain = 2650.0 * 9.81
-            noise = bed["surface_noise_sd_m"] / d
+            ok = np.isfinite(pos[0][:, 0])
+            nz = noise(pos[0][ok], rad[ok], bed, w)
+            entry["surface_noise"] = nz
             rows = []
-            entry["surface_noise_sd_column_d"] = noise
             entry["pile"] = {}
             for s in SNAPS:
                 k = int(np.argmin(abs(u - s)))
                 if abs(u[k] - s) > 0.05:
                     continue
-                face = meta["start_wall_x_m"] * 0 + z["u"][k]
-                centre, across, strip = pile(pos[k], rad, face, bed, w)
+                face = z["u"][k]
+                ok = np.isfinite(pos[k][:, 0])
+                pk, rk = pos[k][ok], rad[ok]
+                centre, strip = centre_profile(pk, rk, face, bed, w)
                 for x, y in centre:
-                    rows.append(("centre", s, "", x, y))
-                fig = {"centre_strip_columns": strip, "centre_noise_sd_d": noise / math.sqrt(strip)}
+                    rows.append(("centre", s, "", x, y, ""))
+                fig = {"centre_strip_columns": strip}
                 ahead = [(x, y) for x, y in centre if x >= 0]
                 if ahead:
                     xp, yp = max(ahead, key=lambda t: t[1])
                     fig["centre_peak_height_d"] = yp
                     fig["centre_peak_x_d"] = xp
-                    fig["centre_pile_front_x_d"] = next((x for x, y in ahead if x > xp and y < 2 * noise / math.sqrt(strip)), None)
-                for st, prof in across.items():
-                    for zz, y in prof:
-                        rows.append(("across", s, st, zz, y))
-                    fig[f"ridge_at_{st:g}d"] = ridge(prof, w, d, 2 * noise)
+                    fig["centre_mean_height_0_1d"] = float(np.mean([y for x, y in ahead if x < 1.0]))
+                    fig["centre_pile_front_x_d"] = next(
+                        (x for x, y in ahead if x > xp and y < 2 * nz["centre_sd_d"]), None)
+                for st in STATIONS:
+                    prof, nx = lateral_profile(pk, rk, face + st * d, bed)
+                    for zz, y, ys in prof:
+                        rows.append(("across", s, st, zz, y, ys))
+                    fig[f"ridge_at_{st:g}d"] = ridge(prof, w, d, 2 * nz["lateral_sd_d"])
                 sp = spilled(pos[k], rad, pos[0], face, bed, w, gamma_grain)
-                sp["swept_weight_N"] = gamma * d * w * s
+                sp["swept_weight_N"] = gamma * d * d * w * s
                 fig["spilled"] = sp
                 entry["pile"][f"u_{s:g}d"] = fig
             if ref:
                 with open(RES / f"pile_{key}.csv", "w") as out:
-                    out.write("kind,u_over_d,x_station_d,coord_d,y_d\n")
-                    for kind, s, st, c, y in rows:
-                        out.write(f"{kind},{s:g},{st if st == '' else '%g' % st},{c:.4f},{y:.4f}\n")
+                    out.write("kind,u_over_d,x_station_d,coord_d,y_d,y_smoothed_d\n")
+                    for kind, s, st, c, y, ys in rows:
+                        out.write(f"{kind},{s:g},{st if st == '' else '%g' % st},{c:.4f},{y:.4f},"
+                                  f"{'' if ys == '' else '%.4f' % ys}\n")
         summary.setdefault(key, {})[f"seed_{meta['seed']}"] = entry
     for key, e in summary.items():
         seeds = [v for k, v in e.items() if k.startswith("seed_")]
