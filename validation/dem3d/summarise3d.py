@@ -45,6 +45,8 @@ SIDES = 2.0  # half-bin to the whole bin
 
 def read_forces(run):
     rows = list(csv.DictReader((RES / "cuts" / f"{run}_forces.csv").open()))
+    if len(rows) < 10:
+        return None
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
@@ -190,6 +192,8 @@ def main():
         d, w = meta["depth_m"], meta["width_m"]
         norm = gamma * d * d * w
         f = read_forces(run)
+        if f is None:
+            continue
         ref = meta["seed"] == 14
         name = f"force_{key}.csv" if ref else f"force_{key}_s{meta['seed']}.csv"
         cols = ["u_over_d", "draft_N", "vertical_N", "wall_N", "draft_all_N", "vertical_all_N"]
