@@ -1,12 +1,13 @@
 #!/bin/sh
 # The whole 3D campaign, one Yade process at a time, from the repository root:
-#   nohup sh validation/dem3d/queue3d.sh > validation/dem3d/logs/queue.log 2>&1 &
+#   nohup sh validation/dem3d/queue3d.sh > queue3d.log 2>&1 &
 # then: /usr/bin/python3 validation/dem3d/summarise3d.py
 # SEED=15 sh validation/dem3d/queue3d.sh 1   reruns only w/d = 1 in the bed of seed 15.
 SEED=${SEED:-14}
 WIDTHS=${*:-3 1}
 L=validation/dem3d/logs
-[ -f validation/dem3d/beds/bed3d_r5_s$SEED.yade.gz ] ||
+HERE=$(dirname "$0")
+[ -f "$HERE/beds/bed3d_r5_s$SEED.yade.gz" ] ||
     nice -n 10 yade -n -j1 -x validation/dem3d/bed3d.py --seed $SEED > $L/bed3d_r5_s$SEED.log 2>&1
 for w in $WIDTHS; do
     case $w in
