@@ -42,7 +42,6 @@ CUTS = {  # depth d (m), rake alpha (degrees), travel (in d; --travel overrides)
 HALF_THICKNESS = 0.5e-3  # blade half-thickness (m)
 RECORD = 0.02  # force record interval (in d)
 FIELD = 0.25  # surface and field record interval (in d)
-FACE_COS = math.cos(math.radians(45.0))  # a contact is on the face within 45 degrees of its normal
 
 
 class Recorder:
@@ -65,27 +64,13 @@ class Recorder:
 
     def face_force(self):
         """Force of the grains on the blade's soil-side face (x, y)."""
-        fx = fy = 0.0
-        bid = self.blade.id
-        for i in O.interactions.withBody(bid):
-            if not i.isReal:
-                continue
-            f = i.phys.normalForce + i.phys.shearForce  # on id2; -f on id1
-            n = i.geom.normal  # from id1 to id2
-            sign = 1.0 if i.id2 == bid else -1.0
-            # the direction from the blade to the grain
-            out = (-sign * n[0], -sign * n[1])
-            if out[0] * self.normal[0] + out[1] * self.normal[1] >= FACE_COS:
-                fx += sign * f[0]
-                fy += sign * f[1]
-        return fx, fy
+        return g.face_force(O, self.blade.id, self.normal)
 
     def sample(self):
         total = O.forces.f(self.blade.id)
         fx, fy = self.face_force()
         if self.checked < 3 and abs(total[0]) > 0:
-            allx = sum((1.0 if i.id2 == self.blade.id else -1.0) * (i.phys.normalForce + i.phys.shearForce)[0]
-                       for i in O.interactions.withBody(self.blade.id) if i.isReal)
+            allx = g.contact_sum_x(O, self.blade.id)
             print('check: contact sum %.6g, O.forces %.6g' % (allx, total[0]), flush=True)
             self.checked += 1
         wall = O.forces.f(self.wall)[0]

@@ -195,6 +195,39 @@ def engines(O, yade, extra, gravity=True):
             + [yade.NewtonIntegrator(damping=DAMPING, gravity=g, label='newton')])
 
 
+FACE_COS = math.cos(math.radians(45.0))  # a contact is on the face within 45 degrees of its normal
+
+
+def face_force(O, bid, normal):
+    """Force (x, y) of the grains on body `bid` through its face's contacts:
+    those whose direction from the body to the grain lies within 45 degrees
+    of the face's outward `normal` (x, y), so that the blade's bottom, back
+    and edges are left out (the cut scripts' face-only force)."""
+    fx = fy = 0.0
+    for i in O.interactions.withBody(bid):
+        if not i.isReal:
+            continue
+        f = i.phys.normalForce + i.phys.shearForce  # on id2; -f on id1
+        n = i.geom.normal  # from id1 to id2
+        sign = 1.0 if i.id2 == bid else -1.0
+        # the direction from the blade to the grain
+        out = (-sign * n[0], -sign * n[1])
+        if out[0] * normal[0] + out[1] * normal[1] >= FACE_COS:
+            fx += sign * f[0]
+            fy += sign * f[1]
+    return fx, fy
+
+
+def contact_sum_x(O, bid):
+    """x force on body `bid` summed over its real contacts (to check against
+    O.forces, which also holds what is not a contact)."""
+    return sum(
+        (1.0 if i.id2 == bid else -1.0) * (i.phys.normalForce + i.phys.shearForce)[0]
+        for i in O.interactions.withBody(bid)
+        if i.isReal
+    )
+
+
 def write_csv(path, header, rows):
     with open(path, 'w') as f:
         f.write(','.join(header) + '\n')

@@ -28,7 +28,6 @@ that overlap it or lie behind its face above the tip's level are removed
 """
 
 import json
-import math
 import os
 import sys
 import time
@@ -43,7 +42,6 @@ from yade import O, utils  # noqa: E402
 HALF_THICKNESS = 1.0e-3  # blade half-thickness (m)
 RECORD = 0.02  # force record interval (in d)
 FIELD = 0.5  # grain field record interval (in d)
-FACE_COS = math.cos(math.radians(45.0))
 SIDES = 2.0  # the half-bin's forces doubled to the whole blade and bin
 RELAX = 500  # steps of relaxation after trimming the bed to a narrower half-bin (--half-width)
 DT_FACTOR = 0.5  # time step over utils.PWaveTimeStep() (2D campaign: 0.5); --dt-factor F
@@ -71,25 +69,13 @@ class Recorder:
     def face_force(self):
         """Force of the grains on the face's contacts (x, y): the direction from
         the blade to the grain within 45 degrees of +x."""
-        fx = fy = 0.0
-        bid = self.blade.id
-        for i in O.interactions.withBody(bid):
-            if not i.isReal:
-                continue
-            f = i.phys.normalForce + i.phys.shearForce  # on id2; -f on id1
-            n = i.geom.normal  # from id1 to id2
-            sign = 1.0 if i.id2 == bid else -1.0
-            if -sign * n[0] >= FACE_COS:
-                fx += sign * f[0]
-                fy += sign * f[1]
-        return fx, fy
+        return g.face_force(O, self.blade.id, (1.0, 0.0))
 
     def sample(self):
         total = O.forces.f(self.blade.id)
         fx, fy = self.face_force()
         if self.checked < 3 and abs(total[0]) > 0:
-            allx = sum((1.0 if i.id2 == self.blade.id else -1.0) * (i.phys.normalForce + i.phys.shearForce)[0]
-                       for i in O.interactions.withBody(self.blade.id) if i.isReal)
+            allx = g.contact_sum_x(O, self.blade.id)
             print('check: contact sum %.6g, O.forces %.6g' % (allx, total[0]), flush=True)
             self.checked += 1
         wall = O.forces.f(self.wall)[0]
