@@ -21,12 +21,16 @@ class Case:
     key or a value out of range raises :class:`soilcut.CaseError` with the
     command line's message.
 
+    A case is parsed once, when it is made: it holds the native case (the
+    case file's table and the model's case), which every function of the
+    package takes as it is.
+
     Units are those of the case file (see the README's table of keys):
     lengths in any consistent unit (the paper's cases use mm), angles in
     degrees, the unit weight in force per length³ of the same unit.
     """
 
-    __slots__ = ("_text", "_resolved")
+    __slots__ = ("_native",)
 
     def __init__(self, text: str) -> None:
         """The case of a case file's TOML ``text`` (same as :meth:`from_toml`)."""
@@ -35,8 +39,13 @@ class Case:
                 f"Case(text) takes the TOML text of a case file, not {type(text).__name__}; "
                 "use Case.from_dict or Case.from_file"
             )
-        self._resolved = _soilcut.resolve(text)
-        self._text = text
+        self._native = _soilcut.NativeCase.from_toml(text)
+
+    @classmethod
+    def _from_native(cls, native: _soilcut.NativeCase) -> Case:
+        case = cls.__new__(cls)
+        case._native = native
+        return case
 
     @classmethod
     def from_toml(cls, text: str) -> Case:
@@ -54,7 +63,7 @@ class Case:
     def from_dict(cls, d: Mapping[str, Any]) -> Case:
         """The case of nested dicts shaped like the case file, e.g.
         ``{"name": "a", "model": "original", "blade": {"depth": 20, ...}, ...}``."""
-        return cls(_soilcut.from_dict(dict(d)))
+        return cls._from_native(_soilcut.NativeCase.from_dict(dict(d)))
 
     def set(self, key: str, value: Any) -> Case:
         """A new case with the dotted ``key`` set to ``value``, as
@@ -66,68 +75,67 @@ class Case:
         """A new case with several dotted keys set, in order:
         ``case.update({"run.increment": 0.2, "run.travel": 40})``."""
         pairs = list(changes.items() if isinstance(changes, Mapping) else changes)
-        return Case(_soilcut.set_keys(self._text, pairs))
+        return Case._from_native(self._native.set_keys(pairs))
 
     def to_toml(self) -> str:
-        """The case file's text (after any :meth:`set`): only the keys given."""
-        return self._text
+        """The case file's text: as given, or rewritten after :meth:`set`
+        (only the keys given)."""
+        return self._native.to_toml()
 
     def to_dict(self) -> dict[str, Any]:
         """The case file as nested dicts (only the keys given)."""
-        return _soilcut.to_dict(self._text)
+        return self._native.to_dict()
 
     def resolved(self) -> Case:
         """The same case with every default filled in: the case of the
         ``case.resolved.toml`` that ``soilcut run`` writes."""
-        return Case(self._resolved)
+        return Case._from_native(self._native.resolved())
 
     def resolved_toml(self) -> str:
         """The ``case.resolved.toml`` text that ``soilcut run`` writes."""
-        return self._resolved
+        return self._native.resolved_toml()
 
     def __getitem__(self, key: str) -> Any:
         """The value of a dotted key of the resolved case:
         ``case["soil.repose"]`` (a default filled in if not given)."""
-        value: Any = _soilcut.to_dict(self._resolved)
-        for part in key.split("."):
-            if not isinstance(value, dict) or part not in value:
-                raise KeyError(key)
-            value = value[part]
+        value = self._native.get(key)
+        if value is None:
+            raise KeyError(key)
         return value
 
     @property
     def name(self) -> str:
         """The case's name (it names the output folder ``out/<name>``)."""
-        return self["name"]
+        return self._native.names()[0]
 
     @property
     def title(self) -> str:
         """The case's title (its name if none is given)."""
-        return self["title"]
+        return self._native.names()[1]
 
     @property
     def model(self) -> str:
         """``"original"`` (slip line, softening) or ``"refined"`` (shear band)."""
-        return self["model"]
+        return self._native.names()[2]
 
     def __eq__(self, other: object) -> bool:
         """Two cases are equal when their resolved case files are."""
-        return isinstance(other, Case) and self._resolved == other._resolved
+        return isinstance(other, Case) and self._native == other._native
 
     def __hash__(self) -> int:
-        return hash(self._resolved)
+        return hash(self._native)
 
     def __repr__(self) -> str:
         return f"Case(name={self.name!r}, model={self.model!r})"
 
     def __reduce__(self):
-        return (Case, (self._text,))
+        return (Case, (self.to_toml(),))
 
 
-def text_of(case: Case | str) -> str:
-    """The TOML text of a :class:`Case` (or of a case file's text)."""
+def native_of(case: Case | str) -> _soilcut.NativeCase:
+    """The native handle of a :class:`Case` (or of a case file's text)."""
     if isinstance(case, Case):
-        return case.to_toml()
+        return case._native
     if isinstance(case, str):
-        return Case(case).to_toml()
+        return Case(case)._native
     raise TypeError(f"expected a soilcut.Case, not {type(case).__name__}")

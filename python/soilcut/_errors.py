@@ -23,11 +23,19 @@ class CaseError(ValueError):
 class StepError(ValueError):
     """An increment without an admissible mechanism (every candidate violates
     β > 0 and β + φ + φw < 90°): the case cannot be simulated further. The
-    command line reports it as bad input too (exit code 2)."""
+    command line reports it as bad input too (exit code 2).
 
-    def __init__(self, message: str, key: str | None = None) -> None:
+    ``steps`` holds the records of the increments made before the one that
+    failed, by the call that raised (:meth:`soilcut.Simulation.advance_to`
+    makes several); the simulation stands after the last of them. They
+    are not pickled with the error (a record is a native object of this
+    process).
+    """
+
+    def __init__(self, message: str, key: str | None = None, steps: list | None = None) -> None:
         super().__init__(message)
         self.key = key
+        self.steps = [] if steps is None else steps
 
     def __reduce__(self):
         return (type(self), (str(self), self.key))

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import os
 import pathlib
 from typing import Any, NamedTuple, Union
@@ -10,7 +9,7 @@ from typing import Any, NamedTuple, Union
 import numpy as np
 
 from . import _soilcut
-from ._case import Case, text_of
+from ._case import Case, native_of
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -78,18 +77,18 @@ class RunResult:
     A result pickles (to move it between processes or keep it on disk).
     """
 
-    def __init__(self, case: Case, files: dict[str, str]) -> None:
+    def __init__(self, case: Case, native: _soilcut.RunRecords) -> None:
         self.case = case
-        self._files = files
-        self.history: dict[str, np.ndarray] = _soilcut.csv_columns(
-            "history.csv", files["history.csv"]
-        )
+        self._native = native
+        self.history: dict[str, np.ndarray] = native.history()
         self.history["step"] = self.history["step"].astype(np.int64)
-        self.profile: dict[str, np.ndarray] = _soilcut.csv_columns(
-            "profile.csv", files["profile.csv"]
-        )
-        self.summary: dict[str, Any] = json.loads(files["summary.json"])
-        self.frames: list[Frame] = _frames(_soilcut.csv_columns("frames.csv", files["frames.csv"]))
+        self.profile: dict[str, np.ndarray] = native.profile()
+        self.summary: dict[str, Any] = native.summary()
+        self.frames: list[Frame] = _frames(native.frames())
+
+    def __reduce__(self):
+        # The files hold every number exactly (shortest round-trip text).
+        return (_restore_run, (self.case, self._native.files()))
 
     def history_frame(self):
         """``history`` as a pandas DataFrame (needs pandas)."""
@@ -107,7 +106,7 @@ class RunResult:
         existing, non-empty folder is replaced only with ``force=True``
         (else ``FileExistsError``). Returns the folder."""
         folder = pathlib.Path(folder)
-        _soilcut.write_run_dir(os.fspath(folder), list(self._files.items()), force, pictures)
+        self._native.write(os.fspath(folder), force, pictures)
         return folder
 
     def __repr__(self) -> str:
@@ -116,6 +115,10 @@ class RunResult:
             f"RunResult({self.case.name!r}: {s['steps']} steps, "
             f"max force_norm {s['max_force_norm']:.4f} at u/d = {s['u_over_d_at_max']:.3f})"
         )
+
+
+def _restore_run(case: Case, files: list[tuple[str, str]]) -> RunResult:
+    return RunResult(case, _soilcut.RunRecords.from_files(files))
 
 
 class Ensemble:
@@ -141,16 +144,12 @@ class Ensemble:
     def __init__(self, case: Case, native: _soilcut.EnsembleRun) -> None:
         self.case = case
         self._native = native
-        files = dict(native.files())
-        self.windows: dict[str, np.ndarray] = _soilcut.csv_columns(
-            "ensemble.csv", files["ensemble.csv"]
-        )
-        self.summary: dict[str, Any] = json.loads(files["summary.json"])
+        self.windows: dict[str, np.ndarray] = native.windows()
+        self.summary: dict[str, Any] = native.summary()
         members = native.members()
         self.folders: list[str] = [name for name, _ in members]
-        files_of = [dict(f) for _, f in members]
         self.members: list[RunResult] = [
-            RunResult(Case(f["case.resolved.toml"]), f) for f in files_of
+            RunResult(Case._from_native(run.case()), run) for _, run in members
         ]
 
     def windows_frame(self):
@@ -197,6 +196,5 @@ def run(case: Case, *, ensemble: int | None = None, jobs: int = 0) -> RunResult 
             )
         if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0:
             raise ValueError(f"jobs: expected an int >= 0 (0: one per core), got {jobs!r}")
-        return Ensemble(the_case, _soilcut.ensemble(text_of(case), ensemble, jobs))
-    files = dict(_soilcut.run(text_of(case)))
-    return RunResult(the_case, files)
+        return Ensemble(the_case, _soilcut.ensemble(native_of(the_case), ensemble, jobs))
+    return RunResult(the_case, _soilcut.run(native_of(the_case)))

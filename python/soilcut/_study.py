@@ -11,7 +11,7 @@ from typing import Any, NamedTuple, Union
 import numpy as np
 
 from . import _soilcut
-from ._case import Case, text_of
+from ._case import Case, native_of
 
 Spec = Union[str, tuple[float, float], tuple[float, float, int], Sequence[Any]]
 
@@ -26,9 +26,9 @@ def _read_csv(text: str):
     return pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=[""], **exact)
 
 
-def _sweep_row(text: str, keys: list[str], values: list[Any], run: int, total: int) -> str:
+def _sweep_row(case: Case, keys: list[str], values: list[Any], run: int, total: int) -> str:
     """One run of a sweep (on a worker of an executor): its ``sweep.csv`` line."""
-    return _soilcut.sweep_row(text, keys, values, run, total)[0]
+    return _soilcut.sweep_row(native_of(case), keys, values, run, total)[0]
 
 
 def sweep(
@@ -66,7 +66,8 @@ def sweep(
             ``Client.get_executor()`` (dask-jobqueue for Slurm or PBS). The
             result is the same as on one thread, row for row.
     """
-    text = text_of(case)
+    case = case if isinstance(case, Case) else Case(case)
+    native = native_of(case)
     if (vary is None) == (samples is None):
         raise ValueError("give either vary (keys and their values) or samples (one dict per run)")
     if samples is not None:
@@ -81,17 +82,17 @@ def sweep(
     else:
         varies = list(vary.items())
         if executor is None:
-            csv, _timing = _soilcut.sweep_csv(text, varies, sample, seed, jobs)
+            csv, _timing = _soilcut.sweep_csv(native, varies, sample, seed, jobs)
             return _read_csv(csv)
-        keys, points = _soilcut.sweep_points(text, varies, sample, seed)
-    header = _soilcut.sweep_row(text, keys, [], 0, 0)[0]
+        keys, points = _soilcut.sweep_points(native, varies, sample, seed)
+    header = _soilcut.sweep_header(keys)
     total = len(points)
     own = executor is None
     if own:
         executor = concurrent.futures.ThreadPoolExecutor(max_workers=jobs or os.cpu_count())
     try:
         futures = [
-            executor.submit(_sweep_row, text, keys, values, i + 1, total)
+            executor.submit(_sweep_row, case, keys, values, i + 1, total)
             for i, values in enumerate(points)
         ]
         lines = [f.result() for f in futures]
@@ -189,19 +190,20 @@ def fit(
             ``cmaes`` (CMA-ES with restarts), as ``soilcut fit --method``.
     """
     points = _measured(measured)
-    if width is not None:
-        if not (np.isfinite(width) and width > 0):
-            raise ValueError(f"width {width}: must be a finite number > 0")
-        if "width" in case.to_dict().get("blade", {}):
-            raise ValueError(
-                f"width {width}: the case's blade.width makes the simulated force the "
-                "blade's total already; give the measured total force without width"
-            )
-        points = [(u, p / width) for u, p in points]
     bounds_list = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
     budget = (evaluations, population, polish, profile_points)
+    width = None if width is None else float(width)
     d = _soilcut.fit(
-        text_of(case), points, list(free), bounds_list, objective, method, budget, seed, jobs
+        native_of(case),
+        points,
+        width,
+        list(free),
+        bounds_list,
+        objective,
+        method,
+        budget,
+        seed,
+        jobs,
     )
     return FitResult(d)
 
@@ -218,7 +220,7 @@ def analytic(case: Case) -> dict[str, dict[str, Any] | None]:
     (McKyes & Ali's blade of finite width: ``force`` per blade,
     ``force_norm`` P/(γ0 d² w), its ``factors`` Nγ3 … Nq3, ``rupture``, the
     rupture distance (length), and ``crescent_angle_deg``)."""
-    return _soilcut.analytic(text_of(case))
+    return _soilcut.analytic(native_of(case))
 
 
 class Landscape(NamedTuple):
@@ -238,5 +240,5 @@ def landscape(case: Case, at: float) -> Landscape:
     """The force of every candidate band at u/d = ``at`` (0 to
     run.travel / blade.depth): the increment evaluated first at u ≥ at·d, as
     ``soilcut landscape --at`` takes it."""
-    u, csv = _soilcut.landscape(text_of(case), float(at))
-    return Landscape(u, _soilcut.csv_columns("landscape.csv", csv))
+    u, candidates = _soilcut.landscape(native_of(case), float(at))
+    return Landscape(u, candidates)

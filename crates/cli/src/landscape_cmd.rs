@@ -4,7 +4,8 @@
 
 use crate::{load, CaseOutput, Failure};
 use soilcut_io::{
-    landscape_at, landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
+    check_landscape_at, check_landscape_every, landscape_at, landscape_csv, landscape_map_csv,
+    write_output_dir_then, LoadedCase, OutputError,
 };
 use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
@@ -43,23 +44,12 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     let path = target.case.as_path();
     let loaded = load(path, &target.set)?;
     let case = &loaded.case;
-    let last = case.run.travel / case.blade.depth;
-    let (flag, value, allowed) = match (args.at, args.every) {
-        (Some(at), _) => ("--at", at, (0.0..=last).contains(&at)),
-        (None, Some(every)) => ("--every", every, every > 0.0 && every <= last),
+    let (checked, value) = match (args.at, args.every) {
+        (Some(at), _) => (check_landscape_at(case, "--at", at), at),
+        (None, Some(every)) => (check_landscape_every(case, "--every", every), every),
         (None, None) => return Err(Failure::input(path, "give --at or --every")),
     };
-    if !(value.is_finite() && allowed) {
-        let range = if flag == "--at" {
-            "from 0 to"
-        } else {
-            "above 0, at most"
-        };
-        let message = format!(
-            "{flag} must be a number {range} run.travel / blade.depth = {last} (got {value})"
-        );
-        return Err(Failure::input(path, message));
-    }
+    checked.map_err(|message| Failure::input(path, message))?;
     let out = target.out_or(&format!("{}-landscape", case.name));
     soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;

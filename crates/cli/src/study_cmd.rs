@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{check_output_dir, read_measured_curve, write_output_dir_then, OutputError};
 use soilcut_study::converge::ensembles::EnsembleConverge;
 use soilcut_study::converge::{Converge, Refine};
-use soilcut_study::fit::{parse_bounds, Compare, Fit, Method};
+use soilcut_study::fit::{measured_width, parse_bounds, Compare, Fit, Method};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::Sweep;
 use soilcut_study::{BaseCase, StudyError};
@@ -296,14 +296,9 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-/// A measured curve as a test of `base`, its forces divided by `width`.
-fn test_of(
-    name: &Path,
-    base: BaseCase,
-    width: Option<f64>,
-) -> Result<soilcut_study::fit::Test, Failure> {
+/// A measured curve as a test of `base`, its forces divided by `w`.
+fn test_of(name: &Path, base: BaseCase, w: f64) -> Result<soilcut_study::fit::Test, Failure> {
     let curve = read_measured_curve(name).map_err(|e| Failure::input(name, e))?;
-    let w = width.unwrap_or(1.0);
     Ok(soilcut_study::fit::Test {
         name: name.display().to_string(),
         base,
@@ -325,26 +320,10 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         .map_err(fail)?;
     let compare: Compare = args.objective.parse().map_err(fail)?;
     let method: Method = args.method.parse().map_err(fail)?;
-    if let Some(w) = args.width {
-        if !(w.is_finite() && w > 0.0) {
-            return Err(Failure::input(
-                path,
-                format!("--width {w}: must be a finite number > 0"),
-            ));
-        }
-    }
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
-    if let (Some(w), Some(_)) = (args.width, case.blade.width) {
-        return Err(Failure::input(
-            path,
-            format!(
-                "--width {w}: the case's blade.width makes the simulated force the blade's \
-                 total already; give the measured total force without --width"
-            ),
-        ));
-    }
+    let width = measured_width(args.width, &case, "--width").map_err(fail)?;
     let title = case.title;
-    let mut tests = vec![test_of(&args.measured, base.clone(), args.width)?];
+    let mut tests = vec![test_of(&args.measured, base.clone(), width)?];
     for also in &args.also {
         let (case, measured) = also
             .split_once('=')
@@ -355,7 +334,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
             c.target.overrides().map_err(|e| Failure::input(path, e))?,
         )
         .map_err(|e| Failure::input(case, e))?;
-        tests.push(test_of(Path::new(measured), other, args.width)?);
+        tests.push(test_of(Path::new(measured), other, width)?);
     }
     let fit = Fit {
         tests,

@@ -238,6 +238,11 @@ impl LoadedCase {
         loaded
     }
 
+    /// The table of `case.resolved.toml` (without its comment line).
+    pub fn resolved_table(&self) -> toml::Table {
+        toml::Table::try_from(&self.resolved).expect("a case serialises to TOML")
+    }
+
     /// `case.resolved.toml`: every default filled in, only the keys valid
     /// for the case's model. Reading it back gives the same [`Case`].
     pub fn resolved_toml(&self) -> String {
@@ -263,9 +268,20 @@ pub fn parse_case_bytes(bytes: &[u8], overrides: &[Override]) -> Result<LoadedCa
 
 /// [`read_case`] on the text of a case file.
 pub fn parse_case(text: &str, overrides: &[Override]) -> Result<LoadedCase, InputError> {
-    let mut table: toml::Table = text
-        .parse()
-        .map_err(|e: toml::de::Error| syntax(text, &e))?;
+    load_case_table(parse_case_table(text)?, overrides)
+}
+
+/// The table of a case file's text, not yet read as a case: a syntax
+/// error names its line.
+pub fn parse_case_table(text: &str) -> Result<toml::Table, InputError> {
+    text.parse().map_err(|e: toml::de::Error| syntax(text, &e))
+}
+
+/// [`read_case`] on a case file's table (from [`parse_case_table`]).
+pub fn load_case_table(
+    mut table: toml::Table,
+    overrides: &[Override],
+) -> Result<LoadedCase, InputError> {
     for o in overrides {
         o.apply(&mut table)?;
     }

@@ -2,7 +2,7 @@
 //! `soilcut compare`), and `frames.csv`, the surfaces captured during a run.
 
 use crate::case_file::read_case;
-use crate::csv_text::CsvText;
+use crate::columns::Columns;
 use soilcut_model::{Case, ProfilePoint};
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -32,6 +32,11 @@ pub struct SurfaceFrame {
 /// than 10⁻³ d) and at least two depths ahead of the blade, thinned to at
 /// most [`FRAME_ROWS`] rows per frame (every k-th node, the face always kept).
 pub fn frames_csv(frames: &[SurfaceFrame], depth: f64) -> String {
+    frames_columns(frames, depth).csv()
+}
+
+/// The numbers of [`frames_csv`] (columns [`FRAMES_HEADER`]).
+pub fn frames_columns(frames: &[SurfaceFrame], depth: f64) -> Columns {
     let mut far: f64 = 0.0;
     for f in frames {
         far = far.max(f.u + depth);
@@ -40,15 +45,15 @@ pub fn frames_csv(frames: &[SurfaceFrame], depth: f64) -> String {
         }
     }
     let end = far + depth;
-    let mut out = CsvText::new(FRAMES_HEADER);
+    let mut out = Columns::new(FRAMES_HEADER);
     for (k, f) in frames.iter().enumerate() {
         let shown = f.surface.iter().take_while(|p| p.x <= end).count();
         let stride = shown.div_ceil(FRAME_ROWS).max(1);
         for p in f.surface[..shown].iter().step_by(stride) {
-            out.row(&[&k, &f.step, &f.u, &p.x, &p.y, &p.accumulated_shear]);
+            out.push(&[k as f64, f.step as f64, f.u, p.x, p.y, p.accumulated_shear]);
         }
     }
-    out.finish()
+    out
 }
 
 /// Why the files of a run could not be read.
@@ -61,7 +66,7 @@ pub struct RunFilesError {
 }
 
 impl RunFilesError {
-    fn new(path: &Path, message: impl ToString) -> Self {
+    pub(crate) fn new(path: &Path, message: impl ToString) -> Self {
         RunFilesError {
             path: path.to_path_buf(),
             message: crate::error::one_line(&message.to_string()),

@@ -2,7 +2,11 @@
 //! command line (`soilcut`) formats the errors of this crate.
 //!
 //! * [`read_case`]: a TOML case file plus `--set` [`Override`]s → a resolved,
-//!   validated [`LoadedCase`] (and its `case.resolved.toml`).
+//!   validated [`LoadedCase`] (and its `case.resolved.toml`);
+//!   [`parse_case_table`] and [`load_case_table`] do it in two steps for a
+//!   front end that keeps the table and changes keys.
+//! * [`Columns`]: the numbers of a CSV file before they are text, which
+//!   front ends hand out as arrays ([`RunTables`] for a run).
 //! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
 //!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
 //! * [`landscape_csv`]: every candidate mechanism of one increment;
@@ -18,6 +22,7 @@
 #![warn(missing_docs)]
 
 mod case_file;
+mod columns;
 mod csv_text;
 mod error;
 mod finished;
@@ -28,23 +33,27 @@ mod overrides;
 mod pictures;
 mod record;
 
-pub use case_file::{parse_case, parse_case_bytes, read_case, LoadedCase};
+pub use case_file::{
+    load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case, LoadedCase,
+};
+pub use columns::Columns;
 pub use error::{InputError, OutputError};
 pub use finished::{
-    frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
-    FRAME_ROWS,
+    frames_columns, frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table,
+    FRAMES_HEADER, FRAME_ROWS,
 };
 pub use landscape::{
-    landscape_at, landscape_csv, landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
+    check_landscape_at, check_landscape_every, landscape_at, landscape_columns, landscape_csv,
+    landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
 };
 pub use measured::{
     parse_measured, parse_measured_bytes, parse_measured_curve, read_measured, read_measured_curve,
     MeasuredCurve,
 };
 pub use output::{
-    check_output_dir, peak_prominence_rule, write_output_dir, write_output_dir_then, RunOutput,
-    HISTORY_HEADER, PROFILE_HEADER,
+    check_output_dir, history_columns, peak_prominence_rule, profile_columns, write_output_dir,
+    write_output_dir_then, RunOutput, HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
-pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};
+pub use record::{record_files, record_run, RecordedRun, RunTables, ANIMATION_FRAMES};

@@ -4,7 +4,7 @@
 //! case gives bit-identical `history.csv` and `profile.csv`.
 
 use crate::case_file::LoadedCase;
-use crate::csv_text::CsvText;
+use crate::columns::Columns;
 use crate::error::OutputError;
 use serde::Serialize;
 use soilcut_model::analytic::{Baseline, Wedge};
@@ -51,53 +51,33 @@ impl RunOutput<'_> {
     /// `history.csv`: one row per increment, columns `HISTORY_HEADER` (units
     /// in the README).
     pub fn history_csv(&self) -> String {
-        let d = self.loaded.case.blade.depth;
-        let mut out = CsvText::new(HISTORY_HEADER);
-        for r in self.history {
-            out.row(&[
-                &r.step,
-                &r.u,
-                &(r.u / d),
-                &r.force,
-                &r.force_norm,
-                &r.force_h,
-                &r.force_v,
-                &r.beta_deg,
-                &r.x_emergence,
-                &r.mass,
-                &r.y_emergence,
-                &r.friction_deg,
-                &r.slip,
-                &r.dilation_deg,
-                &r.dilation_area,
-                &r.depth,
-                &r.mass_spilled,
-            ]);
-        }
-        out.finish()
+        history_columns(self.history, self.loaded.case.blade.depth).csv()
     }
 
     /// `profile.csv`: the final surface, one row per node from the face on.
     pub fn profile_csv(&self) -> String {
-        let mut out = CsvText::new(PROFILE_HEADER);
-        for p in self.profile {
-            out.row(&[
-                &p.x,
-                &p.y,
-                &p.accumulated_shear,
-                &p.unit_weight,
-                &p.ridge_height,
-            ]);
-        }
-        out.finish()
+        profile_columns(self.profile).csv()
     }
 
     /// `summary.json`: the run's figures, the analytical baselines, cost and
     /// wall time.
     pub fn summary_json(&self) -> String {
+        let mut text =
+            serde_json::to_string_pretty(&self.summary_doc()).expect("a summary serialises");
+        text.push('\n');
+        text
+    }
+
+    /// `summary.json` as a JSON value (objects' keys sorted; a number that
+    /// is not finite is `null`, as in the file).
+    pub fn summary_value(&self) -> serde_json::Value {
+        serde_json::to_value(self.summary_doc()).expect("a summary serialises")
+    }
+
+    fn summary_doc(&self) -> SummaryJson<'_> {
         let case = &self.loaded.case;
         let s = self.summary;
-        let json = SummaryJson {
+        SummaryJson {
             name: &case.name,
             title: &case.title,
             model: case.model.name(),
@@ -125,11 +105,46 @@ impl RunOutput<'_> {
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
-        };
-        let mut text = serde_json::to_string_pretty(&json).expect("a summary serialises");
-        text.push('\n');
-        text
+        }
     }
+}
+
+/// The numbers of `history.csv` (columns [`HISTORY_HEADER`]): one row
+/// per increment; `depth` is the case's d (for u/d).
+pub fn history_columns(history: &[StepRecord], depth: f64) -> Columns {
+    let mut out = Columns::new(HISTORY_HEADER);
+    for r in history {
+        out.push(&[
+            r.step as f64,
+            r.u,
+            r.u / depth,
+            r.force,
+            r.force_norm,
+            r.force_h,
+            r.force_v,
+            r.beta_deg,
+            r.x_emergence,
+            r.mass,
+            r.y_emergence,
+            r.friction_deg,
+            r.slip,
+            r.dilation_deg,
+            r.dilation_area,
+            r.depth,
+            r.mass_spilled,
+        ]);
+    }
+    out
+}
+
+/// The numbers of `profile.csv` (columns [`PROFILE_HEADER`]): one row per
+/// node of the surface.
+pub fn profile_columns(profile: &[ProfilePoint]) -> Columns {
+    let mut out = Columns::new(PROFILE_HEADER);
+    for p in profile {
+        out.push(&[p.x, p.y, p.accumulated_shear, p.unit_weight, p.ridge_height]);
+    }
+    out
 }
 
 /// The rule by which `summary.json` lists peaks, in words.

@@ -24,17 +24,7 @@ impl FromStr for Override {
         let (key, value) = text
             .split_once('=')
             .ok_or_else(|| bad("expected key.path=value"))?;
-        let key: Vec<String> = key.trim().split('.').map(str::to_string).collect();
-        if key.iter().any(|k| k.is_empty()) {
-            return Err(bad(
-                "expected key.path=value with a non-empty key at each level",
-            ));
-        }
-        Ok(Override {
-            text: text.to_string(),
-            key,
-            value: parse_value(value.trim()),
-        })
+        Override::with_text(text, key.trim(), parse_value(value.trim()))
     }
 }
 
@@ -49,6 +39,27 @@ pub fn parse_value(text: &str) -> toml::Value {
 }
 
 impl Override {
+    /// Sets the dotted `key` to `value`, as `--set key=value` would, for a
+    /// front end that has the value already (no text to parse).
+    pub fn new(key: &str, value: toml::Value) -> Result<Override, InputError> {
+        Override::with_text(&format!("{key}={value}"), key, value)
+    }
+
+    fn with_text(text: &str, key: &str, value: toml::Value) -> Result<Override, InputError> {
+        let key: Vec<String> = key.split('.').map(str::to_string).collect();
+        if key.iter().any(|k| k.is_empty()) {
+            return Err(InputError::Override {
+                text: text.to_string(),
+                message: "expected key.path=value with a non-empty key at each level".into(),
+            });
+        }
+        Ok(Override {
+            text: text.to_string(),
+            key,
+            value,
+        })
+    }
+
     /// The dotted key.
     pub fn key(&self) -> String {
         self.key.join(".")

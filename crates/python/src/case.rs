@@ -1,66 +1,161 @@
-//! Case files: the text of a case is the Python `Case`; reading and
-//! validating it is `soilcut-io`'s (the same as the command line's).
+//! The native side of `soilcut.Case`: a case file parsed once into its
+//! table and read by `soilcut-io` exactly as the command line reads it;
+//! every other call of the extension takes this handle, not text.
 
-use crate::convert::{dict, table, to_toml};
+use crate::convert::{dict, from_toml, table, to_toml};
 use crate::errors::{case_error, case_message};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
-use soilcut_io::{parse_case, LoadedCase};
-use soilcut_study::run::override_of;
+use pyo3::types::{PyDict, PyString};
+use soilcut_io::{load_case_table, parse_case_table, LoadedCase, Override};
+use soilcut_study::BaseCase;
 
-/// Reads and validates a case file's text.
-pub fn load(py: Python<'_>, text: &str) -> PyResult<LoadedCase> {
-    parse_case(text, &[]).map_err(|e| case_error(py, &e))
+/// A validated case: the keys given (as a table and as text) and the case
+/// they make, every default filled in.
+#[pyclass(frozen, module = "soilcut._soilcut", name = "NativeCase")]
+pub struct Case {
+    /// The case file's text as given, or the table's text after `set_keys`.
+    text: String,
+    /// The keys given.
+    table: toml::Table,
+    pub loaded: LoadedCase,
+    /// `case.resolved.toml`, kept for equality and hashing.
+    resolved: String,
 }
 
-fn parse_table(py: Python<'_>, text: &str) -> PyResult<toml::Table> {
-    // A text that does not parse is reported as `parse_case` reports it.
-    text.parse::<toml::Table>().map_err(|_| {
-        load(py, text)
-            .err()
-            .unwrap_or_else(|| case_message(py, "case: not a TOML table"))
-    })
-}
-
-fn table_text(py: Python<'_>, table: &toml::Table) -> PyResult<String> {
-    toml::to_string(table).map_err(|e| case_message(py, format!("case: {e}")))
-}
-
-/// Validates a case and returns its `case.resolved.toml`.
-#[pyfunction]
-pub fn resolve(py: Python<'_>, text: &str) -> PyResult<String> {
-    Ok(load(py, text)?.resolved_toml())
-}
-
-/// The case with each `(key, value)` of `pairs` set as `--set key=value`
-/// sets it, then validated; returns the new text.
-#[pyfunction]
-pub fn set_keys(
-    py: Python<'_>,
-    text: &str,
-    pairs: Vec<(String, Bound<'_, PyAny>)>,
-) -> PyResult<String> {
-    let mut table = parse_table(py, text)?;
-    for (key, value) in &pairs {
-        let value = to_toml(key, value)?;
-        let set = override_of(key, &value).map_err(|e| case_message(py, e))?;
-        set.apply(&mut table).map_err(|e| case_error(py, &e))?;
+impl Case {
+    fn of_table(py: Python<'_>, text: String, table: toml::Table) -> PyResult<Case> {
+        let loaded = load_case_table(table.clone(), &[]).map_err(|e| case_error(py, &e))?;
+        Ok(Case::of_loaded(text, table, loaded))
     }
-    let text = table_text(py, &table)?;
-    load(py, &text)?;
-    Ok(text)
+
+    fn of_loaded(text: String, table: toml::Table, loaded: LoadedCase) -> Case {
+        let resolved = loaded.resolved_toml();
+        Case {
+            text,
+            table,
+            loaded,
+            resolved,
+        }
+    }
+
+    /// The case every default filled in: that of `case.resolved.toml`.
+    pub fn resolved_of(loaded: &LoadedCase) -> Case {
+        Case::of_loaded(
+            loaded.resolved_toml(),
+            loaded.resolved_table(),
+            loaded.clone(),
+        )
+    }
+
+    /// The base of a study of this case.
+    pub fn base(&self, py: Python<'_>) -> PyResult<BaseCase> {
+        BaseCase::from_table(self.table.clone(), vec![]).map_err(|e| case_error(py, &e))
+    }
+
+    /// The handle of a `soilcut.Case`, of this class itself, or of a case
+    /// file's text.
+    pub fn extract<'py>(case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, Case>> {
+        if let Ok(native) = case.cast::<Case>() {
+            return Ok(native.clone());
+        }
+        if let Ok(text) = case.cast::<PyString>() {
+            let native = Case::from_toml(case.py(), &text.to_cow()?)?;
+            return Bound::new(case.py(), native);
+        }
+        match case.getattr("_native") {
+            Ok(native) => Ok(native.cast_into::<Case>()?),
+            Err(_) => Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                "expected a soilcut.Case (or a case file's text), not {}",
+                case.get_type().name()?
+            ))),
+        }
+    }
 }
 
-/// The case file's table as nested dicts.
-#[pyfunction]
-pub fn to_dict<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>> {
-    dict(py, &parse_table(py, text)?)
-}
+#[pymethods]
+impl Case {
+    /// Reads and validates a case file's text.
+    #[staticmethod]
+    fn from_toml(py: Python<'_>, text: &str) -> PyResult<Case> {
+        let table = parse_case_table(text).map_err(|e| case_error(py, &e))?;
+        Case::of_table(py, text.to_string(), table)
+    }
 
-/// A case file's text from nested dicts, validated.
-#[pyfunction]
-pub fn from_dict(py: Python<'_>, d: &Bound<'_, PyDict>) -> PyResult<String> {
-    let text = table_text(py, &table("", d)?)?;
-    load(py, &text)?;
-    Ok(text)
+    /// A case from nested dicts shaped like the case file, validated.
+    #[staticmethod]
+    fn from_dict(py: Python<'_>, d: &Bound<'_, PyDict>) -> PyResult<Case> {
+        let table = table("", d)?;
+        let text = toml::to_string(&table).map_err(|e| case_message(py, format!("case: {e}")))?;
+        Case::of_table(py, text, table)
+    }
+
+    /// A new case with each `(key, value)` of `pairs` set as
+    /// `--set key=value` sets it, then validated.
+    fn set_keys(&self, py: Python<'_>, pairs: Vec<(String, Bound<'_, PyAny>)>) -> PyResult<Case> {
+        let mut table = self.table.clone();
+        for (key, value) in &pairs {
+            let set = Override::new(key, to_toml(key, value)?).map_err(|e| case_error(py, &e))?;
+            set.apply(&mut table).map_err(|e| case_error(py, &e))?;
+        }
+        let text = toml::to_string(&table).map_err(|e| case_message(py, format!("case: {e}")))?;
+        Case::of_table(py, text, table)
+    }
+
+    /// The case file's text: as given, or rewritten after `set_keys`.
+    fn to_toml(&self) -> &str {
+        &self.text
+    }
+
+    /// The keys given as nested dicts.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        dict(py, &self.table)
+    }
+
+    /// The case every default filled in.
+    fn resolved(&self) -> Case {
+        Case::resolved_of(&self.loaded)
+    }
+
+    /// `case.resolved.toml`.
+    fn resolved_toml(&self) -> &str {
+        &self.resolved
+    }
+
+    /// The value of a dotted key of the resolved case, or None.
+    fn get<'py>(&self, py: Python<'py>, key: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let table = self.loaded.resolved_table();
+        let mut parts = key.split('.');
+        let mut value = parts.next().and_then(|p| table.get(p));
+        for part in parts {
+            value = value
+                .and_then(toml::Value::as_table)
+                .and_then(|t| t.get(part));
+        }
+        value.map(|v| from_toml(py, v)).transpose()
+    }
+
+    /// The case's name, title and model name (`original` or `refined`).
+    fn names(&self) -> (&str, &str, &str) {
+        let case = &self.loaded.case;
+        (&case.name, &case.title, case.model.name())
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<Case>()
+            .is_ok_and(|o| o.get().resolved == self.resolved)
+    }
+
+    fn __hash__(&self) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        self.resolved.hash(&mut h);
+        h.finish()
+    }
+
+    /// Pickles as its text (read again when unpickled).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let restore = slf.get_type().getattr("from_toml")?;
+        Ok((restore, (slf.get().text.clone(),)))
+    }
 }

@@ -1,10 +1,11 @@
-//! Python values ↔ TOML values (the case file's types), and columns of
-//! numbers ↔ NumPy arrays.
+//! Python values ↔ TOML values (the case file's types), columns of
+//! numbers → NumPy arrays, JSON values → Python values.
 
 use crate::errors::key_error;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use soilcut_io::Columns;
 
 /// A Python value as the TOML value of `key`: bool, int, float (NumPy
 /// scalars included), str, a list or tuple, a dict with str keys.
@@ -101,14 +102,41 @@ pub fn dict<'py>(py: Python<'py>, table: &toml::Table) -> PyResult<Bound<'py, Py
     Ok(out)
 }
 
-/// Named columns as a dict of float64 arrays, in order.
-pub fn columns<'py>(
-    py: Python<'py>,
-    columns: Vec<(String, Vec<f64>)>,
-) -> PyResult<Bound<'py, PyDict>> {
+/// Columns as a dict of float64 arrays, in order.
+pub fn arrays<'py>(py: Python<'py>, columns: &Columns) -> PyResult<Bound<'py, PyDict>> {
     let out = PyDict::new(py);
-    for (name, values) in columns {
-        out.set_item(name, PyArray1::from_vec(py, values))?;
+    for (name, values) in columns.iter() {
+        out.set_item(name, PyArray1::from_slice(py, values))?;
     }
     Ok(out)
+}
+
+/// A JSON value as a plain Python value (objects as dicts, `null` as None).
+pub fn json<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+    use serde_json::Value;
+    Ok(match value {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => b.into_pyobject(py)?.to_owned().into_any(),
+        Value::Number(n) => match (n.as_i64(), n.as_u64()) {
+            (Some(i), _) => i.into_pyobject(py)?.into_any(),
+            (None, Some(u)) => u.into_pyobject(py)?.into_any(),
+            // Neither integer: a float, which serde_json holds as f64.
+            _ => n.as_f64().into_pyobject(py)?.into_any(),
+        },
+        Value::String(s) => s.into_pyobject(py)?.into_any(),
+        Value::Array(items) => {
+            let list = PyList::empty(py);
+            for item in items {
+                list.append(json(py, item)?)?;
+            }
+            list.into_any()
+        }
+        Value::Object(map) => {
+            let out = PyDict::new(py);
+            for (k, v) in map {
+                out.set_item(k, json(py, v)?)?;
+            }
+            out.into_any()
+        }
+    })
 }

@@ -1,10 +1,14 @@
 //! `soilcut.run(case, ensemble=N)`: the ensemble of `soilcut-study`, held
-//! as a native handle that hands out its files and writes its folder.
+//! as a native handle that hands out its numbers, its members and writes
+//! its folder.
 
+use crate::case::Case;
+use crate::convert::{arrays, json};
 use crate::errors::warn_accuracy;
-use crate::run::output_error;
-use crate::study::{base, study_error};
+use crate::run::{output_error, RunRecords};
+use crate::study::study_error;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use soilcut_study::ensemble::{member_folder, Ensemble, EnsembleResult};
 use soilcut_study::no_progress;
 use std::path::PathBuf;
@@ -17,21 +21,28 @@ pub struct EnsembleRun {
 
 #[pymethods]
 impl EnsembleRun {
-    /// `ensemble.csv`, `summary.json` and `timing.csv`, as (name, contents).
-    fn files(&self) -> Vec<(&'static str, String)> {
-        vec![
-            ("ensemble.csv", self.result.ensemble_csv()),
-            ("summary.json", self.result.summary_json()),
-            ("timing.csv", self.result.timing_csv()),
-        ]
+    /// `ensemble.csv`'s columns as float64 arrays (NaN where the file is
+    /// empty).
+    fn windows<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        arrays(py, &self.result.window_columns())
     }
 
-    /// Each member's folder name and files, in the order of k.
-    fn members(&self) -> Vec<(String, Vec<(&'static str, String)>)> {
+    /// `summary.json` as a dict.
+    fn summary<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json(py, &self.result.summary_value())
+    }
+
+    /// Each member's folder name and run, in the order of k.
+    fn members(&self) -> Vec<(String, RunRecords)> {
         self.result
             .members
             .iter()
-            .map(|m| (member_folder(m.k), m.run.files.clone()))
+            .map(|m| {
+                (
+                    member_folder(m.k),
+                    RunRecords::new(m.loaded.clone(), &m.run),
+                )
+            })
             .collect()
     }
 
@@ -42,18 +53,19 @@ impl EnsembleRun {
     }
 }
 
-/// Runs the ensemble of `members` members of the case `text` on `jobs`
-/// threads, without the interpreter.
+/// Runs the ensemble of `members` members of `case` on `jobs` threads,
+/// without the interpreter.
 #[pyfunction]
-pub fn ensemble(py: Python<'_>, text: &str, members: usize, jobs: usize) -> PyResult<EnsembleRun> {
-    let base = base(py, text)?;
-    let case = base
-        .load(&[])
-        .map_err(|e| crate::errors::case_error(py, &e))?
-        .case;
-    warn_accuracy(py, &case)?;
+pub fn ensemble(
+    py: Python<'_>,
+    case: &Bound<'_, PyAny>,
+    members: usize,
+    jobs: usize,
+) -> PyResult<EnsembleRun> {
+    let case = Case::extract(case)?;
+    warn_accuracy(py, &case.get().loaded.case)?;
     let study = Ensemble {
-        base,
+        base: case.get().base(py)?,
         members,
         jobs,
     };

@@ -1,10 +1,11 @@
 //! Rust errors as the Python package's exceptions (defined in
 //! `soilcut/_errors.py`, so that they carry docstrings and attributes).
 
+use crate::step::Step;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use soilcut_io::InputError;
-use soilcut_model::{AdvanceError, StepError};
+use soilcut_model::{AdvanceError, StepError, StepRecord};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -62,6 +63,19 @@ fn step_error(py: Python<'_>, e: StepError) -> PyErr {
     raise(py, "StepError", e.to_string(), None)
 }
 
+/// `soilcut.StepError` with `steps`, the records of the increments made
+/// before the one that failed.
+fn step_error_after(py: Python<'_>, e: StepError, records: Vec<StepRecord>) -> PyErr {
+    let made = package_class(py, "StepError").and_then(|c| {
+        let steps: Vec<Step> = records.into_iter().map(Step).collect();
+        c.call1((e.to_string(), py.None(), steps))
+    });
+    match made {
+        Ok(e) => PyErr::from_value(e),
+        Err(e) => e,
+    }
+}
+
 /// `soilcut.SnapshotError`: bytes that are no snapshot this build restores.
 pub fn snapshot_error(py: Python<'_>, message: impl Into<String>) -> PyErr {
     raise(py, "SnapshotError", message.into(), None)
@@ -82,7 +96,7 @@ pub fn advance_error(py: Python<'_>, e: AdvanceError) -> PyErr {
                 Some(c.key),
             )
         }
-        AdvanceError::Step { error, .. } => step_error(py, error),
+        AdvanceError::Step { records, error } => step_error_after(py, error, records),
     }
 }
 

@@ -17,16 +17,14 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    m.add_function(wrap_pyfunction!(case::resolve, m)?)?;
-    m.add_function(wrap_pyfunction!(case::set_keys, m)?)?;
-    m.add_function(wrap_pyfunction!(case::to_dict, m)?)?;
-    m.add_function(wrap_pyfunction!(case::from_dict, m)?)?;
+    m.add_class::<case::Case>()?;
+    m.add_class::<run::RunRecords>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(run::csv_columns, m)?)?;
-    m.add_function(wrap_pyfunction!(run::write_run_dir, m)?)?;
     m.add_function(wrap_pyfunction!(study::analytic, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_points, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_header, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;

@@ -1,58 +1,124 @@
-//! `soilcut.run`: a case run to its end, returned as the files
-//! `soilcut run` writes (the Python package reads its arrays from them, so
-//! they are the files' numbers exactly).
+//! `soilcut.run`: a case run to its end. The result is a native handle
+//! holding the run's numbers (`soilcut_io::RunTables`, from which its files
+//! are written) and its files, for `save` and pickling.
 
-use crate::case::load;
-use crate::convert::columns;
-use crate::errors::detached;
+use crate::case::Case;
+use crate::convert::{arrays, json};
+use crate::errors::{case_error, detached};
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_io::{record_files, OutputError, Table};
+use soilcut_io::{record_files, Columns, LoadedCase, OutputError, RecordedRun, RunTables};
 use soilcut_model::Simulation;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-/// The run's files: `(name, contents)` of history.csv, profile.csv,
-/// summary.json, case.resolved.toml and frames.csv. Runs without the
-/// interpreter.
-#[pyfunction]
-pub fn run(py: Python<'_>, text: &str) -> PyResult<Vec<(&'static str, String)>> {
-    let loaded = load(py, text)?;
-    crate::errors::warn_accuracy(py, &loaded.case)?;
-    let mut sim =
-        Simulation::new(&loaded.case).map_err(|e| crate::errors::case_error(py, &e.into()))?;
-    detached(py, || Ok(record_files(&loaded, &mut sim, || {})?.files))
+/// A finished run (the extension's side of `soilcut.RunResult`).
+#[pyclass(frozen, module = "soilcut._soilcut")]
+pub struct RunRecords {
+    loaded: LoadedCase,
+    /// (name, contents): history.csv, profile.csv, summary.json,
+    /// case.resolved.toml, frames.csv.
+    files: Vec<(String, String)>,
+    tables: RunTables,
 }
 
-/// The columns of a CSV file of numbers (history.csv, profile.csv,
-/// frames.csv, landscape.csv) as float64 arrays, by name.
+impl RunRecords {
+    pub fn new(loaded: LoadedCase, run: &RecordedRun) -> Self {
+        RunRecords {
+            loaded,
+            files: run
+                .files
+                .iter()
+                .map(|(n, c)| (n.to_string(), c.clone()))
+                .collect(),
+            tables: run.tables.clone(),
+        }
+    }
+}
+
+#[pymethods]
+impl RunRecords {
+    /// `history.csv`'s columns as float64 arrays.
+    fn history<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        arrays(py, &self.tables.history)
+    }
+
+    /// `profile.csv`'s columns as float64 arrays.
+    fn profile<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        arrays(py, &self.tables.profile)
+    }
+
+    /// `frames.csv`'s columns as float64 arrays.
+    fn frames<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        arrays(py, &self.tables.frames)
+    }
+
+    /// `summary.json` as a dict.
+    fn summary<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json(py, &self.tables.summary)
+    }
+
+    /// The case as run, every default filled in.
+    fn case(&self) -> Case {
+        Case::resolved_of(&self.loaded)
+    }
+
+    /// The files `soilcut run` writes, as (name, contents).
+    fn files(&self) -> Vec<(String, String)> {
+        self.files.clone()
+    }
+
+    /// A run restored from `files()` (unpickling): its numbers are read
+    /// back from the files' text, which holds them exactly.
+    #[staticmethod]
+    fn from_files(py: Python<'_>, files: Vec<(String, String)>) -> PyResult<Self> {
+        let tables = RunTables::from_files(&files)
+            .map_err(|e| PyValueError::new_err(format!("{}: {e}", e.path.display())))?;
+        let (_, resolved) = files
+            .iter()
+            .find(|(n, _)| n == "case.resolved.toml")
+            .ok_or_else(|| PyValueError::new_err("case.resolved.toml: the file is missing"))?;
+        let loaded = soilcut_io::parse_case(resolved, &[]).map_err(|e| case_error(py, &e))?;
+        Ok(RunRecords {
+            loaded,
+            files,
+            tables,
+        })
+    }
+
+    /// Writes the run's folder as `soilcut run` does: the files and, if
+    /// `pictures`, the plots and the animation drawn from them. An existing,
+    /// non-empty `folder` is replaced only if `force`.
+    fn write(&self, py: Python<'_>, folder: PathBuf, force: bool, pictures: bool) -> PyResult<()> {
+        let files: Vec<(&str, String)> = self
+            .files
+            .iter()
+            .map(|(n, c)| (n.as_str(), c.clone()))
+            .collect();
+        py.detach(|| soilcut_io::write_run_dir(&folder, &files, force, pictures))
+            .map_err(output_error)
+    }
+}
+
+/// Runs the case to its end without the interpreter.
+#[pyfunction]
+pub fn run(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<RunRecords> {
+    let case = Case::extract(case)?;
+    let loaded = &case.get().loaded;
+    crate::errors::warn_accuracy(py, &loaded.case)?;
+    let mut sim = Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
+    let run = detached(py, || record_files(loaded, &mut sim, || {}))?;
+    Ok(RunRecords::new(loaded.clone(), &run))
+}
+
+/// The columns of one of soilcut's CSV files of numbers (history.csv,
+/// profile.csv, frames.csv, landscape.csv) as float64 arrays, by name: to
+/// read a folder the command line wrote.
 #[pyfunction]
 pub fn csv_columns<'py>(py: Python<'py>, name: &str, text: &str) -> PyResult<Bound<'py, PyDict>> {
-    let table = Table::parse(Path::new(name), text)
-        .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?;
-    let named = table
-        .header()
-        .iter()
-        .map(|c| Ok((c.clone(), table.column(c)?)))
-        .collect::<Result<Vec<_>, soilcut_io::RunFilesError>>()
-        .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?;
-    columns(py, named)
-}
-
-/// Writes a run's folder as `soilcut run` does: the files and, if
-/// `pictures`, the plots and the animation drawn from them. An existing,
-/// non-empty `folder` is replaced only if `force`.
-#[pyfunction]
-pub fn write_run_dir(
-    py: Python<'_>,
-    folder: PathBuf,
-    files: Vec<(String, String)>,
-    force: bool,
-    pictures: bool,
-) -> PyResult<()> {
-    let files: Vec<(&str, String)> = files.iter().map(|(n, c)| (n.as_str(), c.clone())).collect();
-    py.detach(|| soilcut_io::write_run_dir(&folder, &files, force, pictures))
-        .map_err(output_error)
+    let c =
+        Columns::parse(name, text).map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?;
+    arrays(py, &c)
 }
 
 /// An output folder's error as Python's: `FileExistsError` for an occupied

@@ -2,14 +2,14 @@
 //! Python (a controller's loop), copied, pickled and restored from
 //! snapshots (docs/model.md §17).
 
-use crate::case::load;
-use crate::convert::columns;
+use crate::case::Case;
+use crate::convert::arrays;
 use crate::errors::{advance_error, case_error, detached, detached_map, snapshot_error};
 use crate::step::Step;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyTuple};
-use soilcut_io::{parse_case, LoadedCase};
+use soilcut_io::{parse_case, profile_columns, LoadedCase};
 
 /// A running simulation of one case.
 #[pyclass(module = "soilcut._soilcut")]
@@ -28,11 +28,7 @@ impl Simulation {
     /// case file).
     #[new]
     fn new(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let text: String = match case.extract::<String>() {
-            Ok(text) => text,
-            Err(_) => case.call_method0("to_toml")?.extract()?,
-        };
-        let loaded = load(py, &text)?;
+        let loaded = Case::extract(case)?.get().loaded.clone();
         crate::errors::warn_accuracy(py, &loaded.case)?;
         let sim =
             soilcut_model::Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
@@ -140,18 +136,7 @@ impl Simulation {
     /// (force/length³), ridge_height (length: the side heaps' crest beside
     /// a blade of finite width, 0 in plane strain).
     fn surface<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let p = self.sim.profile();
-        let column = |f: fn(&soilcut_model::ProfilePoint) -> f64| p.iter().map(f).collect();
-        columns(
-            py,
-            vec![
-                ("x".into(), column(|q| q.x)),
-                ("y".into(), column(|q| q.y)),
-                ("accumulated_shear".into(), column(|q| q.accumulated_shear)),
-                ("unit_weight".into(), column(|q| q.unit_weight)),
-                ("ridge_height".into(), column(|q| q.ridge_height)),
-            ],
-        )
+        arrays(py, &profile_columns(&self.sim.profile()))
     }
 
     /// Blade displacement u (length): the face is at x = u.
@@ -203,12 +188,13 @@ impl Simulation {
     fn case<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let Some(loaded) = &self.loaded else {
             return Err(PyRuntimeError::new_err(
-                "restored from a snapshot made without the case file's text (outside Python): its case is not known as a case file",
+                "restored from a snapshot made without the case file's text: its case is not known as a case file",
             ));
         };
+        let native = Bound::new(py, Case::resolved_of(loaded))?;
         py.import("soilcut")?
             .getattr("Case")?
-            .call1((loaded.resolved_toml(),))
+            .call_method1("_from_native", (native,))
     }
 
     fn __iter__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {

@@ -1,18 +1,18 @@
 //! Studies of many runs (`soilcut-study`) and the analytical baselines.
 
-use crate::case::load;
-use crate::convert::{from_toml, to_toml};
+use crate::case::Case;
+use crate::convert::{arrays, from_toml, to_toml};
 use crate::errors::{case_error, case_message, detached};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
-use soilcut_io::{landscape_at, landscape_csv};
+use soilcut_io::{check_landscape_at, landscape_at, landscape_columns};
 use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::Simulation;
-use soilcut_study::fit::{Compare, Fit, Method, Test};
-use soilcut_study::sample::{Sample, Values, Vary};
+use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
+use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::{Sweep, SweepResult};
-use soilcut_study::{no_progress, BaseCase, StudyError};
+use soilcut_study::{no_progress, StudyError};
 
 pub fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
     match e {
@@ -21,62 +21,61 @@ pub fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
     }
 }
 
-pub fn base(py: Python<'_>, text: &str) -> PyResult<BaseCase> {
-    BaseCase::new(text.to_string(), vec![]).map_err(|e| crate::errors::case_error(py, &e))
-}
-
 /// One varied key: a spec string as `--vary` takes it (`lo:hi:n`, `lo:hi`,
 /// `a,b,c`), a tuple `(lo, hi)` (sampled) or `(lo, hi, n)` (grid), or any
 /// other sequence of values.
 fn vary(key: &str, spec: &Bound<'_, PyAny>) -> PyResult<Vary> {
     let py = spec.py();
-    if let Ok(text) = spec.cast::<PyString>() {
-        return format!("{key}={text}")
-            .parse::<Vary>()
-            .map_err(|e| study_error(py, e));
-    }
-    let values = if let Ok(t) = spec.cast::<PyTuple>() {
-        let spec_text = match t.len() {
-            2 => format!("{}:{}", t.get_item(0)?, t.get_item(1)?),
-            3 => format!("{}:{}:{}", t.get_item(0)?, t.get_item(1)?, t.get_item(2)?),
+    let made = if let Ok(text) = spec.cast::<PyString>() {
+        format!("{key}={text}").parse::<Vary>()
+    } else if let Ok(t) = spec.cast::<PyTuple>() {
+        let wrong = |what: &str, must: &str| {
+            PyValueError::new_err(format!("vary {key}: {what} of (lo, hi, n) must be {must}"))
+        };
+        let number = |i: usize, what: &str| {
+            let item = t.get_item(i)?;
+            item.extract::<f64>().map_err(|_| wrong(what, "a number"))
+        };
+        match t.len() {
+            2 => Vary::range(key, number(0, "lo")?, number(1, "hi")?),
+            3 => Vary::grid(
+                key,
+                number(0, "lo")?,
+                number(1, "hi")?,
+                t.get_item(2)?
+                    .extract::<usize>()
+                    .map_err(|_| wrong("n", "a whole number >= 1"))?,
+            ),
             n => {
                 return Err(PyValueError::new_err(format!(
                     "vary {key}: a tuple is (lo, hi) or (lo, hi, n), not {n} items; give a list of values"
                 )))
             }
-        };
-        return vary(key, &PyString::new(py, &spec_text).into_any());
+        }
     } else {
-        let items = spec
-            .try_iter()
-            .map_err(|_| {
-                PyValueError::new_err(format!(
-                    "vary {key}: expected a spec string, a tuple or a sequence of values"
-                ))
-            })?
+        let items = spec.try_iter().map_err(|_| {
+            PyValueError::new_err(format!(
+                "vary {key}: expected a spec string, a tuple or a sequence of values"
+            ))
+        })?;
+        let values = items
             .map(|item| to_toml(key, &item?))
             .collect::<PyResult<Vec<_>>>()?;
-        if items.is_empty() {
-            return Err(PyValueError::new_err(format!("vary {key}: no values")));
-        }
-        Values::List(items)
+        Vary::list(key, values)
     };
-    Ok(Vary {
-        key: key.to_string(),
-        values,
-    })
+    made.map_err(|e| study_error(py, e))
 }
 
 fn sweep_of(
     py: Python<'_>,
-    text: &str,
+    case: &Bound<'_, PyAny>,
     varies: Vec<(String, Bound<'_, PyAny>)>,
     sample: &str,
     seed: u64,
     jobs: usize,
 ) -> PyResult<Sweep> {
     Ok(Sweep {
-        base: base(py, text)?,
+        base: Case::extract(case)?.get().base(py)?,
         varies: varies
             .iter()
             .map(|(k, spec)| vary(k, spec))
@@ -94,12 +93,12 @@ type Points<'py> = Vec<Vec<Bound<'py, PyAny>>>;
 #[pyfunction]
 pub fn sweep_points<'py>(
     py: Python<'py>,
-    text: &str,
+    case: &Bound<'py, PyAny>,
     varies: Vec<(String, Bound<'py, PyAny>)>,
     sample: &str,
     seed: u64,
 ) -> PyResult<(Vec<String>, Points<'py>)> {
-    let sweep = sweep_of(py, text, varies, sample, seed, 1)?;
+    let sweep = sweep_of(py, case, varies, sample, seed, 1)?;
     let keys = sweep.varies.iter().map(|v| v.key.clone()).collect();
     let points = sweep.points().map_err(|e| study_error(py, e))?;
     let points = points
@@ -114,37 +113,40 @@ pub fn sweep_points<'py>(
 #[pyfunction]
 pub fn sweep_csv(
     py: Python<'_>,
-    text: &str,
+    case: &Bound<'_, PyAny>,
     varies: Vec<(String, Bound<'_, PyAny>)>,
     sample: &str,
     seed: u64,
     jobs: usize,
 ) -> PyResult<(String, String)> {
-    let sweep = sweep_of(py, text, varies, sample, seed, jobs)?;
+    let sweep = sweep_of(py, case, varies, sample, seed, jobs)?;
     let result = py
         .detach(|| sweep.run(&no_progress))
         .map_err(|e| study_error(py, e))?;
     Ok((result.csv(), result.timing_csv()))
 }
 
-/// Run `run` of `total` of a sweep over `keys`: its line of `sweep.csv`
-/// (without the header) and its wall time. With `run = 0` (no run): the
-/// header of `sweep.csv`.
+/// The header line of `sweep.csv` for a sweep over `keys`.
+#[pyfunction]
+pub fn sweep_header(keys: Vec<String>) -> String {
+    SweepResult { keys, rows: vec![] }.csv()
+}
+
+/// Run `run` (from 1) of `total` of a sweep over `keys`: its line of
+/// `sweep.csv` (without the header) and its wall time.
 #[pyfunction]
 pub fn sweep_row(
     py: Python<'_>,
-    text: &str,
+    case: &Bound<'_, PyAny>,
     keys: Vec<String>,
     values: Vec<Bound<'_, PyAny>>,
     run: usize,
     total: usize,
 ) -> PyResult<(String, f64)> {
-    let mut result = SweepResult {
-        keys: keys.clone(),
-        rows: vec![],
-    };
-    if run == 0 {
-        return Ok((result.csv(), 0.0));
+    if run == 0 || run > total {
+        return Err(PyValueError::new_err(format!(
+            "run {run}: runs are numbered from 1 to total = {total}"
+        )));
     }
     let values = keys
         .iter()
@@ -152,7 +154,7 @@ pub fn sweep_row(
         .map(|(k, v)| to_toml(k, v))
         .collect::<PyResult<Vec<_>>>()?;
     let sweep = Sweep {
-        base: base(py, text)?,
+        base: Case::extract(case)?.get().base(py)?,
         varies: vec![],
         sample: Sample::Grid,
         jobs: 1,
@@ -162,7 +164,10 @@ pub fn sweep_row(
         .detach(|| sweep.run_point(&keys, run, total, values))
         .map_err(|e| study_error(py, e))?;
     let wall_time_s = row.wall_time_s;
-    result.rows.push(row);
+    let result = SweepResult {
+        keys,
+        rows: vec![row],
+    };
     let csv = result.csv();
     let line = csv.split_once('\n').map_or("", |(_, rows)| rows);
     Ok((line.to_string(), wall_time_s))
@@ -176,8 +181,9 @@ pub fn sweep_row(
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
     py: Python<'py>,
-    text: &str,
+    case: &Bound<'py, PyAny>,
     measured: Vec<(f64, f64)>,
+    width: Option<f64>,
     free: Vec<String>,
     bounds: Vec<(String, f64, f64)>,
     objective: &str,
@@ -186,7 +192,11 @@ pub fn fit<'py>(
     seed: u64,
     jobs: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let title = load(py, text)?.case.title;
+    let case = Case::extract(case)?;
+    let case = case.get();
+    let title = case.loaded.case.title.clone();
+    let w = measured_width(width, &case.loaded.case, "width").map_err(|e| study_error(py, e))?;
+    let measured: Vec<(f64, f64)> = measured.iter().map(|&(u, p)| (u, p / w)).collect();
     let compare: Compare = objective
         .parse()
         .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
@@ -198,7 +208,7 @@ pub fn fit<'py>(
     let fit = Fit {
         tests: vec![Test {
             name: "measured".to_string(),
-            base: base(py, text)?,
+            base: case.base(py)?,
             measured,
             weights,
         }],
@@ -266,8 +276,8 @@ fn baseline<'py>(py: Python<'py>, b: Option<Baseline>, norm: f64) -> PyResult<Bo
 /// `soilcut analytic` prints them: `rankine`, `coulomb` and `fee`, each a
 /// dict (or None where no wedge is admissible).
 #[pyfunction]
-pub fn analytic<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>> {
-    let case = load(py, text)?.case;
+pub fn analytic<'py>(py: Python<'py>, case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    let case = Case::extract(case)?.get().loaded.case.clone();
     let wedge = Wedge::of_case(&case);
     let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
     let out = PyDict::new(py);
@@ -287,18 +297,21 @@ pub fn analytic<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyDict>
 }
 
 /// The landscape of `soilcut landscape --at`: every candidate mechanism at
-/// the first increment evaluated at u ≥ `at`·d, as `(u, landscape.csv)`.
+/// the first increment evaluated at u ≥ `at`·d, as `(u, landscape.csv's
+/// columns)`.
 #[pyfunction]
-pub fn landscape(py: Python<'_>, text: &str, at: f64) -> PyResult<(f64, String)> {
-    let case = load(py, text)?.case;
-    let last = case.run.travel / case.blade.depth;
-    if !(at.is_finite() && (0.0..=last).contains(&at)) {
-        return Err(PyValueError::new_err(format!(
-            "at must be a number from 0 to run.travel / blade.depth = {last} (got {at})"
-        )));
-    }
+pub fn landscape<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
+    at: f64,
+) -> PyResult<(f64, Bound<'py, PyDict>)> {
+    let case = Case::extract(case)?.get().loaded.case.clone();
+    check_landscape_at(&case, "at", at).map_err(PyValueError::new_err)?;
     let mut sim = Simulation::new(&case).map_err(|e| case_error(py, &e.into()))?;
     let candidates = detached(py, || landscape_at(&mut sim, at))?;
     let u = sim.blade_position();
-    Ok((u, landscape_csv(&candidates, u, case.blade.depth)))
+    Ok((
+        u,
+        arrays(py, &landscape_columns(&candidates, u, case.blade.depth))?,
+    ))
 }

@@ -24,7 +24,7 @@ pub mod report;
 pub mod search;
 
 pub use bounds::{default_bounds, free_keys, is_angle, parse_bounds, Free};
-pub use objective::{interpolate, Compare, Test};
+pub use objective::{interpolate, measured_width, Compare, Test};
 
 use crate::error::StudyError;
 use crate::run::RunResult;

@@ -1,16 +1,18 @@
 //! One run of a case with overrides: the unit every study is made of.
 
-use soilcut_io::{parse_case, record_files, InputError, LoadedCase, Override, RecordedRun};
+use soilcut_io::{
+    load_case_table, parse_case_table, record_files, InputError, LoadedCase, Override, RecordedRun,
+};
 use soilcut_model::{ProfilePoint, Simulation, StepRecord, Summary};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 use std::time::Instant;
 
-/// The case a study starts from: the text of its file and the `--set`
-/// overrides given for every run.
+/// The case a study starts from: the table of its file (parsed once) and
+/// the `--set` overrides given for every run.
 #[derive(Clone, Debug)]
 pub struct BaseCase {
-    text: String,
+    table: toml::Table,
     overrides: Vec<Override>,
 }
 
@@ -18,7 +20,13 @@ impl BaseCase {
     /// The case file's text and the overrides of every run. Checks that
     /// the case reads (its runs may still fail).
     pub fn new(text: String, overrides: Vec<Override>) -> Result<Self, InputError> {
-        let base = BaseCase { text, overrides };
+        BaseCase::from_table(parse_case_table(&text)?, overrides)
+    }
+
+    /// [`BaseCase::new`] on the case file's table (a front end that holds
+    /// the case as a table already).
+    pub fn from_table(table: toml::Table, overrides: Vec<Override>) -> Result<Self, InputError> {
+        let base = BaseCase { table, overrides };
         base.load(&[])?;
         Ok(base)
     }
@@ -34,7 +42,7 @@ impl BaseCase {
         let mut overrides = self.overrides.clone();
         overrides.extend_from_slice(extra);
         BaseCase {
-            text: self.text.clone(),
+            table: self.table.clone(),
             overrides,
         }
     }
@@ -42,7 +50,7 @@ impl BaseCase {
     /// The case with `extra` overrides applied after the base ones.
     pub fn load(&self, extra: &[Override]) -> Result<LoadedCase, InputError> {
         let all: Vec<Override> = self.overrides.iter().chain(extra).cloned().collect();
-        parse_case(&self.text, &all)
+        load_case_table(self.table.clone(), &all)
     }
 
     /// Runs the case with `extra` overrides. Every failure (an invalid
@@ -57,10 +65,7 @@ impl BaseCase {
     /// overrides), e.g. `soil.friction.peak`.
     pub fn number(&self, key: &str) -> Result<f64, String> {
         let loaded = self.load(&[]).map_err(|e| e.to_string())?;
-        let table: toml::Table = loaded
-            .resolved_toml()
-            .parse()
-            .map_err(|e: toml::de::Error| e.to_string())?;
+        let table = loaded.resolved_table();
         let mut value = None;
         let mut current = Some(&table);
         for part in key.split('.') {
@@ -130,9 +135,7 @@ fn caught<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
 
 /// An `Override` setting `key` to `value`, as `--set key=value` would.
 pub fn override_of(key: &str, value: &toml::Value) -> Result<Override, String> {
-    format!("{key}={value}")
-        .parse::<Override>()
-        .map_err(|e| e.to_string())
+    Override::new(key, value.clone()).map_err(|e| e.to_string())
 }
 
 /// Everything a finished run produced.

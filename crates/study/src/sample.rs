@@ -58,6 +58,65 @@ fn finite(text: &str, part: &str) -> Result<f64, StudyError> {
     }
 }
 
+/// The rules of every spec, whether read from `--vary` text or given as
+/// values by a front end (Python's tuples and lists): one function each,
+/// so both refuse the same specs with the same words.
+impl Vary {
+    /// `key` over `n` evenly spaced values from `lo` to `hi`, both
+    /// included (`lo:hi:n`).
+    pub fn grid(key: &str, lo: f64, hi: f64, n: usize) -> Result<Vary, StudyError> {
+        let text = format!("{key}={lo}:{hi}:{n}");
+        Vary::check_range(&text, lo, hi)?;
+        if n == 0 {
+            return Err(spec_error(
+                &text,
+                "n of lo:hi:n must be a whole number >= 1",
+            ));
+        }
+        if n > 1 && hi == lo {
+            return Err(spec_error(&text, "lo:hi:n with n > 1 needs hi > lo"));
+        }
+        Vary::of(&text, key, Values::Grid { lo, hi, n })
+    }
+
+    /// `key` over the interval from `lo` to `hi`, sampled (`lo:hi`).
+    pub fn range(key: &str, lo: f64, hi: f64) -> Result<Vary, StudyError> {
+        let text = format!("{key}={lo}:{hi}");
+        Vary::check_range(&text, lo, hi)?;
+        Vary::of(&text, key, Values::Range { lo, hi })
+    }
+
+    /// `key` over these values (`a,b,c`).
+    pub fn list(key: &str, values: Vec<toml::Value>) -> Result<Vary, StudyError> {
+        if values.is_empty() {
+            return Err(spec_error(&format!("{key}="), "no values"));
+        }
+        Vary::of(&format!("{key}=a,b,c"), key, Values::List(values))
+    }
+
+    fn check_range(text: &str, lo: f64, hi: f64) -> Result<(), StudyError> {
+        for x in [lo, hi] {
+            if !x.is_finite() {
+                return Err(spec_error(text, &format!("{x} is not a finite number")));
+            }
+        }
+        if hi < lo {
+            return Err(spec_error(text, "hi must be >= lo"));
+        }
+        Ok(())
+    }
+
+    fn of(text: &str, key: &str, values: Values) -> Result<Vary, StudyError> {
+        if key.is_empty() || key.split('.').any(str::is_empty) {
+            return Err(spec_error(text, "expected a non-empty key.path"));
+        }
+        Ok(Vary {
+            key: key.to_string(),
+            values,
+        })
+    }
+}
+
 impl FromStr for Vary {
     type Err = StudyError;
 
@@ -65,46 +124,31 @@ impl FromStr for Vary {
         let (key, spec) = text
             .split_once('=')
             .ok_or_else(|| spec_error(text, "expected key.path=lo:hi:n, lo:hi or a,b,c"))?;
-        let key = key.trim();
-        if key.is_empty() || key.split('.').any(str::is_empty) {
-            return Err(spec_error(text, "expected a non-empty key.path"));
-        }
-        let spec = spec.trim();
-        let values = if spec.contains(':') && !spec.contains(',') {
-            let parts: Vec<&str> = spec.split(':').collect();
-            let lo = finite(text, parts[0])?;
-            let hi = finite(text, parts[1])?;
-            if hi < lo {
-                return Err(spec_error(text, "hi must be >= lo"));
-            }
-            match parts.len() {
-                2 => Values::Range { lo, hi },
-                3 => {
-                    let n = parts[2].trim().parse::<usize>().ok().filter(|&n| n >= 1);
-                    let n = n.ok_or_else(|| {
-                        spec_error(text, "n of lo:hi:n must be a whole number >= 1")
-                    })?;
-                    if n > 1 && hi == lo {
-                        return Err(spec_error(text, "lo:hi:n with n > 1 needs hi > lo"));
-                    }
-                    Values::Grid { lo, hi, n }
-                }
-                _ => return Err(spec_error(text, "expected lo:hi:n or lo:hi")),
-            }
-        } else {
-            let items: Vec<toml::Value> = spec
-                .split(',')
-                .map(|s| soilcut_io::parse_value(s.trim()))
-                .collect();
+        let (key, spec) = (key.trim(), spec.trim());
+        if !spec.contains(':') || spec.contains(',') {
             if spec.split(',').any(|s| s.trim().is_empty()) {
                 return Err(spec_error(text, "a list item is empty"));
             }
-            Values::List(items)
-        };
-        Ok(Vary {
-            key: key.to_string(),
-            values,
-        })
+            let items = spec
+                .split(',')
+                .map(|s| soilcut_io::parse_value(s.trim()))
+                .collect();
+            return Vary::list(key, items);
+        }
+        let parts: Vec<&str> = spec.split(':').collect();
+        let lo = finite(text, parts[0])?;
+        let hi = finite(text, parts[1])?;
+        match parts[2..] {
+            [] => Vary::range(key, lo, hi),
+            [n] => {
+                let n = n
+                    .trim()
+                    .parse::<usize>()
+                    .map_err(|_| spec_error(text, "n of lo:hi:n must be a whole number >= 1"))?;
+                Vary::grid(key, lo, hi, n)
+            }
+            _ => Err(spec_error(text, "expected lo:hi:n or lo:hi")),
+        }
     }
 }
 
@@ -280,6 +324,19 @@ mod tests {
             "a=nan:2",
         ] {
             assert!(bad.parse::<Vary>().is_err(), "{bad}");
+        }
+        // Values given directly obey the same rules as the text.
+        assert_eq!(Vary::grid("a", 30.0, 45.0, 7).unwrap(), vary("a=30:45:7"));
+        assert_eq!(Vary::range("a", -1.0, 2.0).unwrap(), vary("a=-1:2"));
+        for bad in [
+            Vary::grid("a", 2.0, 1.0, 3),
+            Vary::grid("a", 1.0, 2.0, 0),
+            Vary::grid("a", 1.0, 1.0, 3),
+            Vary::range("a", f64::NAN, 2.0),
+            Vary::range("a..b", 1.0, 2.0),
+            Vary::list("a", vec![]),
+        ] {
+            assert!(bad.is_err(), "{bad:?}");
         }
     }
 

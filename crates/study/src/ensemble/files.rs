@@ -5,7 +5,7 @@ use super::{member_folder, EnsembleResult, Member};
 use crate::accuracy::{Spread, WHOLE_RUN, WINDOW_CEILING, WINDOW_FLOOR};
 use crate::csv;
 use serde_json::{json, Value};
-use soilcut_io::OutputError;
+use soilcut_io::{Columns, OutputError};
 use soilcut_plot::Envelope;
 use std::path::Path;
 
@@ -37,9 +37,21 @@ fn spread_json(s: &Spread) -> Value {
 impl EnsembleResult {
     /// `ensemble.csv`: one row per unit window k ≤ u/d < k + 1: the
     /// members' window means of P/(γ0 d²), their mean, sample standard
-    /// deviation, least and largest, then each member's value.
+    /// deviation, least and largest, then each member's value (a figure
+    /// that does not exist, e.g. the spread of one member, is empty).
     pub fn ensemble_csv(&self) -> String {
-        let mut header: Vec<String> = [
+        let columns = self.window_columns();
+        let mut out = csv::line(columns.names());
+        for i in 0..columns.len() {
+            let row: Vec<String> = columns.iter().map(|(_, v)| csv::number(v[i])).collect();
+            out.push_str(&csv::line(&row));
+        }
+        out
+    }
+
+    /// The numbers of `ensemble.csv` (NaN where the file is empty).
+    pub fn window_columns(&self) -> Columns {
+        let mut names: Vec<String> = [
             "u_over_d_from",
             "u_over_d_to",
             "members",
@@ -50,20 +62,20 @@ impl EnsembleResult {
         ]
         .map(String::from)
         .to_vec();
-        header.extend(self.members.iter().map(|m| member_folder(m.k)));
-        let mut out = csv::line(&header);
+        names.extend(self.members.iter().map(|m| member_folder(m.k)));
+        let mut out = Columns::named(names);
         for (w, s) in self.windows.iter().enumerate() {
             let mut row = vec![
-                w.to_string(),
-                (w + 1).to_string(),
-                s.n.to_string(),
-                csv::number(s.mean),
-                csv::number(s.std),
-                csv::number(s.min),
-                csv::number(s.max),
+                w as f64,
+                (w + 1) as f64,
+                s.n as f64,
+                s.mean,
+                s.std,
+                s.min,
+                s.max,
             ];
-            row.extend(self.members.iter().map(|m| csv::number(m.window_means[w])));
-            out.push_str(&csv::line(&row));
+            row.extend(self.members.iter().map(|m| m.window_means[w]));
+            out.push(&row);
         }
         out
     }
@@ -72,6 +84,14 @@ impl EnsembleResult {
     /// of the largest and the first force and of every window mean. The
     /// same on any number of threads (wall times are in [`Self::timing_csv`]).
     pub fn summary_json(&self) -> String {
+        let mut text =
+            serde_json::to_string_pretty(&self.summary_value()).expect("a summary serialises");
+        text.push('\n');
+        text
+    }
+
+    /// `summary.json` as a JSON value.
+    pub fn summary_value(&self) -> Value {
         let p = &self.perturbation;
         let windows: Vec<Value> = self
             .windows
@@ -84,7 +104,7 @@ impl EnsembleResult {
                 v
             })
             .collect();
-        let json = json!({
+        json!({
             "name": self.name,
             "title": self.title,
             "members": self.members.len(),
@@ -101,10 +121,7 @@ impl EnsembleResult {
             "initial_force_norm": spread_json(&self.initial_force),
             "windows": windows,
             "accuracy_rule": accuracy_rule(),
-        });
-        let mut text = serde_json::to_string_pretty(&json).expect("a summary serialises");
-        text.push('\n');
-        text
+        })
     }
 
     /// `timing.csv`: each member's k and the wall time of its simulation, s

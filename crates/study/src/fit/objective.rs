@@ -18,6 +18,7 @@
 
 use crate::error::StudyError;
 use crate::run::{override_of, BaseCase, RunResult};
+use soilcut_model::Case;
 use std::str::FromStr;
 
 /// How a simulated curve is compared with a measured one.
@@ -75,6 +76,30 @@ impl Compare {
             ),
         }
     }
+}
+
+/// The divisor of measured forces that are totals over a blade `width`
+/// (`name`: how the caller's user gave it, `--width` or `width`): the
+/// width, or 1 without one. Refused when not a finite number > 0, and when
+/// the case has `blade.width`: its simulated force is the blade's total
+/// already, and dividing the measured one would compare a total with a
+/// force per unit width.
+pub fn measured_width(width: Option<f64>, case: &Case, name: &str) -> Result<f64, StudyError> {
+    let Some(w) = width else {
+        return Ok(1.0);
+    };
+    if !(w.is_finite() && w > 0.0) {
+        return Err(StudyError::Spec(format!(
+            "{name} {w}: must be a finite number > 0"
+        )));
+    }
+    if case.blade.width.is_some() {
+        return Err(StudyError::Spec(format!(
+            "{name} {w}: the case's blade.width makes the simulated force the blade's total \
+             already; give the measured total force without {name}"
+        )));
+    }
+    Ok(w)
 }
 
 /// One measured curve and the case that simulates it.
