@@ -6,6 +6,7 @@
 use crate::case_file::LoadedCase;
 use crate::columns::Columns;
 use crate::error::OutputError;
+use crate::record::RunTables;
 use serde::Serialize;
 use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::summary::{
@@ -40,38 +41,47 @@ pub struct RunOutput<'a> {
 impl RunOutput<'_> {
     /// (file name, contents) of every output file.
     pub fn files(&self) -> Vec<(&'static str, String)> {
+        let history = history_columns(self.history, self.loaded.case.blade.depth);
+        self.files_of(
+            &history,
+            &profile_columns(self.profile),
+            &self.summary_doc(),
+        )
+    }
+
+    /// The numbers of the run's files (with `frames`, the numbers of
+    /// `frames.csv`) and the files written from them, each figure computed
+    /// once: [`RunOutput::files`], then `frames.csv`.
+    pub fn tables_and_files(&self, frames: Columns) -> (RunTables, Vec<(&'static str, String)>) {
+        let doc = self.summary_doc();
+        let history = history_columns(self.history, self.loaded.case.blade.depth);
+        let profile = profile_columns(self.profile);
+        let mut files = self.files_of(&history, &profile, &doc);
+        files.push(("frames.csv", frames.csv()));
+        let summary = serde_json::to_value(doc).expect("a summary serialises");
+        let tables = RunTables {
+            history,
+            profile,
+            frames,
+            summary,
+        };
+        (tables, files)
+    }
+
+    fn files_of(
+        &self,
+        history: &Columns,
+        profile: &Columns,
+        doc: &SummaryJson<'_>,
+    ) -> Vec<(&'static str, String)> {
+        let mut summary = serde_json::to_string_pretty(doc).expect("a summary serialises");
+        summary.push('\n');
         vec![
-            ("history.csv", self.history_csv()),
-            ("profile.csv", self.profile_csv()),
-            ("summary.json", self.summary_json()),
+            ("history.csv", history.csv()),
+            ("profile.csv", profile.csv()),
+            ("summary.json", summary),
             ("case.resolved.toml", self.loaded.resolved_toml()),
         ]
-    }
-
-    /// `history.csv`: one row per increment, columns `HISTORY_HEADER` (units
-    /// in the README).
-    pub fn history_csv(&self) -> String {
-        history_columns(self.history, self.loaded.case.blade.depth).csv()
-    }
-
-    /// `profile.csv`: the final surface, one row per node from the face on.
-    pub fn profile_csv(&self) -> String {
-        profile_columns(self.profile).csv()
-    }
-
-    /// `summary.json`: the run's figures, the analytical baselines, cost and
-    /// wall time.
-    pub fn summary_json(&self) -> String {
-        let mut text =
-            serde_json::to_string_pretty(&self.summary_doc()).expect("a summary serialises");
-        text.push('\n');
-        text
-    }
-
-    /// `summary.json` as a JSON value (objects' keys sorted; a number that
-    /// is not finite is `null`, as in the file).
-    pub fn summary_value(&self) -> serde_json::Value {
-        serde_json::to_value(self.summary_doc()).expect("a summary serialises")
     }
 
     fn summary_doc(&self) -> SummaryJson<'_> {

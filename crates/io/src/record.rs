@@ -4,7 +4,7 @@
 use crate::case_file::LoadedCase;
 use crate::columns::Columns;
 use crate::finished::{frames_columns, RunFilesError, SurfaceFrame};
-use crate::output::{history_columns, profile_columns, RunOutput};
+use crate::output::RunOutput;
 use soilcut_model::{Simulation, StepError, StepRecord, Summary};
 use std::path::Path;
 use std::time::Instant;
@@ -120,14 +120,7 @@ pub fn record_files(
         candidate_evaluations: sim.evaluations(),
         wall_time_s,
     };
-    let tables = RunTables {
-        history: history_columns(&history, case.blade.depth),
-        profile: profile_columns(output.profile),
-        frames: frames_columns(&frames, case.blade.depth),
-        summary: output.summary_value(),
-    };
-    let mut files = output.files();
-    files.push(("frames.csv", tables.frames.csv()));
+    let (tables, files) = output.tables_and_files(frames_columns(&frames, case.blade.depth));
     Ok(RecordedRun {
         files,
         summary,

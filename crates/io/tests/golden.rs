@@ -16,8 +16,8 @@
 //! SOILCUT_BLESS=1 cargo test -p soilcut-io --test golden
 //! ```
 
-use soilcut_io::{read_case, RunOutput};
-use soilcut_model::{Simulation, Summary};
+use soilcut_io::{history_columns, read_case};
+use soilcut_model::Simulation;
 use std::path::Path;
 
 fn history_csv(face_friction: &str) -> String {
@@ -31,17 +31,7 @@ fn history_csv(face_friction: &str) -> String {
     let loaded = read_case(&root.join("../../cases/paper/table1-hs.toml"), &set).unwrap();
     let mut sim = Simulation::new(&loaded.case).unwrap();
     let history = sim.run_to_end(|_| {}).unwrap();
-    let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
-    let profile = sim.profile();
-    RunOutput {
-        loaded: &loaded,
-        history: &history,
-        profile: &profile,
-        summary: &summary,
-        candidate_evaluations: 0,
-        wall_time_s: 0.0,
-    }
-    .history_csv()
+    history_columns(&history, loaded.case.blade.depth).csv()
 }
 
 fn rows(text: &str) -> Vec<Vec<f64>> {
