@@ -190,7 +190,8 @@ def run(case: Case, *, ensemble: int | None = None, jobs: int = 0) -> RunResult 
     """
     the_case = case if isinstance(case, Case) else Case(case)
     if ensemble is not None:
-        if isinstance(ensemble, bool) or not isinstance(ensemble, int) or ensemble < 2:
+        # The count's rule (at least 2) is the library's; the type is Python's.
+        if isinstance(ensemble, bool) or not isinstance(ensemble, int):
             raise ValueError(
                 f"ensemble: expected an int >= 2 (members; 7 is the rule's), got {ensemble!r}"
             )

@@ -9,7 +9,7 @@ use crate::run::{output_error, RunRecords};
 use crate::study::study_error;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_study::ensemble::{member_folder, Ensemble, EnsembleResult};
+use soilcut_study::ensemble::{member_folder, members_of, Ensemble, EnsembleResult};
 use soilcut_study::no_progress;
 use std::path::PathBuf;
 
@@ -59,9 +59,10 @@ impl EnsembleRun {
 pub fn ensemble(
     py: Python<'_>,
     case: &Bound<'_, PyAny>,
-    members: usize,
+    members: i64,
     jobs: usize,
 ) -> PyResult<EnsembleRun> {
+    let members = members_of(members, "ensemble").map_err(|e| study_error(py, e))?;
     let case = Case::extract(case)?;
     warn_accuracy(py, &case.get().loaded.case)?;
     let study = Ensemble {

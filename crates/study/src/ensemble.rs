@@ -149,16 +149,24 @@ pub struct EnsembleResult {
     pub initial_force: Spread,
 }
 
+/// The number of members `given` (`name`: how the caller's user gave it,
+/// `--ensemble` or `ensemble`), checked: at least 2, the fewest that have a
+/// spread.
+pub fn members_of(given: i64, name: &str) -> Result<usize, StudyError> {
+    match usize::try_from(given) {
+        Ok(n) if n >= 2 => Ok(n),
+        _ => Err(StudyError::Spec(format!(
+            "{name} {given}: an ensemble needs at least 2 members (7 is the rule's)"
+        ))),
+    }
+}
+
 impl Ensemble {
     /// Runs every member on a pool of `jobs` threads. Fails with the first
     /// member's error (in the order of k) if any fails.
     pub fn run(&self, progress: Progress) -> Result<EnsembleResult, StudyError> {
-        if self.members < 2 {
-            return Err(StudyError::Spec(format!(
-                "--ensemble {}: an ensemble needs at least 2 members (7 is the rule's)",
-                self.members
-            )));
-        }
+        let given = i64::try_from(self.members).unwrap_or(i64::MAX);
+        members_of(given, "--ensemble")?;
         let loaded = self.base.load(&[])?;
         let perturbation = Perturbation::of(&self.base, &loaded)?;
         let depth = loaded.case.blade.depth;
