@@ -28,7 +28,7 @@ mod overrides;
 mod pictures;
 mod record;
 
-pub use case_file::{parse_case, parse_case_bytes, read_case, LoadedCase};
+pub use case_file::{case_from_note, parse_case, parse_case_bytes, read_case, LoadedCase};
 pub use error::{InputError, OutputError};
 pub use finished::{
     frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table, FRAMES_HEADER,
