@@ -287,3 +287,17 @@ fn advance_to_with_hands_over_each_record_as_its_increment_is_made() {
     assert_eq!(got, records);
     assert_eq!(rest(sim), rest(other));
 }
+
+/// A tip steered from 20 to 0.3 over two increments sits above the dip
+/// the first increments left ahead of it: no line from it stays in the
+/// soil, and the next increment says so instead of searching the far field
+/// for ever (found by fuzzing the C ABI,
+/// fuzz/regressions/ffi_calls/tip-steered-above-a-dip).
+#[test]
+fn a_tip_steered_above_a_dip_ahead_finds_no_mechanism() {
+    let mut sim = Simulation::new(&common::original(1.0, 100.0)).unwrap();
+    assert_eq!(sim.advance_to(0.3, Some(0.3)).unwrap().len(), 2);
+    let e = sim.step().unwrap_err();
+    assert!(e.to_string().contains("no admissible"), "{e}");
+    assert_eq!(sim.steps_done(), 2);
+}
