@@ -71,27 +71,7 @@ fn steps_to_end(sim: *mut SoilcutSimulation) -> Vec<SoilcutStep> {
 /// A field-by-field bit comparison (-0.0 and NaN would hide from ==).
 fn bits(r: &SoilcutStep) -> Vec<u64> {
     let mut v = vec![r.step];
-    v.extend(
-        [
-            r.u,
-            r.u_over_d,
-            r.force,
-            r.force_norm,
-            r.force_h,
-            r.force_v,
-            r.beta_deg,
-            r.x_emergence,
-            r.mass,
-            r.y_emergence,
-            r.friction_deg,
-            r.slip,
-            r.dilation_deg,
-            r.dilation_area,
-            r.depth,
-            r.mass_spilled,
-        ]
-        .map(f64::to_bits),
-    );
+    v.extend(r.values().map(f64::to_bits));
     v
 }
 
