@@ -1,6 +1,7 @@
 //! The bodies of soilcut's fuzz targets: each takes the fuzzer's bytes,
-//! feeds them to a public reader and checks what the project promises of
-//! it, panicking on a broken promise (which the fuzzer reports as a crash):
+//! feeds them to a public reader (or, `ffi_calls`, turns them into C ABI
+//! calls) and checks what the project promises of it, panicking on a
+//! broken promise (which the fuzzer reports as a crash):
 //!
 //! * every input is read without a panic;
 //! * an input refused gets a one-line, non-empty message, and a key error
