@@ -19,8 +19,7 @@ cd "$(dirname "$0")"
 seconds="${1:?usage: fuzz/campaign.sh SECONDS [TARGET...]}"
 shift
 targets=("$@")
-# The C ABI's target (ffi_calls) joins this list when soilcut-ffi exists.
-[ ${#targets[@]} -gt 0 ] || targets=(case_toml set_override measured_csv)
+[ ${#targets[@]} -gt 0 ] || targets=(case_toml set_override measured_csv ffi_calls)
 # Several jobs or workers would compete with everything else on the
 # machine: one process, niced. -timeout: an input slower than 10 s is a
 # finding (the bodies bound the model's cost); -rss_limit_mb: libFuzzer's

@@ -7,6 +7,7 @@ found from them, minimised together with `cargo fuzz cmin`.
 """
 
 import pathlib
+import struct
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -162,12 +163,123 @@ def measured_seeds():
     yield "u;force\n0;1\n1;2\n".encode("utf-16-le")
 
 
+# ffi_calls: each input is a program of C ABI calls, op byte first
+# (crates/fuzz-bodies/src/ffi.rs reads them in this order).
+NUMBERS = [float("nan"), float("inf"), float("-inf"), -1.0, -0.0, 0.0, 5e-324,
+           1e-300, 0.02, 0.04, 0.1, 0.2, 0.3, 0.5, 1.0, 2.0, 10.0, 15.0, 20.0,
+           40.0, 1e6, 1e19, 1e21, sys.float_info.max]
+NULL, MISALIGNED, VALID = 0, 1, 2
+# Buffer lengths: 0, the one needed, one less, one more, (4, n) any n.
+ZERO, NEEDED, LESS, MORE = 0, 1, 2, 3
+
+
+def u16(n):
+    return bytes([n & 0xFF, n >> 8])
+
+
+def num(v):
+    for i, t in enumerate(NUMBERS):
+        if str(t) == str(v):
+            return bytes([i])
+    return b"\x80" + struct.pack("<d", v)
+
+
+def text(s, limit=4096):
+    data = s.encode() if isinstance(s, str) else s
+    return u16(len(data) % (limit + 1)) + data
+
+
+def sets(*args):
+    return bytes([len(args)]) + b"".join(text(a, 64) for a in args)
+
+
+def new_toml(slot, case, *overrides):
+    return b"\x00" + text(case) + sets(*overrides) + bytes([slot])
+
+
+def new_base(slot, pick, *overrides):
+    return bytes([1, pick]) + sets(*overrides) + bytes([slot])
+
+
+def step(slot, ptr=VALID):
+    return bytes([3, slot, ptr])
+
+
+def advance(slot, x, depth=float("nan"), callback=True, reenter=False, made=VALID):
+    flags = made | (4 if callback else 0) | (8 if reenter else 0)
+    return bytes([4, slot]) + num(x) + num(depth) + bytes([flags])
+
+
+def last_step(slot, ptr=VALID):
+    return bytes([5, slot, ptr])
+
+
+def state(slot, ptr=VALID):
+    return bytes([6, slot, ptr])
+
+
+def surface(slot, length=NEEDED, given=31, ptr=VALID):
+    return bytes([7, slot, ptr, length, given])
+
+
+def snapshot(slot, length=NEEDED, buf=True, ptr=VALID):
+    return bytes([8, slot, ptr, length, 1 if buf else 0])
+
+
+def restore(slot, how=0, *args):
+    return bytes([9, slot, how]) + b"".join(args)
+
+
+def last_error(slot, length=NEEDED):
+    return bytes([10, slot, length])
+
+
+def warnings(slot, length=NEEDED, ptr=VALID):
+    return bytes([11, slot, ptr, length])
+
+
+def free(slot):
+    return bytes([12, slot])
+
+
+def ffi_seeds():
+    whole = [state(0), step(0), last_step(0), surface(0), warnings(0)]
+    for pick in range(4):
+        yield new_base(0, pick) + b"".join(whole) + advance(0, 0.6, reenter=True)
+    yield new_base(0, 0) + last_step(0) + step(0, MISALIGNED) + step(0, NULL) + last_step(0)
+    yield new_base(0, 0) + step(0) + snapshot(0) + restore(1) + step(1) + step(0) + free(0) + state(1)
+    yield new_base(1, 1) + snapshot(1) + restore(0, 1, u16(100), b"\x01") + restore(0, 2, u16(50))
+    yield new_base(0, 0) + snapshot(0) + restore(1) + free(0) + free(1)
+    yield new_base(0, 3) + snapshot(0) + restore(0, 0) + surface(0) + warnings(0, ZERO)
+    yield restore(0, 3, text(b"SOILCUT\x01" + bytes(40), 512)) + restore(1, 4, b"\x05") + restore(0, 0)
+    for x in [float("nan"), float("inf"), -1.0, 1e21, sys.float_info.max, 0.0, 1e19, 1e6]:
+        yield new_base(0, 0) + advance(0, x) + advance(0, 0.3, x)
+    yield new_base(0, 2) + advance(0, 1.0, 15.0, reenter=True) + advance(0, 0.5) + last_step(0)
+    yield new_base(0, 0) + advance(0, 0.6, made=MISALIGNED) + advance(0, 0.6, made=NULL, callback=False)
+    yield new_base(0, 0, "run.travel=0.4") + step(0) + step(0) + step(0) + step(0) + last_step(0)
+    yield new_base(0, 0, "run.increment=0.02") + state(0) + surface(0) + snapshot(0)
+    yield new_base(0, 0, "run.increment=nan") + new_base(0, 0, "colour=1") + last_error(2)
+    yield new_base(0, 1, "soil.band_width=9", "blade.rake=45") + last_error(0, LESS)
+    yield new_base(0, 3, "blade.width=1") + warnings(0) + warnings(0, LESS, NULL) + warnings(0, MORE, MISALIGNED)
+    yield new_base(0, 0) + surface(0, LESS) + surface(0, MORE) + surface(0, ZERO, 1) + surface(0, NEEDED, 3, MISALIGNED)
+    yield new_base(0, 0) + snapshot(0, LESS) + snapshot(0, ZERO, False) + snapshot(0, MORE, False) + snapshot(0, NEEDED, True, NULL)
+    yield last_error(2, ZERO) + last_error(2, LESS) + last_error(2, MORE) + bytes([10, 2, 4, 3])
+    yield step(2) + last_step(2) + state(2) + surface(2) + snapshot(2) + warnings(2) + advance(2, 1.0) + free(2)
+    yield bytes([2, 0]) + bytes([2, 1]) + last_error(2)
+    yield new_toml(0, "") + new_toml(0, "name = ") + new_toml(1, b"\xff\xfe") + last_error(2)
+    for case in sorted((ROOT / "cases").glob("**/*.toml")):
+        yield new_toml(0, case.read_text()) + step(0) + state(0) + snapshot(0) + restore(1) + step(1)
+    yield new_toml(0, ORIGINAL, "run.travel=0.6") + advance(0, 0.2) + advance(0, 0.1) + advance(0, 2.0) + step(0)
+    yield new_toml(0, REFINED) + step(0) + free(0) + step(0) + free(0)
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     for target, seeds in [
         ("case_toml", case_seeds()),
         ("set_override", override_seeds()),
         ("measured_csv", measured_seeds()),
+        ("ffi_calls", ffi_seeds()),
     ]:
         d = out / target
         d.mkdir(parents=True, exist_ok=True)

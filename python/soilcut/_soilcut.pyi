@@ -119,8 +119,10 @@ class Simulation:
         would. Tied to this version of soilcut (``docs/model.md`` §17)."""
     @staticmethod
     def from_snapshot(data: bytes) -> Simulation:
-        """The simulation a :meth:`snapshot` holds (also one made from Rust,
-        whose :attr:`case` is then unknown). Raises
+        """The simulation a :meth:`snapshot` holds: also one made through
+        the C ABI (``soilcut_snapshot``), which carries the case's text too,
+        or by the Rust library's ``Simulation::snapshot``, whose :attr:`case`
+        is then unknown. Raises
         :class:`soilcut.SnapshotError` for bytes that are not a snapshot of
         this version, truncated or corrupt."""
     def __copy__(self) -> Simulation:
@@ -161,8 +163,8 @@ class Simulation:
     def case(self) -> Case:
         """The case, every default filled in, as :meth:`advance_to` has
         steered it (its depth path and travel). ``RuntimeError`` for a
-        simulation restored from a snapshot made outside Python, which
-        carries no case file text."""
+        simulation restored from a snapshot of the Rust library's
+        ``Simulation::snapshot``, which carries no case file text."""
     def __iter__(self) -> Iterator[Step]: ...
     def __next__(self) -> Step: ...
 

@@ -199,10 +199,16 @@ typedef struct SoilcutState {
 
 /**
  * Called by `soilcut_advance_to` with each increment's record, in order,
- * and the caller's `user` pointer. The record is valid during the call
- * only. It is called after the increments are made and the handle is
- * released, so it may call soilcut functions, on this handle too; it must
- * not unwind (a C++ exception) into soilcut.
+ * and the caller's `user` pointer, as soon as the increment is made (so a
+ * co-simulation sees the force of each increment while the blade moves).
+ * The record is valid during the call only. The handle is in the middle
+ * of advancing: on it, the callback may call `soilcut_state` and
+ * `soilcut_last_step` (which report the increment just made) and
+ * `soilcut_last_error`; any other call on it is refused with
+ * `SOILCUT_ERR_STATE` (and `soilcut_free` frees nothing). Other handles
+ * may be used freely. It must not wait for another thread's call on this
+ * handle (which waits for the advance to end), nor unwind (a C++
+ * exception) into soilcut.
  */
 typedef void (*SoilcutOnStep)(const struct SoilcutStep *record, void *user);
 
@@ -279,6 +285,8 @@ int soilcut_new_from_file(const char *path,
 /**
  * Releases a handle. NULL is allowed and does nothing; a handle must not
  * be used (or freed) again, nor freed while another thread uses it.
+ * Called from the handle's own `soilcut_advance_to` callback it frees
+ * nothing and sets the thread's last error.
  *
  * # Safety
  * `sim` is NULL or a live handle not in use by another thread.
@@ -388,15 +396,17 @@ int soilcut_surface(const struct SoilcutSimulation *sim,
  * of the case); NaN leaves the case's depth (or depth path) as it is.
  * Beyond `run.travel` the travel becomes x.
  *
- * `on_step` (may be NULL) is called with each increment's record;
- * `*steps_made` (may be NULL) is the number of increments made, also on
- * `SOILCUT_ERR_STEP`, when the increments before the failed one were made
- * and are reported. The last one's record is then `soilcut_last_step`'s.
+ * `on_step` (may be NULL) is called with each increment's record as the
+ * increment is made (`SoilcutOnStep`); `*steps_made` (may be NULL) is
+ * the number of increments made, also on `SOILCUT_ERR_STEP`, when the
+ * increments before the failed one were made and reported. The last
+ * one's record is then `soilcut_last_step`'s.
  *
  * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `steps_made`
  * misaligned), `SOILCUT_ERR_ARGUMENT` (x NaN, infinite, negative or
  * behind the blade; depth out of range or not allowed for the case;
- * nothing was changed), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
+ * nothing was changed), `SOILCUT_ERR_STATE` (called from this handle's
+ * own `on_step`), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
  *
  * # Safety
  * `sim` is NULL or a live handle; `steps_made` is NULL or valid for a
@@ -414,7 +424,11 @@ int soilcut_advance_to(struct SoilcutSimulation *sim,
  * makes a simulation that continues from them bit for bit as this one
  * would) and stores their length in `*needed`. With `buf` NULL and `len`
  * 0 it only stores the length. The bytes are versioned: they restore only
- * in this version of soilcut. The last step's record is not part of
+ * in this version of soilcut. They carry the case's text
+ * (`case.resolved.toml`, as steered by `soilcut_advance_to`), as the
+ * Python package's snapshots do, so that either restores the other's
+ * with its case; a simulation restored from a snapshot without case text
+ * makes snapshots without it. The last step's record is not part of
  * them. Each call serialises the state anew (so ask for the length and
  * copy in two calls, or keep a buffer large enough).
  *
@@ -435,7 +449,8 @@ int soilcut_snapshot(const struct SoilcutSimulation *sim, uint8_t *buf, size_t l
  *
  * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
  * `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,
- * truncated, corrupt: the message says which) or `SOILCUT_ERR_PANIC`.
+ * truncated, corrupt, case text that is not its state's case: the
+ * message says which) or `SOILCUT_ERR_PANIC`.
  *
  * # Safety
  * `bytes` is NULL or valid for reads of `len` bytes; `out` is NULL or

@@ -30,8 +30,11 @@ pub use error::{
 pub use record::{SoilcutState, SoilcutStep};
 
 use error::{catch, copy_message, fail, guard, thread_last_error, Failure};
-use soilcut_io::{parse_case, read_case, InputError, LoadedCase, Override, HISTORY_HEADER};
+use soilcut_io::{
+    case_from_note, parse_case, read_case, InputError, LoadedCase, Override, HISTORY_HEADER,
+};
 use soilcut_model::{AdvanceError, ProfilePoint, Simulation, StepRecord};
+use std::cell::RefCell;
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::os::raw::c_int;
 use std::path::Path;
@@ -49,6 +52,11 @@ pub struct SoilcutSimulation {
 
 struct State {
     sim: Simulation,
+    /// The case as read (and as `soilcut_advance_to` steered it), whose
+    /// `case.resolved.toml` a snapshot carries so that the Python package
+    /// restores it with its case, as it does its own (and the reverse).
+    /// None for a snapshot restored without case text.
+    loaded: Option<LoadedCase>,
     /// The latest increment's record.
     last: Option<StepRecord>,
     /// The case's accuracy warnings, one per line (as `soilcut run` prints
@@ -57,11 +65,12 @@ struct State {
 }
 
 impl SoilcutSimulation {
-    fn new(sim: Simulation) -> Self {
+    fn new((sim, loaded): (Simulation, Option<LoadedCase>)) -> Self {
         let warnings = sim.case().accuracy_warnings().join("\n");
         SoilcutSimulation {
             state: Mutex::new(State {
                 sim,
+                loaded,
                 last: None,
                 warnings,
             }),
@@ -90,9 +99,13 @@ impl SoilcutSimulation {
 
 impl SoilcutSimulation {
     /// Runs `f` on the state, catching a panic (which poisons the lock, so
-    /// that every later call fails).
+    /// that every later call fails). Refused inside this handle's
+    /// `soilcut_advance_to` callback, whose thread holds the lock.
     fn run<T>(&self, f: impl FnOnce(&mut State) -> Result<T, Failure>) -> Result<T, Failure> {
         catch(|| {
+            if in_step(self, |_| ()).is_some() {
+                return Err(Failure::new(SOILCUT_ERR_STATE, BUSY));
+            }
             let mut state = self.state.lock().map_err(|_| {
                 Failure::new(
                     SOILCUT_ERR_PANIC,
@@ -102,6 +115,64 @@ impl SoilcutSimulation {
             f(&mut state)
         })
     }
+}
+
+/// Why a call on a handle is refused inside its `soilcut_advance_to`'s
+/// callback.
+const BUSY: &str = "called from soilcut_advance_to's on_step on the same simulation, which is in the middle of advancing: there only soilcut_state, soilcut_last_step and soilcut_last_error may be called on it";
+
+/// The handle whose `soilcut_advance_to` is calling its `on_step` on
+/// this thread, and what `soilcut_state` and `soilcut_last_step` report
+/// for it meanwhile: the state and record after the increment just made.
+struct InStep {
+    handle: *const SoilcutSimulation,
+    state: SoilcutState,
+    record: SoilcutStep,
+}
+
+thread_local! {
+    static IN_STEP: RefCell<Option<InStep>> = const { RefCell::new(None) };
+}
+
+/// `f` of what the callback of `handle`'s advance sees, if this thread is
+/// in that callback.
+fn in_step<T>(handle: *const SoilcutSimulation, f: impl FnOnce(&InStep) -> T) -> Option<T> {
+    IN_STEP.with(|now| {
+        let now = now.borrow();
+        now.as_ref()
+            .filter(|busy| std::ptr::eq(busy.handle, handle))
+            .map(f)
+    })
+}
+
+/// Runs `call` (the caller's callback) with `busy` as this thread's
+/// advance in progress; a callback advancing another handle nests.
+fn calling_back(busy: InStep, call: impl FnOnce()) {
+    let outer = IN_STEP.with(|now| now.replace(Some(busy)));
+    call();
+    IN_STEP.with(|now| *now.borrow_mut() = outer);
+}
+
+/// Writes what the callback in progress on `sim` sees to `out`, if this
+/// thread is in it.
+///
+/// # Safety
+/// `out` is NULL or valid for a write.
+unsafe fn put_in_step<T>(
+    sim: *const SoilcutSimulation,
+    (out, name): (*mut T, &str),
+    value: impl FnOnce(&InStep) -> T,
+) -> Option<c_int> {
+    let value = in_step(sim, value)?;
+    Some(match writable(out, name) {
+        Ok(()) => {
+            // SAFETY: checked by `writable`, valid by the caller's contract.
+            unsafe { put(out, value) };
+            SOILCUT_OK
+        }
+        // SAFETY: `sim` is the live handle whose advance is in progress.
+        Err(failure) => unsafe { &*sim }.fail(failure),
+    })
 }
 
 /// The handle `sim`, or the thread's failure for a NULL one.
@@ -214,13 +285,14 @@ unsafe fn simulation(
     sets: *const *const c_char,
     n_sets: usize,
     read: impl FnOnce(&str, &[Override]) -> Result<LoadedCase, Failure>,
-) -> Result<Simulation, Failure> {
+) -> Result<(Simulation, Option<LoadedCase>), Failure> {
     // SAFETY: by the caller's contract.
     let arg = unsafe { text(arg, name) }?;
     // SAFETY: by the caller's contract.
     let overrides = unsafe { overrides(sets, n_sets) }?;
     let loaded = read(arg, &overrides)?;
-    Simulation::new(&loaded.case).map_err(|e| input(&e.into()))
+    let sim = Simulation::new(&loaded.case).map_err(|e| input(&e.into()))?;
+    Ok((sim, Some(loaded)))
 }
 
 /// Creates a handle for the simulation `make` sets up and stores it in
@@ -230,7 +302,7 @@ unsafe fn simulation(
 /// `out` is NULL or valid for a write of a pointer.
 unsafe fn create(
     out: *mut *mut SoilcutSimulation,
-    make: impl FnOnce() -> Result<Simulation, Failure>,
+    make: impl FnOnce() -> Result<(Simulation, Option<LoadedCase>), Failure>,
 ) -> c_int {
     guard(|| {
         writable(out, "out")?;
@@ -352,12 +424,22 @@ pub unsafe extern "C" fn soilcut_new_from_file(
 
 /// Releases a handle. NULL is allowed and does nothing; a handle must not
 /// be used (or freed) again, nor freed while another thread uses it.
+/// Called from the handle's own `soilcut_advance_to` callback it frees
+/// nothing and sets the thread's last error.
 ///
 /// # Safety
 /// `sim` is NULL or a live handle not in use by another thread.
 #[no_mangle]
 pub unsafe extern "C" fn soilcut_free(sim: *mut SoilcutSimulation) {
     if sim.is_null() {
+        return;
+    }
+    // Its advance is under way further up this thread's stack.
+    if in_step(sim, |_| ()).is_some() {
+        fail(Failure::new(
+            SOILCUT_ERR_STATE,
+            format!("soilcut_free refused: {BUSY}"),
+        ));
         return;
     }
     // Dropping plain data does not panic; a panic would be caught all the
@@ -456,6 +538,10 @@ pub unsafe extern "C" fn soilcut_last_step(
     record: *mut SoilcutStep,
 ) -> c_int {
     // SAFETY: by the caller's contract.
+    if let Some(code) = unsafe { put_in_step(sim, (record, "record"), |busy| busy.record) } {
+        return code;
+    }
+    // SAFETY: by the caller's contract.
     unsafe {
         with_handle(sim, |state| {
             writable(record, "record")?;
@@ -481,6 +567,10 @@ pub unsafe extern "C" fn soilcut_state(
     sim: *const SoilcutSimulation,
     out: *mut SoilcutState,
 ) -> c_int {
+    // SAFETY: by the caller's contract.
+    if let Some(code) = unsafe { put_in_step(sim, (out, "out"), |busy| busy.state) } {
+        return code;
+    }
     // SAFETY: by the caller's contract.
     unsafe {
         with_handle(sim, |state| {
@@ -587,10 +677,16 @@ pub unsafe extern "C" fn soilcut_surface(
 }
 
 /// Called by `soilcut_advance_to` with each increment's record, in order,
-/// and the caller's `user` pointer. The record is valid during the call
-/// only. It is called after the increments are made and the handle is
-/// released, so it may call soilcut functions, on this handle too; it must
-/// not unwind (a C++ exception) into soilcut.
+/// and the caller's `user` pointer, as soon as the increment is made (so a
+/// co-simulation sees the force of each increment while the blade moves).
+/// The record is valid during the call only. The handle is in the middle
+/// of advancing: on it, the callback may call `soilcut_state` and
+/// `soilcut_last_step` (which report the increment just made) and
+/// `soilcut_last_error`; any other call on it is refused with
+/// `SOILCUT_ERR_STATE` (and `soilcut_free` frees nothing). Other handles
+/// may be used freely. It must not wait for another thread's call on this
+/// handle (which waits for the advance to end), nor unwind (a C++
+/// exception) into soilcut.
 pub type SoilcutOnStep =
     Option<unsafe extern "C" fn(record: *const SoilcutStep, user: *mut c_void)>;
 
@@ -605,15 +701,17 @@ pub type SoilcutOnStep =
 /// of the case); NaN leaves the case's depth (or depth path) as it is.
 /// Beyond `run.travel` the travel becomes x.
 ///
-/// `on_step` (may be NULL) is called with each increment's record;
-/// `*steps_made` (may be NULL) is the number of increments made, also on
-/// `SOILCUT_ERR_STEP`, when the increments before the failed one were made
-/// and are reported. The last one's record is then `soilcut_last_step`'s.
+/// `on_step` (may be NULL) is called with each increment's record as the
+/// increment is made (`SoilcutOnStep`); `*steps_made` (may be NULL) is
+/// the number of increments made, also on `SOILCUT_ERR_STEP`, when the
+/// increments before the failed one were made and reported. The last
+/// one's record is then `soilcut_last_step`'s.
 ///
 /// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `steps_made`
 /// misaligned), `SOILCUT_ERR_ARGUMENT` (x NaN, infinite, negative or
 /// behind the blade; depth out of range or not allowed for the case;
-/// nothing was changed), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
+/// nothing was changed), `SOILCUT_ERR_STATE` (called from this handle's
+/// own `on_step`), `SOILCUT_ERR_STEP` or `SOILCUT_ERR_PANIC`.
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; `steps_made` is NULL or valid for a
@@ -628,47 +726,64 @@ pub unsafe extern "C" fn soilcut_advance_to(
     steps_made: *mut u64,
 ) -> c_int {
     // SAFETY: by the caller's contract.
-    let handle = match unsafe { handle(sim) } {
-        Ok(handle) => handle,
-        Err(code) => return code,
-    };
-    let outcome = handle.run(|state| {
-        if !steps_made.is_null() {
-            writable(steps_made, "steps_made")?;
-        }
-        let depth = (!depth.is_nan()).then_some(depth);
-        let (records, failed) = match state.sim.advance_to(x, depth) {
-            Ok(records) => (records, None),
-            Err(AdvanceError::Step { records, error }) => (
-                records,
-                Some(Failure::new(SOILCUT_ERR_STEP, error.to_string())),
-            ),
-            Err(e) => return Err(Failure::new(SOILCUT_ERR_ARGUMENT, e.to_string())),
+    unsafe {
+        with_handle(sim, |state| {
+            if !steps_made.is_null() {
+                writable(steps_made, "steps_made")?;
+            }
+            let depth = (!depth.is_nan()).then_some(depth);
+            let mut made = 0;
+            let result = advance(state, sim, (x, depth), |record| {
+                made += 1;
+                if let Some(on_step) = on_step {
+                    // SAFETY: a function of this type, by the contract.
+                    on_step(record, user);
+                }
+            });
+            // An argument refused made nothing and writes nothing.
+            let stepped = result
+                .as_ref()
+                .map_or_else(|f| f.code == SOILCUT_ERR_STEP, |()| true);
+            if stepped && !steps_made.is_null() {
+                // SAFETY: checked by `writable` above.
+                put(steps_made, made);
+            }
+            result
+        })
+    }
+}
+
+/// `Simulation::advance_to_with` on the state of `handle`, each record
+/// kept as the last and handed to `on_step` as `handle`'s advance in
+/// progress; the case as read follows the case as steered.
+fn advance(
+    state: &mut State,
+    handle: *const SoilcutSimulation,
+    (x, depth): (f64, Option<f64>),
+    mut on_step: impl FnMut(&SoilcutStep),
+) -> Result<(), Failure> {
+    let d = state.sim.case().blade.depth;
+    let State {
+        sim, loaded, last, ..
+    } = state;
+    let result = sim.advance_to_with(x, depth, |now, record| {
+        *last = Some(*record);
+        let busy = InStep {
+            handle,
+            state: SoilcutState::new(now),
+            record: SoilcutStep::new(record, d),
         };
-        if let Some(last) = records.last() {
-            state.last = Some(*last);
-        }
-        let d = state.sim.case().blade.depth;
-        let records: Vec<SoilcutStep> = records.iter().map(|r| SoilcutStep::new(r, d)).collect();
-        Ok((records, failed))
+        let record = busy.record;
+        calling_back(busy, || on_step(&record));
     });
-    let (records, failed) = match outcome {
-        Ok(made) => made,
-        Err(failure) => return handle.fail(failure),
-    };
-    if !steps_made.is_null() {
-        // SAFETY: checked by `writable` above.
-        unsafe { put(steps_made, records.len() as u64) };
-    }
-    if let Some(on_step) = on_step {
-        for record in &records {
-            // SAFETY: a function of this type, by the caller's contract.
-            unsafe { on_step(record, user) };
+    // The case may be steered even if an increment failed.
+    *loaded = loaded.take().map(|l| l.steered(sim.case()));
+    match result {
+        Ok(_) => Ok(()),
+        Err(AdvanceError::Step { error, .. }) => {
+            Err(Failure::new(SOILCUT_ERR_STEP, error.to_string()))
         }
-    }
-    match failed {
-        Some(failure) => handle.fail(failure),
-        None => SOILCUT_OK,
+        Err(e) => Err(Failure::new(SOILCUT_ERR_ARGUMENT, e.to_string())),
     }
 }
 
@@ -676,7 +791,11 @@ pub unsafe extern "C" fn soilcut_advance_to(
 /// makes a simulation that continues from them bit for bit as this one
 /// would) and stores their length in `*needed`. With `buf` NULL and `len`
 /// 0 it only stores the length. The bytes are versioned: they restore only
-/// in this version of soilcut. The last step's record is not part of
+/// in this version of soilcut. They carry the case's text
+/// (`case.resolved.toml`, as steered by `soilcut_advance_to`), as the
+/// Python package's snapshots do, so that either restores the other's
+/// with its case; a simulation restored from a snapshot without case text
+/// makes snapshots without it. The last step's record is not part of
 /// them. Each call serialises the state anew (so ask for the length and
 /// copy in two calls, or keep a buffer large enough).
 ///
@@ -701,7 +820,10 @@ pub unsafe extern "C" fn soilcut_snapshot(
             if buf.is_null() && len > 0 {
                 return Err(Failure::null("buf"));
             }
-            let bytes = state.sim.snapshot();
+            let text = state.loaded.as_ref().map(LoadedCase::resolved_toml);
+            let bytes = state
+                .sim
+                .snapshot_with_note(text.unwrap_or_default().as_bytes());
             put(needed, bytes.len());
             if buf.is_null() {
                 return Ok(());
@@ -725,7 +847,8 @@ pub unsafe extern "C" fn soilcut_snapshot(
 ///
 /// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`bytes` NULL with `len` > 0,
 /// `out` NULL), `SOILCUT_ERR_INPUT` (not a snapshot, of another version,
-/// truncated, corrupt: the message says which) or `SOILCUT_ERR_PANIC`.
+/// truncated, corrupt, case text that is not its state's case: the
+/// message says which) or `SOILCUT_ERR_PANIC`.
 ///
 /// # Safety
 /// `bytes` is NULL or valid for reads of `len` bytes; `out` is NULL or
@@ -751,8 +874,11 @@ pub unsafe extern "C" fn soilcut_restore(
                 // SAFETY: `len` readable bytes, by the caller's contract.
                 _ => std::slice::from_raw_parts(bytes, len),
             };
-            Simulation::from_snapshot(bytes)
-                .map_err(|e| Failure::new(SOILCUT_ERR_INPUT, e.to_string()))
+            let restored = Simulation::from_snapshot_with_note(bytes).and_then(|(sim, note)| {
+                let loaded = case_from_note(&note, sim.case())?;
+                Ok((sim, loaded))
+            });
+            restored.map_err(|e| Failure::new(SOILCUT_ERR_INPUT, e.to_string()))
         })
     }
 }
@@ -774,7 +900,7 @@ mod tests {
     fn a_panic_on_a_handle_poisons_it_for_every_later_call() {
         let text = include_str!("../../../cases/paper/original.toml");
         let sim = Simulation::new(&parse_case(text, &[]).unwrap().case).unwrap();
-        let handle = Box::into_raw(Box::new(SoilcutSimulation::new(sim)));
+        let handle = Box::into_raw(Box::new(SoilcutSimulation::new((sim, None))));
         unsafe {
             let code = with_handle(handle, |_| panic!("inside the lock"));
             assert_eq!(code, SOILCUT_ERR_PANIC);

@@ -82,6 +82,30 @@ impl SoilcutStep {
             mass_spilled: r.mass_spilled,
         }
     }
+
+    /// The numbers of the record after `step`, in the order of its
+    /// fields (`history.csv`'s columns), for Rust callers that compare or
+    /// check them all.
+    pub fn values(&self) -> [f64; 16] {
+        [
+            self.u,
+            self.u_over_d,
+            self.force,
+            self.force_norm,
+            self.force_h,
+            self.force_v,
+            self.beta_deg,
+            self.x_emergence,
+            self.mass,
+            self.y_emergence,
+            self.friction_deg,
+            self.slip,
+            self.dilation_deg,
+            self.dilation_area,
+            self.depth,
+            self.mass_spilled,
+        ]
+    }
 }
 
 /// Where a simulation is now.

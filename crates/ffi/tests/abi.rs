@@ -71,27 +71,7 @@ fn steps_to_end(sim: *mut SoilcutSimulation) -> Vec<SoilcutStep> {
 /// A field-by-field bit comparison (-0.0 and NaN would hide from ==).
 fn bits(r: &SoilcutStep) -> Vec<u64> {
     let mut v = vec![r.step];
-    v.extend(
-        [
-            r.u,
-            r.u_over_d,
-            r.force,
-            r.force_norm,
-            r.force_h,
-            r.force_v,
-            r.beta_deg,
-            r.x_emergence,
-            r.mass,
-            r.y_emergence,
-            r.friction_deg,
-            r.slip,
-            r.dilation_deg,
-            r.dilation_area,
-            r.depth,
-            r.mass_spilled,
-        ]
-        .map(f64::to_bits),
-    );
+    v.extend(r.values().map(f64::to_bits));
     v
 }
 
@@ -445,6 +425,13 @@ fn nan_and_positions_behind_the_blade_are_argument_errors() {
     assert_eq!(state(sim).steps_done, 5);
 }
 
+/// The records of the case `short(steps)` stepped to its end.
+fn stepped(steps: usize) -> Vec<SoilcutStep> {
+    let sim = create(&short(steps), &[]).unwrap();
+    let _free = Free(sim);
+    steps_to_end(sim)
+}
+
 unsafe extern "C" fn collect(record: *const SoilcutStep, user: *mut c_void) {
     let records = unsafe { &mut *user.cast::<Vec<SoilcutStep>>() };
     records.push(unsafe { *record });
@@ -452,11 +439,7 @@ unsafe extern "C" fn collect(record: *const SoilcutStep, user: *mut c_void) {
 
 #[test]
 fn advance_to_makes_the_increments_of_stepping() {
-    let stepped = {
-        let sim = create(&short(20), &[]).unwrap();
-        let _free = Free(sim);
-        steps_to_end(sim)
-    };
+    let stepped = stepped(20);
     let sim = create(&short(20), &[]).unwrap();
     let _free = Free(sim);
     let mut records: Vec<SoilcutStep> = Vec::new();
@@ -484,6 +467,62 @@ fn advance_to_makes_the_increments_of_stepping() {
         (now.steps_done, now.steps_total, now.tip_depth),
         (25, 25, 15.0)
     );
+}
+
+/// What `during` sees from inside `soilcut_advance_to`'s callback.
+struct During {
+    sim: *mut SoilcutSimulation,
+    /// (record, state then, last step then) per call.
+    seen: Vec<(SoilcutStep, SoilcutState, SoilcutStep)>,
+    /// Codes of the calls the callback may not make on its handle.
+    refused: Vec<i32>,
+}
+
+unsafe extern "C" fn during(record: *const SoilcutStep, user: *mut c_void) {
+    let during = unsafe { &mut *user.cast::<During>() };
+    let sim = during.sim;
+    let (mut now, mut last) = (SoilcutState::default(), SoilcutStep::default());
+    assert_eq!(unsafe { soilcut_state(sim, &mut now) }, SOILCUT_OK);
+    assert_eq!(unsafe { soilcut_last_step(sim, &mut last) }, SOILCUT_OK);
+    during.seen.push((unsafe { *record }, now, last));
+    let mut needed = 0;
+    during.refused.extend([
+        unsafe { soilcut_step(sim, null_mut()) },
+        unsafe { soilcut_snapshot(sim, null_mut(), 0, &mut needed) },
+        unsafe { soilcut_advance_to(sim, 10.0, f64::NAN, None, null_mut(), null_mut()) },
+    ]);
+    // Refused too: the handle outlives its callback.
+    unsafe { soilcut_free(sim) };
+}
+
+/// Each record reaches the callback as its increment is made: the state
+/// the callback reads has made that increment and no more.
+#[test]
+fn advance_to_calls_back_as_each_increment_is_made() {
+    let stepped = stepped(8);
+    let sim = create(&short(8), &[]).unwrap();
+    let _free = Free(sim);
+    let mut seen = During {
+        sim,
+        seen: Vec::new(),
+        refused: Vec::new(),
+    };
+    let user = (&mut seen as *mut During).cast::<c_void>();
+    let mut made = 0;
+    let code = unsafe { soilcut_advance_to(sim, 0.32, f64::NAN, Some(during), user, &mut made) };
+    assert_eq!(code, SOILCUT_OK, "{}", last_error(sim));
+    assert_eq!((made, seen.seen.len()), (8, 8));
+    for ((record, now, last), want) in seen.seen.iter().zip(&stepped) {
+        assert_eq!(bits(record), bits(want));
+        assert_eq!(bits(last), bits(want));
+        assert_eq!(now.steps_done, record.step);
+        assert!((now.blade_position - (record.u + 0.04)).abs() < 1e-12);
+        assert_eq!(now.mass, record.mass);
+    }
+    assert!(seen.refused.iter().all(|&c| c == SOILCUT_ERR_STATE));
+    assert!(last_error(sim).contains("on_step"), "{}", last_error(sim));
+    // After the advance the handle is whole again.
+    assert_eq!(state(sim).steps_done, 8);
 }
 
 #[test]

@@ -1,6 +1,7 @@
 //! The bodies of soilcut's fuzz targets: each takes the fuzzer's bytes,
-//! feeds them to a public reader and checks what the project promises of
-//! it, panicking on a broken promise (which the fuzzer reports as a crash):
+//! feeds them to a public reader (or, `ffi_calls`, turns them into C ABI
+//! calls) and checks what the project promises of it, panicking on a
+//! broken promise (which the fuzzer reports as a crash):
 //!
 //! * every input is read without a panic;
 //! * an input refused gets a one-line, non-empty message, and a key error
@@ -20,10 +21,12 @@
 //! and test use it with no flag, and the readers' public API carries
 //! nothing for fuzzing.
 //!
-//! The C ABI's target (the crate `soilcut-ffi` of issue 22, not written
-//! yet) is to be added here as a body `ffi_calls`, with its cargo-fuzz
-//! target beside the others in `fuzz/fuzz_targets/`, its corpus beside
-//! theirs in `fuzz/corpus/` and a test in `tests/replay.rs`.
+//! The C ABI's target, `ffi_calls` (module `ffi`), calls the entry points
+//! of `soilcut-ffi` as a C caller would, with arbitrary arguments.
+
+mod ffi;
+
+pub use ffi::{ffi_calls, FFI_CALLS, FFI_STEPS};
 
 use soilcut_io::{
     parse_case, parse_case_bytes, parse_measured_bytes, parse_measured_curve, parse_value,
@@ -74,6 +77,8 @@ pub enum Outcome {
     /// Run for up to [`RUN_STEPS`] increments (or until the model found
     /// no mechanism).
     Stepped,
+    /// (`ffi_calls`) A handle restored from a snapshot.
+    Restored,
 }
 
 /// Target `case_toml`: any bytes as a case file.

@@ -4,7 +4,7 @@
 //! that no minimisation drops it) through its target's body, as
 //! `cargo fuzz run` would feed it.
 
-use soilcut_fuzz_bodies::{case_toml, measured_csv, set_override, Outcome};
+use soilcut_fuzz_bodies::{case_toml, ffi_calls, measured_csv, set_override, Outcome};
 use std::collections::BTreeSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
@@ -47,31 +47,41 @@ fn replay(target: &str, body: fn(&[u8]) -> Outcome) -> BTreeSet<Outcome> {
 // Each corpus reaches every stage of its body: a check no input reaches
 // would pass without checking anything.
 
+fn reaches(target: &str, body: fn(&[u8]) -> Outcome, stages: &[Outcome]) {
+    let reached = replay(target, body);
+    for stage in stages {
+        assert!(reached.contains(stage), "no input {stage:?}: {reached:?}");
+    }
+}
+
 #[test]
 fn case_toml_corpus() {
-    let reached = replay("case_toml", case_toml);
-    for stage in [
-        Outcome::Refused,
-        Outcome::Accepted,
-        Outcome::Created,
-        Outcome::Stepped,
-    ] {
-        assert!(reached.contains(&stage), "no input {stage:?}: {reached:?}");
-    }
+    use Outcome::*;
+    reaches(
+        "case_toml",
+        case_toml,
+        &[Refused, Accepted, Created, Stepped],
+    );
 }
 
 #[test]
 fn set_override_corpus() {
-    let reached = replay("set_override", set_override);
-    for stage in [Outcome::Refused, Outcome::Created, Outcome::Stepped] {
-        assert!(reached.contains(&stage), "no input {stage:?}: {reached:?}");
-    }
+    use Outcome::*;
+    reaches("set_override", set_override, &[Refused, Created, Stepped]);
 }
 
 #[test]
 fn measured_csv_corpus() {
-    let reached = replay("measured_csv", measured_csv);
-    for stage in [Outcome::Refused, Outcome::Accepted] {
-        assert!(reached.contains(&stage), "no input {stage:?}: {reached:?}");
-    }
+    use Outcome::*;
+    reaches("measured_csv", measured_csv, &[Refused, Accepted]);
+}
+
+#[test]
+fn ffi_calls_corpus() {
+    use Outcome::*;
+    reaches(
+        "ffi_calls",
+        ffi_calls,
+        &[Refused, Created, Stepped, Restored],
+    );
 }

@@ -10,7 +10,8 @@ use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
     default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
-    Choices, FaceFrictionRule, Model, Run, Soil, UnitWeightRule, DEFAULT_INCREMENTS_PER_DEPTH,
+    Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, UnitWeightRule,
+    DEFAULT_INCREMENTS_PER_DEPTH,
 };
 use std::path::Path;
 
@@ -252,6 +253,28 @@ impl LoadedCase {
             env!("CARGO_PKG_VERSION")
         )
     }
+}
+
+/// The case a snapshot's note holds: the note
+/// `Simulation::snapshot_with_note` keeps is the case's `resolved_toml`
+/// (as the C ABI and the Python package write it), or empty for a
+/// simulation known only by its state (None). `case` is the restored
+/// simulation's: the text must read back to it.
+pub fn case_from_note(note: &[u8], case: &Case) -> Result<Option<LoadedCase>, SnapshotError> {
+    if note.is_empty() {
+        return Ok(None);
+    }
+    let invalid = |message: String| SnapshotError::Invalid {
+        what: "its case text",
+        message,
+    };
+    // The note is under the checksum: only bytes made by hand get here.
+    let text = std::str::from_utf8(note).map_err(|e| invalid(format!("not UTF-8: {e}")))?;
+    let loaded = parse_case(text, &[]).map_err(|e| invalid(e.to_string()))?;
+    if loaded.case != *case {
+        return Err(invalid("not the case of its state".into()));
+    }
+    Ok(Some(loaded))
 }
 
 /// Reads, overrides, resolves and validates a case file.

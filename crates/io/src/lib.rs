@@ -34,7 +34,8 @@ mod pictures;
 mod record;
 
 pub use case_file::{
-    load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case, LoadedCase,
+    case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
+    LoadedCase,
 };
 pub use columns::Columns;
 pub use error::{InputError, OutputError};

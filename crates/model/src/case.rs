@@ -246,6 +246,16 @@ pub struct Case {
 /// guard: five f64 per node).
 pub const MAX_NODES: f64 = 5.0e7;
 
+/// The range of magnitudes of every length, unit weight and stress a case
+/// gives (a value that may be 0 is 0 or in this range), in the case's own
+/// units. Wide enough for any consistent units (nanometres to kilometres,
+/// pascals to gigapascals, either way round), narrow enough that no
+/// product the model forms overflows or underflows: the largest, a
+/// blade's weight and force γ d² w or γ d³, stays within 1e±80, and the
+/// widest ratio, c / (γ d), within 1e±60, far inside f64's 1e±308 (at
+/// γ = 1e306 the initial mass was infinite: docs/fuzzing.md).
+pub const MAGNITUDE: [f64; 2] = [1e-20, 1e20];
+
 /// The narrowest blade, as a fraction of the deepest tip depth.
 pub const THINNEST_WIDTH: f64 = 1e-6;
 
@@ -292,9 +302,23 @@ fn finite(key: &str, value: f64) -> Result<f64, CaseError> {
     }
 }
 
+/// A length, unit weight or stress: `value` in [`MAGNITUDE`], or 0 when
+/// `zero` allows it.
+fn in_magnitude(key: &str, value: f64, zero: bool) -> Result<(), CaseError> {
+    let [least, greatest] = MAGNITUDE;
+    if (least..=greatest).contains(&value) || (zero && value == 0.0) {
+        return Ok(());
+    }
+    let or_zero = if zero { "0 or " } else { "" };
+    Err(CaseError::new(
+        key,
+        format!("must be {or_zero}in [{least:e}, {greatest:e}] (got {value:?})"),
+    ))
+}
+
 fn positive(key: &str, value: f64) -> Result<(), CaseError> {
     if finite(key, value)? > 0.0 {
-        Ok(())
+        in_magnitude(key, value, false)
     } else {
         Err(CaseError::new(key, format!("must be > 0 (got {value})")))
     }
@@ -302,7 +326,7 @@ fn positive(key: &str, value: f64) -> Result<(), CaseError> {
 
 fn non_negative(key: &str, value: f64) -> Result<(), CaseError> {
     if finite(key, value)? >= 0.0 {
-        Ok(())
+        in_magnitude(key, value, true)
     } else {
         Err(CaseError::new(key, format!("must be >= 0 (got {value})")))
     }
@@ -396,6 +420,7 @@ impl Case {
                 format!("must be >= run.travel + 2 run.node_spacing = {least} (got {length})"),
             ));
         }
+        in_magnitude("bin.length", length, false)?;
         if self.blade.rake != 90.0 {
             return Err(CaseError::new(
                 "bin.length",
@@ -574,10 +599,14 @@ impl Case {
         for (k, &[u, d]) in path.iter().enumerate() {
             finite(key, u)?;
             finite(key, d)?;
-            if u < 0.0 || d <= 0.0 {
+            let [least, greatest] = MAGNITUDE;
+            let scaled = |v: f64| (least..=greatest).contains(&v);
+            if !(u == 0.0 || scaled(u)) || !scaled(d) {
                 return Err(CaseError::new(
                     key,
-                    format!("point {k}: needs u ≥ 0 and depth > 0 (got [{u}, {d}])"),
+                    format!(
+                        "point {k}: needs u 0 or in [{least:e}, {greatest:e}] and depth in [{least:e}, {greatest:e}] (got [{u:?}, {d:?}])"
+                    ),
                 ));
             }
             if k > 0 && u <= path[k - 1][0] {

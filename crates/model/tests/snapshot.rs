@@ -261,3 +261,43 @@ fn advance_to_a_depth_needs_a_vertical_blade_unless_the_depth_stays() {
     );
     assert!(e.to_string().contains("vertical"), "{e}");
 }
+
+/// Each record reaches `advance_to_with`'s callback when its increment is
+/// made: the simulation it sees has just made that increment (and no
+/// more), and the records are `advance_to`'s.
+#[test]
+fn advance_to_with_hands_over_each_record_as_its_increment_is_made() {
+    let c = case();
+    let x = 7.5 * c.run.increment;
+    let mut sim = Simulation::new(&c).unwrap();
+    let mut seen = Vec::new();
+    let made = sim
+        .advance_to_with(x, None, |now, record| {
+            assert_eq!(now.steps_done(), record.step);
+            seen.push((*record, now.blade_position(), now.profile()));
+        })
+        .unwrap();
+    assert_eq!(made, 8);
+    let positions: Vec<f64> = seen.iter().map(|s| s.1).collect();
+    assert!(positions.windows(2).all(|w| w[1] > w[0]), "{positions:?}");
+    assert!(seen.windows(2).all(|w| w[1].2 != w[0].2));
+    let mut other = Simulation::new(&c).unwrap();
+    let records = other.advance_to(x, None).unwrap();
+    let got: Vec<_> = seen.iter().map(|s| s.0).collect();
+    assert_eq!(got, records);
+    assert_eq!(rest(sim), rest(other));
+}
+
+/// A tip steered from 20 to 0.3 over two increments sits above the dip
+/// the first increments left ahead of it: no line from it stays in the
+/// soil, and the next increment says so instead of searching the far field
+/// for ever (found by fuzzing the C ABI,
+/// fuzz/regressions/ffi_calls/tip-steered-above-a-dip).
+#[test]
+fn a_tip_steered_above_a_dip_ahead_finds_no_mechanism() {
+    let mut sim = Simulation::new(&common::original(1.0, 100.0)).unwrap();
+    assert_eq!(sim.advance_to(0.3, Some(0.3)).unwrap().len(), 2);
+    let e = sim.step().unwrap_err();
+    assert!(e.to_string().contains("no admissible"), "{e}");
+    assert_eq!(sim.steps_done(), 2);
+}

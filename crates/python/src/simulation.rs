@@ -9,7 +9,7 @@ use crate::step::Step;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyTuple};
-use soilcut_io::{parse_case, profile_columns, LoadedCase};
+use soilcut_io::{case_from_note, profile_columns, LoadedCase};
 
 /// A running simulation of one case.
 #[pyclass(module = "soilcut._soilcut")]
@@ -17,8 +17,8 @@ use soilcut_io::{parse_case, profile_columns, LoadedCase};
 pub struct Simulation {
     sim: soilcut_model::Simulation,
     /// The case in both forms, as steered so far; `None` for a simulation
-    /// restored from a snapshot made without the case's text (outside
-    /// Python).
+    /// restored from a snapshot made without the case's text (by the Rust
+    /// library's `snapshot`).
     loaded: Option<LoadedCase>,
 }
 
@@ -54,25 +54,9 @@ impl Simulation {
     fn from_snapshot(py: Python<'_>, data: &[u8]) -> PyResult<Self> {
         let (sim, note) = soilcut_model::Simulation::from_snapshot_with_note(data)
             .map_err(|e| snapshot_error(py, e.to_string()))?;
-        if note.is_empty() {
-            return Ok(Simulation { sim, loaded: None });
-        }
-        // The note is under the checksum: only a snapshot made by hand
-        // gets these errors.
-        let text = String::from_utf8(note)
-            .map_err(|_| snapshot_error(py, "snapshot invalid: its case text is not UTF-8"))?;
-        let loaded = parse_case(&text, &[])
-            .map_err(|e| snapshot_error(py, format!("snapshot invalid: its case text: {e}")))?;
-        if loaded.case != *sim.case() {
-            return Err(snapshot_error(
-                py,
-                "snapshot invalid: its case text is not the case of its state",
-            ));
-        }
-        Ok(Simulation {
-            sim,
-            loaded: Some(loaded),
-        })
+        let loaded =
+            case_from_note(&note, sim.case()).map_err(|e| snapshot_error(py, e.to_string()))?;
+        Ok(Simulation { sim, loaded })
     }
 
     /// An independent copy (the state is cloned, not shared).

@@ -71,18 +71,28 @@ impl FarField {
         Slope::on_grid((self.d / self.spacings(n)) / self.dx, rake)
     }
 
-    /// First n ≥ n_s whose line passes below every node before it.
-    fn first_admissible(&self, r_min: f64) -> usize {
+    /// First n ≥ n_s whose line passes below every node before it, or
+    /// `limit` if none before it does.
+    fn first_admissible(&self, r_min: f64, limit: usize) -> usize {
+        // A node at or below the tip's level (r ≤ 0, a blade steered
+        // shallower than a trench or dip ahead of it) lies above every
+        // line from the tip: no candidate beyond it is admissible, and the
+        // search below would never end (found by fuzzing the C ABI).
+        if r_min.is_nan() || r_min <= 0.0 {
+            return limit;
+        }
         let admissible = |n: usize| self.d <= r_min * self.spacings(n);
         let mut n = if r_min.is_finite() {
-            ((self.d / r_min + self.face.offset).ceil() as usize).max(self.start)
+            ((self.d / r_min + self.face.offset).ceil() as usize)
+                .max(self.start)
+                .min(limit)
         } else {
             self.start
         };
         while n > self.start && admissible(n - 1) {
             n -= 1;
         }
-        while !admissible(n) {
+        while n < limit && !admissible(n) {
             n += 1;
         }
         n
@@ -101,7 +111,7 @@ impl FarField {
         let fresh = input.laws.band_angles(input.laws.fresh);
         let fresh_walls = Lower::new(fresh.friction, input);
         let mut evaluations = 0;
-        let mut n1 = self.first_admissible(lines.r_min);
+        let mut n1 = self.first_admissible(lines.r_min, max_nodes.saturating_sub(b));
         // A candidate needs a node ahead of it within `max_nodes` (an end
         // wall may set it).
         while b + n1 + 1 < max_nodes {

@@ -69,6 +69,26 @@ impl Simulation {
         x: f64,
         depth: Option<f64>,
     ) -> Result<Vec<StepRecord>, AdvanceError> {
+        let mut records = Vec::new();
+        match self.advance_to_with(x, depth, |_, record| records.push(*record)) {
+            Ok(_) => Ok(records),
+            Err(AdvanceError::Step { error, .. }) => Err(AdvanceError::Step { records, error }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// `advance_to`, handing each increment's record to `on_step` as soon
+    /// as the increment is made, with the simulation as it stands after it
+    /// (for a caller that reacts while the blade moves: a co-simulation's
+    /// time step, a progress display); returns the number of increments
+    /// made. A failed increment is `AdvanceError::Step` with no records:
+    /// `on_step` has had those of the increments before it.
+    pub fn advance_to_with(
+        &mut self,
+        x: f64,
+        depth: Option<f64>,
+        mut on_step: impl FnMut(&Simulation, &StepRecord),
+    ) -> Result<usize, AdvanceError> {
         let target = self.target(x)?;
         let todo = target - self.done;
         let mut case = match depth {
@@ -80,14 +100,17 @@ impl Simulation {
             case.validate().map_err(AdvanceError::Case)?;
             self.case = case;
         }
-        let mut records = Vec::with_capacity(todo);
+        let start = self.done;
         while self.done < target {
             match self.step() {
-                Ok(record) => records.push(record),
-                Err(error) => return Err(AdvanceError::Step { records, error }),
+                Ok(record) => on_step(self, &record),
+                Err(error) => {
+                    let records = Vec::new();
+                    return Err(AdvanceError::Step { records, error });
+                }
             }
         }
-        Ok(records)
+        Ok(target - start)
     }
 
     /// The increments done once the blade is at x.
