@@ -171,7 +171,7 @@ fn bad_depth_paths_are_refused() {
     for (path, says) in [
         ("[[0, 10], [0, 15]]", "u must increase"),
         ("[[0, 10], [20, 15], [15, 5]]", "u must increase"),
-        ("[[0, -1]]", "depth > 0"),
+        ("[[0, -1]]", "depth in [1e-20, 1e20] (got [0.0, -1.0])"),
         ("[[0, 10], [20, nan]]", "finite"),
     ] {
         let set = format!("blade.depth_path={path}");
