@@ -44,7 +44,8 @@
 /**
  * The call is not allowed in the simulation's present state: a step after
  * the case's travel has been reached, the last step's record before any
- * step.
+ * step, a call on a handle from its own `soilcut_advance_to` callback
+ * (other than `soilcut_state`, `soilcut_last_step`, `soilcut_last_error`).
  */
 #define SOILCUT_ERR_STATE -5
 

@@ -23,7 +23,8 @@ pub const SOILCUT_ERR_LENGTH: c_int = -3;
 pub const SOILCUT_ERR_ARGUMENT: c_int = -4;
 /// The call is not allowed in the simulation's present state: a step after
 /// the case's travel has been reached, the last step's record before any
-/// step.
+/// step, a call on a handle from its own `soilcut_advance_to` callback
+/// (other than `soilcut_state`, `soilcut_last_step`, `soilcut_last_error`).
 pub const SOILCUT_ERR_STATE: c_int = -5;
 /// The increment has no admissible mechanism (the model's step error; the
 /// message says why). The simulation is unchanged.
