@@ -40,11 +40,13 @@ impl Case {
 
     /// The case every default filled in: that of `case.resolved.toml`.
     pub fn resolved_of(loaded: &LoadedCase) -> Case {
-        Case::of_loaded(
-            loaded.resolved_toml(),
-            loaded.resolved_table(),
-            loaded.clone(),
-        )
+        let resolved = loaded.resolved_toml();
+        Case {
+            text: resolved.clone(),
+            table: loaded.resolved_table(),
+            loaded: loaded.clone(),
+            resolved,
+        }
     }
 
     /// The base of a study of this case.

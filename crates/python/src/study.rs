@@ -305,9 +305,10 @@ pub fn landscape<'py>(
     case: &Bound<'py, PyAny>,
     at: f64,
 ) -> PyResult<(f64, Bound<'py, PyDict>)> {
-    let case = Case::extract(case)?.get().loaded.case.clone();
-    check_landscape_at(&case, "at", at).map_err(PyValueError::new_err)?;
-    let mut sim = Simulation::new(&case).map_err(|e| case_error(py, &e.into()))?;
+    let native = Case::extract(case)?;
+    let case = &native.get().loaded.case;
+    check_landscape_at(case, "at", at).map_err(PyValueError::new_err)?;
+    let mut sim = Simulation::new(case).map_err(|e| case_error(py, &e.into()))?;
     let candidates = detached(py, || landscape_at(&mut sim, at))?;
     let u = sim.blade_position();
     Ok((
