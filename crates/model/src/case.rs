@@ -4,10 +4,11 @@
 //! Lengths are in any consistent unit (the paper's cases use mm); angles are
 //! in degrees; unit weight in force per length³ of the same length unit.
 
+use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Which of the paper's two models to run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Model {
     /// Kashizadeh (2018): one slip line, incompressible, softening.
     Original,
@@ -27,7 +28,7 @@ impl Model {
 
 /// An angle that evolves with accumulated shear: `initial` at ut = 0,
 /// `peak` at ut = up, `residual` from ut = ur on (degrees).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AngleLaw {
     /// At ut = 0 (φc, ψc), degrees.
     pub initial: f64,
@@ -59,7 +60,7 @@ impl AngleLaw {
 }
 
 /// The blade: its depth (or depth path), face angle and face contact.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Blade {
     /// d: depth of the blade tip below the undisturbed surface.
     pub depth: f64,
@@ -83,7 +84,7 @@ pub struct Blade {
 
 /// The soil: unit weight, material laws (docs/model.md §4), band width,
 /// repose and the loads of the extended equation.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Soil {
     /// γ0: initial unit weight.
     pub unit_weight: f64,
@@ -138,7 +139,7 @@ impl Soil {
 }
 
 /// How far the blade goes and in what increments.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Run {
     /// Total blade displacement.
     pub travel: f64,
@@ -150,7 +151,7 @@ pub struct Run {
 }
 
 /// How a candidate band takes its angles from the nodes it touches.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BandAngleRule {
     /// Mean of φ(ut_i) and ψ(ut_i) over the band's nodes (the default,
     /// docs/model.md §2.7).
@@ -161,7 +162,7 @@ pub enum BandAngleRule {
 }
 
 /// How much of Δut the band's nodes accumulate.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BandShearRule {
     /// Every node in the band the full Δut (the default, docs/model.md §3.6).
     #[default]
@@ -173,7 +174,7 @@ pub enum BandShearRule {
 }
 
 /// How the band's unit weight is updated.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum UnitWeightRule {
     /// One uniform γ over the band's nodes, chosen so that the weight of
     /// soil is unchanged (docs/model.md §5.3: the band as a whole).
@@ -186,7 +187,7 @@ pub enum UnitWeightRule {
 
 /// How the face's friction follows the block's slip along the face
 /// (docs/model.md §2.6).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum FaceFrictionRule {
     /// Mobilised continuously with the slip over a small range (regularised
     /// Coulomb friction, (M41)): the default, docs/model.md §2.6.
@@ -199,7 +200,7 @@ pub enum FaceFrictionRule {
 
 /// The choices the paper leaves open (docs/model.md §14), for studying
 /// their effect.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Choices {
     /// A candidate band's φ and ψ from its footprint (docs/model.md §2.7).
     pub band_angles: BandAngleRule,
@@ -213,7 +214,7 @@ pub struct Choices {
 }
 
 /// The soil bin: where the ground ends.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Bin {
     /// Distance from the blade's start (x = 0) to a rigid, frictionless end
     /// wall ahead of it: no slip line emerges beyond it and the pile stops
@@ -222,7 +223,7 @@ pub struct Bin {
 }
 
 /// One simulation case: what the case file says, every default filled in.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Case {
     /// Names the output folder (`out/<name>`).
     pub name: String,

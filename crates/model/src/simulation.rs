@@ -21,8 +21,6 @@ use crate::surface::Surface;
 use std::fmt;
 
 mod advance;
-mod case_codec;
-mod codec;
 pub mod snapshot;
 
 pub use advance::AdvanceError;

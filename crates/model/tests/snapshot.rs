@@ -5,7 +5,7 @@
 
 mod common;
 
-use soilcut_model::simulation::snapshot::{CRATE_VERSION, FORMAT_VERSION, MAGIC};
+use soilcut_model::simulation::snapshot::{CHECKSUM_BYTES, CRATE_VERSION, FORMAT_VERSION, MAGIC};
 use soilcut_model::{AdvanceError, Case, Simulation, SnapshotError};
 
 /// The original model's case, 3 d at d/50, after `steps` increments.
@@ -48,7 +48,7 @@ fn the_note_comes_back() {
 
 /// The snapshot without its checksum.
 fn unsealed(mut bytes: Vec<u8>) -> Vec<u8> {
-    bytes.truncate(bytes.len() - 8);
+    bytes.truncate(bytes.len() - CHECKSUM_BYTES);
     bytes
 }
 
@@ -141,6 +141,44 @@ fn random_bytes_never_panic() {
         let mut framed = header.to_vec();
         framed.extend_from_slice(&garbage);
         assert!(Simulation::from_snapshot(&framed).is_err());
+    }
+}
+
+/// `body` framed and sealed as a snapshot of this build: the header, its
+/// length and a matching CRC-32, so that only the body's decoding can
+/// refuse it.
+fn sealed(body: &[u8]) -> Vec<u8> {
+    let mut out = MAGIC.to_vec();
+    out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
+    out.extend_from_slice(&(CRATE_VERSION.len() as u64).to_le_bytes());
+    out.extend_from_slice(CRATE_VERSION.as_bytes());
+    out.extend_from_slice(&(body.len() as u64).to_le_bytes());
+    out.extend_from_slice(body);
+    let sum = crc32fast::hash(&out);
+    out.extend_from_slice(&sum.to_le_bytes());
+    out
+}
+
+#[test]
+fn a_sealed_but_spoilt_body_is_an_error_naming_it() {
+    let bytes = stepped(5).snapshot();
+    let start = MAGIC.len() + 4 + 8 + CRATE_VERSION.len() + 8;
+    let body = &bytes[start..bytes.len() - CHECKSUM_BYTES];
+    assert!(Simulation::from_snapshot(&sealed(body)).is_ok());
+    for len in (0..body.len()).step_by(13) {
+        let e = Simulation::from_snapshot(&sealed(&body[..len])).unwrap_err();
+        let named = e.to_string().contains("body") || matches!(e, SnapshotError::Case(_));
+        assert!(named, "body cut to {len} bytes: {e}");
+    }
+    let mut longer = body.to_vec();
+    longer.push(0);
+    let e = Simulation::from_snapshot(&sealed(&longer)).unwrap_err();
+    assert!(e.to_string().contains("1 bytes left over"), "{e}");
+    // Any byte changed: refused or restored, never a panic.
+    for at in (0..body.len()).step_by(5) {
+        let mut bad = body.to_vec();
+        bad[at] = bad[at].wrapping_add(0x5b);
+        let _ = Simulation::from_snapshot(&sealed(&bad));
     }
 }
 

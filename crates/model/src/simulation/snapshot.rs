@@ -3,111 +3,78 @@
 //! A snapshot holds everything that determines the rest of the run: the
 //! case (as `advance_to` may have steered it), the surface's nodes and
 //! counters, the search's seed (the previous increment's emergence node)
-//! and evaluation count, the side heaps and the increments done. What the
-//! case determines (the laws, the rake's grid, the node scheme, the face's
-//! node, which follows from the increments done) is rebuilt from it; the
-//! search's, kinematics' and avalanche's scratch is rebuilt empty, as each
-//! increment fills it before use. So a restored simulation continues bit
-//! for bit as the original would.
+//! and evaluation count, the side heaps and the increments done (`Body`).
+//! What the case determines (the laws, the rake's grid, the node scheme,
+//! the face's node, which follows from the increments done) is rebuilt
+//! from it; the search's, kinematics' and avalanche's scratch is rebuilt
+//! empty, as each increment fills it before use. So a restored simulation
+//! continues bit for bit as the original would.
 //!
 //! Layout, little-endian: the magic `SOILCUT\x01`, the format version
-//! (u32), the crate version (length-prefixed UTF-8), the body's length
-//! (u64), the body, and a 64-bit checksum of all that precedes it. A
-//! snapshot of another format or crate version is refused: the model's
-//! numbers may differ between versions, so a state from one is no state of
-//! the other.
+//! (u32), the crate version (u64 length, UTF-8), the body's length (u64),
+//! the body in postcard's format (serde; numbers as their bits), and the
+//! CRC-32 (u32) of all that precedes it. A snapshot of another format or
+//! crate version is refused: the model's numbers may differ between
+//! versions, so a state from one is no state of the other.
 
-use super::case_codec::{read_case, write_case};
-use super::codec::{checksum, Reader, Writer};
+mod check;
+mod error;
+
+pub use error::SnapshotError;
+
 use super::{fresh_angles, Simulation};
-use crate::case::CaseError;
+use crate::case::Case;
 use crate::grid::FaceNode;
 use crate::laws::Laws;
 use crate::search::Search;
 use crate::spill::SideHeaps;
 use crate::surface::Surface;
-use std::fmt;
+use check::{check_state, finite, finite_all, StateCheck};
+use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 
 /// The first bytes of every snapshot.
 pub const MAGIC: [u8; 8] = *b"SOILCUT\x01";
 /// The layout's version: raised whenever the body changes.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 /// The crate version a snapshot must come from.
 pub const CRATE_VERSION: &str = env!("CARGO_PKG_VERSION");
+/// Bytes of the CRC-32 that ends every snapshot.
+pub const CHECKSUM_BYTES: usize = 4;
 
-/// Why bytes are not a snapshot this build can restore.
-#[derive(Clone, Debug, PartialEq)]
-pub enum SnapshotError {
-    /// The bytes do not start with `MAGIC`.
-    NotASnapshot,
-    /// A snapshot of another format or crate version.
-    Version {
-        /// Its format version.
-        format: u32,
-        /// Its crate version (empty if the format is unknown).
-        crate_version: String,
-    },
-    /// The bytes end inside `what`.
-    Truncated {
-        /// What was being read.
-        what: &'static str,
-    },
-    /// Bytes after the checksum.
-    TrailingBytes {
-        /// How many.
-        count: usize,
-    },
-    /// The checksum does not match: the bytes were changed.
-    Corrupt,
-    /// A value out of its range (`what`: which, `message`: why).
-    Invalid {
-        /// The value.
-        what: &'static str,
-        /// What is wrong with it.
-        message: String,
-    },
-    /// The case does not validate (`Case::validate`).
-    Case(CaseError),
+/// The body of a snapshot (docs/model.md §17.1): borrowed from the
+/// simulation when written, owned when read. Its fields are the state in
+/// the order the layout keeps; adding one raises `FORMAT_VERSION`.
+#[derive(Serialize, Deserialize)]
+struct Body<'a> {
+    case: Cow<'a, Case>,
+    /// The caller's bytes (`snapshot_with_note`).
+    note: Cow<'a, [u8]>,
+    /// Increments done; the face follows from them.
+    done: usize,
+    initial_mass: f64,
+    /// The surface's floor y, where the undisturbed ground begins, and the
+    /// trench's and the appended ground's weights and area.
+    floor: f64,
+    pristine_from: usize,
+    trench_mass: f64,
+    appended_mass: f64,
+    appended_area: f64,
+    /// The node columns y, ut, γ, φ, ψ.
+    height: Cow<'a, [f64]>,
+    accumulated_shear: Cow<'a, [f64]>,
+    unit_weight: Cow<'a, [f64]>,
+    friction: Cow<'a, [f64]>,
+    dilation: Cow<'a, [f64]>,
+    /// The search's seed and its count of evaluations.
+    seed: Option<usize>,
+    evaluations: u64,
+    /// The side heaps: the weight spilled, and S, h_s, γs per node.
+    spilled: f64,
+    side_area: Cow<'a, [f64]>,
+    side_height: Cow<'a, [f64]>,
+    side_unit_weight: Cow<'a, [f64]>,
 }
-
-impl SnapshotError {
-    pub(super) fn invalid(what: &'static str, message: String) -> Self {
-        SnapshotError::Invalid { what, message }
-    }
-}
-
-impl fmt::Display for SnapshotError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            SnapshotError::NotASnapshot => {
-                write!(f, "not a soilcut snapshot (it does not start with the magic bytes)")
-            }
-            SnapshotError::Version {
-                format,
-                crate_version,
-            } => write!(
-                f,
-                "a snapshot of another version (format {format}, soilcut {}): this is format {FORMAT_VERSION} of soilcut {CRATE_VERSION}, which restores only its own snapshots",
-                if crate_version.is_empty() { "unknown" } else { crate_version }
-            ),
-            SnapshotError::Truncated { what } => {
-                write!(f, "snapshot truncated: it ends inside {what}")
-            }
-            SnapshotError::TrailingBytes { count } => {
-                write!(f, "snapshot has {count} bytes after its end")
-            }
-            SnapshotError::Corrupt => {
-                write!(f, "snapshot corrupt: its checksum does not match its bytes")
-            }
-            SnapshotError::Invalid { what, message } => {
-                write!(f, "snapshot invalid: {what}: {message}")
-            }
-            SnapshotError::Case(e) => write!(f, "snapshot's case invalid: {e}"),
-        }
-    }
-}
-
-impl std::error::Error for SnapshotError {}
 
 impl Simulation {
     /// The simulation's state as bytes (docs/model.md §17):
@@ -121,22 +88,18 @@ impl Simulation {
     /// Python package keeps the case file's text there); the model does
     /// not read them.
     pub fn snapshot_with_note(&self, note: &[u8]) -> Vec<u8> {
-        let mut w = Writer::default();
-        w.0.extend_from_slice(&MAGIC);
-        w.u32(FORMAT_VERSION);
-        w.str(CRATE_VERSION);
-        // The body's length, patched in once the body is written (no copy
-        // of a body the size of the domain).
-        let at = w.0.len();
-        w.u64(0);
-        write_case(&mut w, &self.case);
-        w.bytes(note);
-        self.write_state(&mut w);
-        let length = (w.0.len() - at - 8) as u64;
-        w.0[at..at + 8].copy_from_slice(&length.to_le_bytes());
-        let sum = checksum(&w.0);
-        w.u64(sum);
-        w.0
+        // Plain data into memory: serde's derive has no error to return.
+        let body = postcard::to_allocvec(&self.body(note)).expect("a snapshot body serialises");
+        let mut out = Vec::with_capacity(body.len() + 64);
+        out.extend_from_slice(&MAGIC);
+        out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
+        out.extend_from_slice(&(CRATE_VERSION.len() as u64).to_le_bytes());
+        out.extend_from_slice(CRATE_VERSION.as_bytes());
+        out.extend_from_slice(&(body.len() as u64).to_le_bytes());
+        out.extend_from_slice(&body);
+        let sum = crc32fast::hash(&out);
+        out.extend_from_slice(&sum.to_le_bytes());
+        out
     }
 
     /// Restores a simulation from `snapshot`'s bytes; an error names what
@@ -147,77 +110,60 @@ impl Simulation {
 
     /// `from_snapshot`, with the note given to `snapshot_with_note`.
     pub fn from_snapshot_with_note(bytes: &[u8]) -> Result<(Simulation, Vec<u8>), SnapshotError> {
-        let body = checked_body(bytes)?;
-        let mut r = Reader::new(body);
-        let case = read_case(&mut r)?;
-        case.validate().map_err(SnapshotError::Case)?;
-        let note = r.bytes("note")?.to_vec();
-        let sim = Self::read_state(&mut r, case)?;
-        match r.remaining() {
-            0 => Ok((sim, note)),
-            count => Err(SnapshotError::invalid(
-                "body",
-                format!("{count} bytes left over after the state"),
-            )),
+        let body = decode(checked_body(bytes)?)?;
+        body.case.validate().map_err(SnapshotError::Case)?;
+        let note = body.note.to_vec();
+        Ok((Self::restore(body)?, note))
+    }
+
+    fn body<'a>(&'a self, note: &'a [u8]) -> Body<'a> {
+        let (s, side) = (&self.surface, &self.side);
+        Body {
+            case: Cow::Borrowed(&self.case),
+            note: Cow::Borrowed(note),
+            done: self.done,
+            initial_mass: self.initial_mass,
+            floor: s.floor,
+            pristine_from: s.pristine_from,
+            trench_mass: s.trench_mass,
+            appended_mass: s.appended_mass,
+            appended_area: s.appended_area,
+            height: Cow::Borrowed(&s.height),
+            accumulated_shear: Cow::Borrowed(&s.accumulated_shear),
+            unit_weight: Cow::Borrowed(&s.unit_weight),
+            friction: Cow::Borrowed(&s.friction),
+            dilation: Cow::Borrowed(&s.dilation),
+            seed: self.search.previous(),
+            evaluations: self.search.evaluations,
+            spilled: side.spilled,
+            side_area: Cow::Borrowed(&side.area),
+            side_height: Cow::Borrowed(&side.height),
+            side_unit_weight: Cow::Borrowed(&side.unit_weight),
         }
     }
 
-    fn write_state(&self, w: &mut Writer) {
-        w.usize(self.done);
-        w.f64(self.initial_mass);
-        let s = &self.surface;
-        w.f64(s.floor);
-        w.usize(s.pristine_from);
-        w.f64(s.trench_mass);
-        w.f64(s.appended_mass);
-        w.f64(s.appended_area);
-        for v in [
-            &s.height,
-            &s.accumulated_shear,
-            &s.unit_weight,
-            &s.friction,
-            &s.dilation,
-        ] {
-            w.f64s(v);
-        }
-        let previous = self.search.previous();
-        w.u8(previous.is_some() as u8);
-        w.usize(previous.unwrap_or(0));
-        w.u64(self.search.evaluations);
-        let side = &self.side;
-        w.f64(side.spilled);
-        for v in [&side.area, &side.height, &side.unit_weight] {
-            w.f64s(v);
-        }
-    }
-
-    fn read_state(r: &mut Reader, case: crate::case::Case) -> Result<Simulation, SnapshotError> {
-        let done = r.usize("increments done")?;
-        let initial_mass = finite("initial mass", r.f64("initial mass")?)?;
-        let floor = finite("surface floor", r.f64("surface floor")?)?;
-        let pristine_from = r.usize("surface")?;
-        let trench_mass = finite("trench mass", r.f64("surface")?)?;
-        let appended_mass = finite("appended mass", r.f64("surface")?)?;
-        let appended_area = finite("appended area", r.f64("surface")?)?;
-        let mut column = |what| r.f64s(what).and_then(|v| finite_all(what, v));
-        let height = column("surface heights")?;
-        let accumulated_shear = column("accumulated shear")?;
-        let unit_weight = column("unit weights")?;
-        let friction = column("friction angles")?;
-        let dilation = column("dilation angles")?;
-        let previous = r.bool("search seed")?;
-        let seed = r.usize("search seed")?;
-        let evaluations = r.u64("evaluations")?;
+    /// The simulation a decoded body describes, once its numbers are
+    /// finite and its state one that runs reach (`check_state`).
+    fn restore(b: Body) -> Result<Simulation, SnapshotError> {
+        let case = b.case.into_owned();
+        let initial_mass = finite("initial mass", b.initial_mass)?;
+        let floor = finite("surface floor", b.floor)?;
+        let column = |what, v: Cow<[f64]>| finite_all(what, v.into_owned());
+        let height = column("surface heights", b.height)?;
+        let accumulated_shear = column("accumulated shear", b.accumulated_shear)?;
+        let unit_weight = column("unit weights", b.unit_weight)?;
+        let friction = column("friction angles", b.friction)?;
+        let dilation = column("dilation angles", b.dilation)?;
         let mut side = SideHeaps::default();
-        side.spilled = finite("mass spilled", r.f64("side heaps")?)?;
-        side.area = finite_all("side heaps", r.f64s("side heaps")?)?;
-        side.height = finite_all("side heaps", r.f64s("side heaps")?)?;
-        side.unit_weight = finite_all("side heaps", r.f64s("side heaps")?)?;
+        side.spilled = finite("mass spilled", b.spilled)?;
+        side.area = column("side heaps", b.side_area)?;
+        side.height = column("side heaps", b.side_height)?;
+        side.unit_weight = column("side heaps", b.side_unit_weight)?;
         let k = case.increments_per_node();
         // The face follows from the increments done (`Scheme::face_after`).
         let face = FaceNode {
-            node: done / k,
-            offset: (done % k) as f64 / k as f64,
+            node: b.done / k,
+            offset: (b.done % k) as f64 / k as f64,
         };
         check_state(&StateCheck {
             case: &case,
@@ -225,8 +171,8 @@ impl Simulation {
             lengths: [&accumulated_shear, &unit_weight, &friction, &dilation].map(Vec::len),
             face: face.node,
             floor,
-            pristine_from,
-            seed: previous.then_some(seed),
+            pristine_from: b.pristine_from,
+            seed: b.seed,
             side: &side,
             unit_weight: &unit_weight,
         })?;
@@ -239,20 +185,71 @@ impl Simulation {
             0,
         );
         s.face = face;
-        s.pristine_from = pristine_from;
-        s.trench_mass = trench_mass;
-        s.appended_mass = appended_mass;
-        s.appended_area = appended_area;
+        s.pristine_from = b.pristine_from;
+        s.trench_mass = finite("trench mass", b.trench_mass)?;
+        s.appended_mass = finite("appended mass", b.appended_mass)?;
+        s.appended_area = finite("appended area", b.appended_area)?;
         s.height = height;
         s.accumulated_shear = accumulated_shear;
         s.unit_weight = unit_weight;
         s.friction = friction;
         s.dilation = dilation;
         let mut sim = Simulation::assemble(case, laws, s, initial_mass);
-        sim.search = Search::resumed(previous.then_some(seed), evaluations);
+        sim.search = Search::resumed(b.seed, b.evaluations);
         sim.side = side;
-        sim.done = done;
+        sim.done = b.done;
         Ok(sim)
+    }
+}
+
+/// The body from its postcard bytes, all of them.
+fn decode(bytes: &[u8]) -> Result<Body<'static>, SnapshotError> {
+    match postcard::take_from_bytes::<Body>(bytes) {
+        Ok((body, [])) => Ok(body),
+        Ok((_, rest)) => Err(SnapshotError::invalid(
+            "body",
+            format!("{} bytes left over after the state", rest.len()),
+        )),
+        Err(postcard::Error::DeserializeUnexpectedEnd) => {
+            Err(SnapshotError::Truncated { what: "the body" })
+        }
+        Err(e) => Err(SnapshotError::invalid("body", e.to_string())),
+    }
+}
+
+/// The header's fields in order; a short input names what it ends inside.
+struct Cursor<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl<'a> Cursor<'a> {
+    fn remaining(&self) -> usize {
+        self.bytes.len() - self.at
+    }
+
+    fn take(&mut self, n: usize, what: &'static str) -> Result<&'a [u8], SnapshotError> {
+        if self.remaining() < n {
+            return Err(SnapshotError::Truncated { what });
+        }
+        self.at += n;
+        Ok(&self.bytes[self.at - n..self.at])
+    }
+
+    fn array<const N: usize>(&mut self, what: &'static str) -> Result<[u8; N], SnapshotError> {
+        let mut out = [0; N];
+        out.copy_from_slice(self.take(N, what)?);
+        Ok(out)
+    }
+
+    /// Bytes behind a u64 length, checked against the bytes left before
+    /// anything is read (a corrupt length must not reach past the end).
+    fn counted(&mut self, what: &'static str) -> Result<&'a [u8], SnapshotError> {
+        let n = u64::from_le_bytes(self.array(what)?);
+        match usize::try_from(n) {
+            Ok(n) if n <= self.remaining() => self.take(n, what),
+            _ => Err(SnapshotError::Truncated { what }),
+        }
     }
 }
 
@@ -261,145 +258,37 @@ fn checked_body(bytes: &[u8]) -> Result<&[u8], SnapshotError> {
     if bytes.len() < MAGIC.len() || bytes[..MAGIC.len()] != MAGIC {
         return Err(SnapshotError::NotASnapshot);
     }
-    let mut r = Reader::new(&bytes[MAGIC.len()..]);
-    let format = r.u32("the format version")?;
+    let mut r = Cursor {
+        bytes,
+        at: MAGIC.len(),
+    };
+    let format = u32::from_le_bytes(r.array("the format version")?);
     if format != FORMAT_VERSION {
         return Err(SnapshotError::Version {
             format,
             crate_version: String::new(),
         });
     }
-    let version = r.string("the crate version")?;
+    let version = std::str::from_utf8(r.counted("the crate version")?)
+        .map_err(|_| SnapshotError::invalid("the crate version", "not UTF-8 text".to_string()))?;
     if version != CRATE_VERSION {
         return Err(SnapshotError::Version {
             format,
-            crate_version: version,
+            crate_version: version.to_string(),
         });
     }
-    let body = r.bytes("the body")?;
-    let end = bytes.len() - r.remaining();
-    let sum = r.u64("the checksum")?;
+    let body = r.counted("the body")?;
+    let end = r.at;
+    let sum = u32::from_le_bytes(r.array("the checksum")?);
     if r.remaining() > 0 {
         return Err(SnapshotError::TrailingBytes {
             count: r.remaining(),
         });
     }
-    if checksum(&bytes[..end]) != sum {
+    if crc32fast::hash(&bytes[..end]) != sum {
         return Err(SnapshotError::Corrupt);
     }
     Ok(body)
-}
-
-fn finite(what: &'static str, v: f64) -> Result<f64, SnapshotError> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(SnapshotError::invalid(what, format!("{v} is not finite")))
-    }
-}
-
-fn finite_all(what: &'static str, v: Vec<f64>) -> Result<Vec<f64>, SnapshotError> {
-    match v.iter().find(|x| !x.is_finite()) {
-        Some(x) => Err(SnapshotError::invalid(what, format!("{x} is not finite"))),
-        None => Ok(v),
-    }
-}
-
-/// What `check_state` looks at.
-struct StateCheck<'a> {
-    case: &'a crate::case::Case,
-    /// Nodes of the surface.
-    n: usize,
-    /// Lengths of the other node columns.
-    lengths: [usize; 4],
-    face: usize,
-    floor: f64,
-    pristine_from: usize,
-    seed: Option<usize>,
-    side: &'a SideHeaps,
-    unit_weight: &'a [f64],
-}
-
-/// The invariants every increment keeps, which the model indexes by: a
-/// state that breaks one would not continue as any run does.
-fn check_state(c: &StateCheck) -> Result<(), SnapshotError> {
-    let n = c.n;
-    if c.lengths.iter().any(|&l| l != n) {
-        return Err(SnapshotError::invalid(
-            "surface",
-            format!(
-                "node columns of different lengths ({n} and {:?})",
-                c.lengths
-            ),
-        ));
-    }
-    // Every increment leaves a node ahead of its emergence node, which is
-    // ahead of the face.
-    if n < c.face + 2 {
-        return Err(SnapshotError::invalid(
-            "increments done",
-            format!(
-                "the face at node {} needs at least {} nodes (got {n})",
-                c.face,
-                c.face + 2
-            ),
-        ));
-    }
-    if let Some(wall) = c.case.wall_node() {
-        if n > wall + 1 {
-            return Err(SnapshotError::invalid(
-                "surface",
-                format!("{n} nodes reach beyond the end wall's node {wall}"),
-            ));
-        }
-    }
-    if c.pristine_from > n {
-        return Err(SnapshotError::invalid(
-            "surface",
-            format!("undisturbed from node {} of {n}", c.pristine_from),
-        ));
-    }
-    if !(c.floor < 0.0 && -c.floor >= c.case.deepest()) {
-        return Err(SnapshotError::invalid(
-            "surface floor",
-            format!(
-                "y = {} must lie at or below the deepest tip depth {}",
-                c.floor,
-                c.case.deepest()
-            ),
-        ));
-    }
-    if c.unit_weight.iter().any(|&g| g <= 0.0) {
-        return Err(SnapshotError::invalid(
-            "unit weights",
-            "must be > 0".to_string(),
-        ));
-    }
-    if let Some(j) = c.seed.filter(|&j| j >= n) {
-        return Err(SnapshotError::invalid(
-            "search seed",
-            format!("node {j} of {n}"),
-        ));
-    }
-    let side = c.side;
-    let m = side.area.len();
-    if side.height.len() != m || side.unit_weight.len() != m || m > n {
-        return Err(SnapshotError::invalid(
-            "side heaps",
-            format!(
-                "columns of {m}, {} and {} nodes for a surface of {n}",
-                side.height.len(),
-                side.unit_weight.len()
-            ),
-        ));
-    }
-    if c.case.blade.width.is_none() && (m > 0 || side.spilled != 0.0) {
-        return Err(SnapshotError::invalid(
-            "side heaps",
-            "a blade without blade.width has none".to_string(),
-        ));
-    }
-    Ok(())
 }
 
 #[cfg(test)]
