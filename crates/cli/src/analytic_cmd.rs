@@ -13,7 +13,7 @@ Examples:
 /// The table `soilcut analytic` prints.
 pub fn report(case: &Case) -> String {
     let wedge = Wedge::of_case(case);
-    let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+    let norm = case.force_scale();
     let mut out = format!(
         "Analytic baselines for the initial flat ground of {} (forces per unit width)\n\
          d = {}, γ0 = {}, φ = {}° (at zero shear), φw = {}°, α = {}°, c = {}, a = {}, q = {}\n\n\

@@ -246,7 +246,7 @@ struct FactorsJson {
 impl BaselinesJson {
     fn of(case: &soilcut_model::Case) -> Self {
         let wedge = Wedge::of_case(case);
-        let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+        let norm = case.force_scale();
         let normalised = |b: Baseline, norm: f64| BaselineJson {
             force: b.force,
             force_norm: b.force / norm,

@@ -691,6 +691,12 @@ impl Case {
         Ok(())
     }
 
+    /// γ0 d², d = `blade.depth`: the force scale of the paper's P/(γ0 d²),
+    /// for forces per unit width (force/length).
+    pub fn force_scale(&self) -> f64 {
+        self.soil.unit_weight * self.blade.depth * self.blade.depth
+    }
+
     /// k = h / v0: increments per node spacing (1: the reference scheme).
     pub fn increments_per_node(&self) -> usize {
         (self.run.node_spacing / self.run.increment)

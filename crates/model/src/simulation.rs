@@ -295,8 +295,7 @@ impl Simulation {
     /// P / (γ0 d²), d the reference depth `blade.depth`, for P per unit
     /// width.
     fn normalised(&self, force: f64) -> f64 {
-        let c = &self.case;
-        force / (c.soil.unit_weight * c.blade.depth * c.blade.depth)
+        force / self.case.force_scale()
     }
 
     /// Rise of the tip per unit of travel over the next increment.

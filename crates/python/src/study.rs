@@ -279,7 +279,7 @@ fn baseline<'py>(py: Python<'py>, b: Option<Baseline>, norm: f64) -> PyResult<Bo
 pub fn analytic<'py>(py: Python<'py>, case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
     let case = Case::extract(case)?.get().loaded.case.clone();
     let wedge = Wedge::of_case(&case);
-    let norm = case.soil.unit_weight * case.blade.depth * case.blade.depth;
+    let norm = case.force_scale();
     let out = PyDict::new(py);
     out.set_item("rankine", baseline(py, Some(wedge.rankine()), norm)?)?;
     out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
