@@ -18,9 +18,6 @@
 //! A mechanism is admissible only for β > 0 and β + φ + φw < 90°, i.e. for
 //! t > 0 and a positive denominator.
 
-use crate::case::FaceFrictionRule;
-use crate::trig;
-
 /// Eq. (1) for one friction angle φ and wall friction φw, precomputed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ForceFactor {
@@ -128,78 +125,6 @@ impl ForceFactor {
     /// of the stopping bound (M31) at the least φ.
     pub fn at_zero_angle(&self) -> f64 {
         self.sin_phi / self.cos_phi_w
-    }
-}
-
-/// The slip along the face, per unit of blade travel, at which the face
-/// friction is fully mobilised (M41): Coulomb friction is set-valued at
-/// zero slip, and a least-force search over it takes the extreme (a
-/// block that does not slip gets the full −φw of a sinking one); over this
-/// small range it follows the slip continuously, so that the force is
-/// continuous in β. 5 % of the blade's travel is a slip direction about
-/// 3° from the face's (docs/model.md §2.6).
-pub const SLIP_MOBILISATION: f64 = 0.05;
-
-/// How the face moves in one increment, for the direction of its friction.
-#[derive(Clone, Copy, Debug)]
-pub struct Face {
-    /// Rise of the tip per unit of travel: −Δd / v0 (0 at constant depth).
-    pub climb: f64,
-    /// tan β at and below which some band may have less than the full
-    /// +φw of a block rising along the face.
-    pub sinking_below: f64,
-    /// The rule (`choices.face_friction`).
-    pub rule: FaceFrictionRule,
-    /// sin α of the face.
-    pub rake_sin: f64,
-    /// cot α of the face.
-    pub rake_cot: f64,
-}
-
-impl Face {
-    /// The share m ∈ [−1, 1] of the wall friction that a block on a band
-    /// at tan β with dilation ψ mobilises, ω = m φw + (α − 90°) in Eq. (1):
-    /// its sign is (M9), the block rising along the face where its
-    /// direction β + ψ climbs faster than the tip, tan(β + ψ) > κ; under
-    /// `Mobilised` it follows the block's slip along the face per unit of
-    /// travel,
-    /// s = (tan(β + ψ) − κ) / (sin α + tan(β + ψ) cos α),
-    /// as m = clamp(s / s_m, −1, 1) (M41). Exactly ±1 outside the ramp,
-    /// so that Eq. (1) takes the precomputed factors there.
-    #[inline]
-    pub fn mobilisation(&self, tan_beta: f64, dilation: f64) -> f64 {
-        if tan_beta > self.sinking_below {
-            return 1.0;
-        }
-        // tan(β + ψ) = rise / run; run ≤ 0 is β + ψ ≥ 90°, a block that
-        // rises.
-        let (sin_psi, cos_psi) = trig::sin_cos(dilation);
-        let run = cos_psi - tan_beta * sin_psi;
-        if run <= 0.0 {
-            return 1.0;
-        }
-        let rise = tan_beta * cos_psi + sin_psi;
-        match self.rule {
-            // tan(β + ψ) > κ (M9), times run > 0.
-            FaceFrictionRule::Sign => {
-                if rise > self.climb * run {
-                    1.0
-                } else {
-                    -1.0
-                }
-            }
-            FaceFrictionRule::Mobilised => {
-                // (M41) times run / sin α. across ≤ 0 is β + ψ ≤ −α (a
-                // block going down more steeply than the face), which (M9)
-                // takes as sinking (tan(β + ψ) < 0 = κ on a raked face).
-                let across = run + rise * self.rake_cot;
-                if across <= 0.0 {
-                    return -1.0;
-                }
-                let slip = (rise - self.climb * run) / (self.rake_sin * across);
-                (slip / SLIP_MOBILISATION).clamp(-1.0, 1.0)
-            }
-        }
     }
 }
 

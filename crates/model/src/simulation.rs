@@ -9,11 +9,12 @@ use crate::avalanche::Avalanche;
 use crate::band::Band;
 use crate::case::{Case, CaseError};
 use crate::crescent::Crescents;
+use crate::face_friction::Face;
 use crate::grid::Scheme;
 use crate::kinematics::{Advance, Kinematics};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
-use crate::mechanism::{Face, Loads};
+use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::search::{Choice, Search, SearchInput};
 use crate::spill::SideHeaps;
@@ -363,7 +364,7 @@ impl Simulation {
     /// would if no candidate is admissible.
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
         self.search.begin_landscape();
-        let found = self.find_mechanism(self.laws.face(self.climb()));
+        let found = self.find_mechanism(self.laws.face.for_climb(self.climb()));
         let choices = self.search.end_landscape();
         if found.is_none() {
             return Err(self.no_mechanism());
@@ -402,7 +403,7 @@ impl Simulation {
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
         let u = self.blade_position();
         let step = self.done + 1;
-        let face = self.laws.face(self.climb());
+        let face = self.laws.face.for_climb(self.climb());
         let choice = self
             .find_mechanism(face)
             .ok_or_else(|| self.no_mechanism())?;
@@ -458,7 +459,8 @@ impl Simulation {
         // P* sin ω (M12).
         let omega = self
             .laws
-            .face_angle(face.mobilisation(choice.tan_beta, choice.dilation));
+            .face
+            .angle(face.mobilisation(choice.tan_beta, choice.dilation));
         let (cos_w, sin_w) = (omega.cos(), omega.sin());
         let force = choice.force * self.per_blade;
         Ok(StepRecord {

@@ -24,8 +24,8 @@ pub(super) struct Lower {
 impl Lower {
     pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
         Lower {
-            rising: ForceFactor::new(phi, input.laws.walls.0),
-            sinking: ForceFactor::new(phi, input.laws.walls.1),
+            rising: ForceFactor::new(phi, input.laws.face.walls.0),
+            sinking: ForceFactor::new(phi, input.laws.face.walls.1),
         }
     }
 

@@ -1,8 +1,9 @@
 //! What the search needs to know about the soil besides the surface.
 
 use crate::crescent::Crescents;
+use crate::face_friction::Face;
 use crate::laws::Laws;
-use crate::mechanism::{Face, Loads};
+use crate::mechanism::Loads;
 use crate::rake::Rake;
 
 /// The soil, blade and loads of one increment's search.
