@@ -1,0 +1,29 @@
+//! The defaults of `run.increment` and `run.node_spacing`: each a claim,
+//! chosen by the ensemble rule (docs/model.md §9, §12.1) and rechosen
+//! whenever the model's numbers change (`docs/studies/ensemble-accuracy/`).
+
+use super::Soil;
+
+/// `run.increment` when a case does not give it: v0 = d / 500, the
+/// coarsest of d/250, d/500 and d/1000 that is accurate by the ensemble rule
+/// (docs/model.md §12.1, (M40)) on every paper case, against the reference
+/// grid's ensemble at d/2000 (`docs/studies/ensemble-accuracy/`); the node
+/// spacing defaults to `default_node_spacing`.
+pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 500.0;
+
+/// Node spacings per blade depth of the default coarse grid, used where
+/// the soil never softens: h = d / 25 at v0 = d / 500 is accurate by the
+/// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`).
+pub const COARSE_NODES_PER_DEPTH: f64 = 25.0;
+
+/// `run.node_spacing` when a case does not give it, for the increment v0:
+/// the reference grid (h = v0) where the soil softens, as only there does
+/// a coarse grid converge to a limit of its own (docs/model.md §9); else
+/// the whole number of increments nearest below d / 25 (at least one).
+pub fn default_node_spacing(soil: &Soil, depth: f64, increment: f64) -> f64 {
+    if soil.softens() {
+        return increment;
+    }
+    let per_node = (depth / COARSE_NODES_PER_DEPTH / increment).floor();
+    per_node.max(1.0) * increment
+}

@@ -1,0 +1,364 @@
+//! The allowed range of every key of a case (README, "Case files"): a value
+//! outside it is an error naming the key and the range, never clamped.
+
+use super::{Case, CaseError, INITIAL_REACH_DEPTHS};
+
+/// Largest number of surface nodes a case may need at the start (memory
+/// guard: five f64 per node).
+pub const MAX_NODES: f64 = 5.0e7;
+
+/// The range of magnitudes of every length, unit weight and stress a case
+/// gives (a value that may be 0 is 0 or in this range), in the case's own
+/// units. Wide enough for any consistent units (nanometres to kilometres,
+/// pascals to gigapascals, either way round), narrow enough that no
+/// product the model forms overflows or underflows: the largest, a
+/// blade's weight and force γ d² w or γ d³, stays within 1e±80, and the
+/// widest ratio, c / (γ d), within 1e±60, far inside f64's 1e±308 (at
+/// γ = 1e306 the initial mass was infinite: docs/fuzzing.md).
+pub const MAGNITUDE: [f64; 2] = [1e-20, 1e20];
+
+/// The narrowest blade, as a fraction of the deepest tip depth.
+pub const THINNEST_WIDTH: f64 = 1e-6;
+
+fn finite(key: &str, value: f64) -> Result<f64, CaseError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(CaseError::new(
+            key,
+            format!("must be a finite number (got {value})"),
+        ))
+    }
+}
+
+/// A length, unit weight or stress: `value` in [`MAGNITUDE`], or 0 when
+/// `zero` allows it.
+fn in_magnitude(key: &str, value: f64, zero: bool) -> Result<(), CaseError> {
+    let [least, greatest] = MAGNITUDE;
+    if (least..=greatest).contains(&value) || (zero && value == 0.0) {
+        return Ok(());
+    }
+    let or_zero = if zero { "0 or " } else { "" };
+    Err(CaseError::new(
+        key,
+        format!("must be {or_zero}in [{least:e}, {greatest:e}] (got {value:?})"),
+    ))
+}
+
+fn positive(key: &str, value: f64) -> Result<(), CaseError> {
+    if finite(key, value)? > 0.0 {
+        in_magnitude(key, value, false)
+    } else {
+        Err(CaseError::new(key, format!("must be > 0 (got {value})")))
+    }
+}
+
+fn non_negative(key: &str, value: f64) -> Result<(), CaseError> {
+    if finite(key, value)? >= 0.0 {
+        in_magnitude(key, value, true)
+    } else {
+        Err(CaseError::new(key, format!("must be >= 0 (got {value})")))
+    }
+}
+
+fn open_range(key: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<(), CaseError> {
+    let v = finite(key, value)?;
+    if v > lo && v < hi {
+        Ok(())
+    } else {
+        Err(CaseError::new(
+            key,
+            format!("must be in ({lo}{unit}, {hi}{unit}) (got {value}{unit})"),
+        ))
+    }
+}
+
+impl Case {
+    /// Checks every value against its allowed range; the error names the key.
+    pub fn validate(&self) -> Result<(), CaseError> {
+        positive("blade.depth", self.blade.depth)?;
+        self.validate_friction()?;
+        self.validate_wall_friction()?;
+        self.validate_soil()?;
+        self.validate_loads()?;
+        self.validate_run()?;
+        self.validate_bin()
+    }
+
+    /// The end wall must leave the blade room to travel and a mechanism
+    /// ahead of it; on the sheared grid of a raked blade a vertical wall is
+    /// no fixed node, so it needs a vertical blade.
+    fn validate_bin(&self) -> Result<(), CaseError> {
+        let Some(length) = self.bin.length else {
+            return Ok(());
+        };
+        let least = self.run.travel + 2.0 * self.run.node_spacing;
+        if finite("bin.length", length)? < least {
+            return Err(CaseError::new(
+                "bin.length",
+                format!("must be >= run.travel + 2 run.node_spacing = {least} (got {length})"),
+            ));
+        }
+        in_magnitude("bin.length", length, false)?;
+        if self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                "bin.length",
+                format!(
+                    "needs a vertical blade, blade.rake = 90° (got {}°)",
+                    self.blade.rake
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_loads(&self) -> Result<(), CaseError> {
+        let rake = finite("blade.rake", self.blade.rake)?;
+        self.validate_rake(rake)?;
+        non_negative("blade.adhesion", self.blade.adhesion)?;
+        self.validate_depth_path()?;
+        if let Some(width) = self.blade.width {
+            positive("blade.width", width)?;
+            // The search compares P / w: the side crescents' force over a
+            // vanishing width overflows to an infinite force (found by
+            // fuzzing, docs/fuzzing.md: w = 1e-310). A millionth of the
+            // depth is far below any tine (the model warns below d/6).
+            let least = THINNEST_WIDTH * self.deepest();
+            if width < least {
+                return Err(CaseError::new(
+                    "blade.width",
+                    format!(
+                        "must be >= {THINNEST_WIDTH:e} x the deepest tip depth = {least} (got {width})"
+                    ),
+                ));
+            }
+        }
+        // −a Lb cos(α + β + φ) never lowers the force if α + φ ≥ 90°; the
+        // search's bounds rely on that.
+        let phi_min = self.soil.friction.min();
+        if self.blade.adhesion > 0.0 && rake + phi_min < 90.0 {
+            return Err(CaseError::new(
+                "blade.adhesion",
+                format!(
+                    "must be 0 unless blade.rake + every friction angle ≥ 90° (got {rake}° + {phi_min}°)"
+                ),
+            ));
+        }
+        non_negative("soil.cohesion", self.soil.cohesion)?;
+        non_negative("soil.surcharge", self.soil.surcharge)
+    }
+
+    fn validate_wall_friction(&self) -> Result<(), CaseError> {
+        let phi_w = finite("blade.wall_friction", self.blade.wall_friction)?;
+        let phi_min = self.soil.friction.min();
+        if !(0.0..phi_min).contains(&phi_w) {
+            return Err(CaseError::new(
+                "blade.wall_friction",
+                format!(
+                    "must be in [0°, {phi_min}°), below every soil friction angle (got {phi_w}°)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn friction_keys(&self) -> [(&'static str, f64); 3] {
+        let f = &self.soil.friction;
+        [
+            ("soil.friction.initial", f.initial),
+            ("soil.friction.peak", f.peak),
+            ("soil.friction.residual", f.residual),
+        ]
+    }
+
+    fn validate_friction(&self) -> Result<(), CaseError> {
+        for (key, v) in self.friction_keys() {
+            open_range(key, v, 0.0, 90.0, "°")?;
+        }
+        Ok(())
+    }
+
+    fn validate_soil(&self) -> Result<(), CaseError> {
+        let s = &self.soil;
+        positive("soil.unit_weight", s.unit_weight)?;
+        let f = &s.friction;
+        for (key, v) in self.friction_keys() {
+            // β > 0 and β + φ + φw < 90° must leave room for a mechanism.
+            if v + self.blade.wall_friction >= 90.0 {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "φ + φw must be < 90° for any admissible mechanism (β + φ + φw < 90°, β > 0); got {v}° + {}°",
+                        self.blade.wall_friction
+                    ),
+                ));
+            }
+        }
+        if f.residual > f.peak {
+            return Err(CaseError::new(
+                "soil.friction.residual",
+                format!(
+                    "must be <= soil.friction.peak ({}°) (got {}°)",
+                    f.peak, f.residual
+                ),
+            ));
+        }
+        if f.initial > f.peak {
+            return Err(CaseError::new(
+                "soil.friction.initial",
+                format!(
+                    "must be <= soil.friction.peak ({}°) (got {}°)",
+                    f.peak, f.initial
+                ),
+            ));
+        }
+        let d = &s.dilation;
+        for (key, v) in [
+            ("soil.dilation.initial", d.initial),
+            ("soil.dilation.peak", d.peak),
+            ("soil.dilation.residual", d.residual),
+        ] {
+            open_range(key, v, -45.0, 45.0, "°")?;
+        }
+        non_negative("soil.peak_shear", s.peak_shear)?;
+        non_negative("soil.residual_shear", s.residual_shear)?;
+        if s.residual_shear < s.peak_shear {
+            return Err(CaseError::new(
+                "soil.residual_shear",
+                format!(
+                    "must be >= soil.peak_shear ({}) (got {})",
+                    s.peak_shear, s.residual_shear
+                ),
+            ));
+        }
+        open_range("soil.repose", s.repose, 0.0, 90.0, "°")?;
+        non_negative("soil.band_width", s.band_width)?;
+        if s.band_width >= self.blade.depth {
+            return Err(CaseError::new(
+                "soil.band_width",
+                format!(
+                    "must be < blade.depth ({}) (got {})",
+                    self.blade.depth, s.band_width
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_rake(&self, rake: f64) -> Result<(), CaseError> {
+        if !(20.0..=90.0).contains(&rake) {
+            return Err(CaseError::new(
+                "blade.rake",
+                format!("must be in [20°, 90°] (got {rake}°)"),
+            ));
+        }
+        // Eq. (1) grows with φ only while sin(α − φw) > 0.
+        if self.blade.wall_friction >= rake {
+            return Err(CaseError::new(
+                "blade.wall_friction",
+                format!(
+                    "must be below blade.rake ({rake}°) (got {}°)",
+                    self.blade.wall_friction
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_depth_path(&self) -> Result<(), CaseError> {
+        let key = "blade.depth_path";
+        let path = &self.blade.depth_path;
+        for (k, &[u, d]) in path.iter().enumerate() {
+            finite(key, u)?;
+            finite(key, d)?;
+            let [least, greatest] = MAGNITUDE;
+            let scaled = |v: f64| (least..=greatest).contains(&v);
+            if !(u == 0.0 || scaled(u)) || !scaled(d) {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "point {k}: needs u 0 or in [{least:e}, {greatest:e}] and depth in [{least:e}, {greatest:e}] (got [{u:?}, {d:?}])"
+                    ),
+                ));
+            }
+            if k > 0 && u <= path[k - 1][0] {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "point {k}: u must increase from point to point (got [{u}, {d}] after {:?})",
+                        path[k - 1]
+                    ),
+                ));
+            }
+        }
+        if !path.is_empty() && self.blade.rake != 90.0 {
+            return Err(CaseError::new(
+                key,
+                format!(
+                    "needs a vertical blade, blade.rake = 90° (got {}°)",
+                    self.blade.rake
+                ),
+            ));
+        }
+        if let Some(shallowest) = path.first().map(|p| p[1]) {
+            if self.run.increment >= shallowest || self.soil.band_width >= shallowest {
+                return Err(CaseError::new(
+                    key,
+                    format!(
+                        "the shallowest depth ({shallowest}) must exceed run.increment and the band width"
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_run(&self) -> Result<(), CaseError> {
+        positive("run.travel", self.run.travel)?;
+        positive("run.increment", self.run.increment)?;
+        if self.run.increment >= self.blade.depth {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "must be in (0, blade.depth = {}) (got {})",
+                    self.blade.depth, self.run.increment
+                ),
+            ));
+        }
+        self.validate_node_spacing()?;
+        let nodes = self.initial_nodes();
+        if nodes > MAX_NODES {
+            return Err(CaseError::new(
+                "run.node_spacing",
+                format!(
+                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / run.node_spacing must be <= {MAX_NODES:e} nodes (got {nodes:.3e})"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_node_spacing(&self) -> Result<(), CaseError> {
+        let (h, v0) = (self.run.node_spacing, self.run.increment);
+        positive("run.node_spacing", h)?;
+        if h >= self.blade.depth {
+            return Err(CaseError::new(
+                "run.node_spacing",
+                format!(
+                    "must be in (0, blade.depth = {}) (got {h})",
+                    self.blade.depth
+                ),
+            ));
+        }
+        let ratio = h / v0;
+        if ratio < 1.0 - 1e-9 || (ratio - ratio.round()).abs() > 1e-9 * ratio {
+            return Err(CaseError::new(
+                "run.node_spacing",
+                format!(
+                    "must be a whole multiple (1, 2, 3, ...) of run.increment = {v0} (got {h}, {ratio} increments)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
