@@ -240,48 +240,16 @@ impl Fit {
             let done = self.evaluations + self.polish_iterations as usize;
             progress(done, total);
             let noise = Noise::estimate(&best, &self.counts(), &self.overlaps(), params.len());
-            let (profiles, threshold, correlation) = match &noise {
+            let profiled = match &noise {
                 Some(noise) if self.profile_grid > 0 => {
                     let finished = AtomicUsize::new(done);
                     let tick = || {
                         let n = finished.fetch_add(1, Ordering::Relaxed) + 1;
                         progress(n.min(total - 1), total)
                     };
-                    let mut threshold =
-                        calibrate::threshold(&problem, &points, &best, noise, self.seed);
-                    let mut profiles;
-                    let mut rounds = 0;
-                    loop {
-                        profiles = profile::profiles(
-                            &problem,
-                            &best,
-                            noise,
-                            self.profile_grid,
-                            threshold,
-                            &tick,
-                        );
-                        for pr in &profiles {
-                            points.extend(pr.points.iter().map(|(_, pt)| pt.clone()));
-                        }
-                        let better = best_of(&points).clone();
-                        let gain = noise.chi2(&best) - noise.chi2(&better);
-                        best = better;
-                        rounds += 1;
-                        threshold =
-                            calibrate::threshold(&problem, &points, &best, noise, self.seed);
-                        // A profile that found a clearly better point:
-                        // profile again about it.
-                        if gain <= REPROFILE_GAIN || rounds == PROFILE_ROUNDS {
-                            break;
-                        }
-                    }
-                    for (j, (pr, p)) in profiles.iter_mut().zip(&params).enumerate() {
-                        pr.bound(j, p, &points, noise, threshold);
-                    }
-                    let correlation = profile::correlation(&points, noise, threshold, params.len());
-                    (profiles, Some(threshold), correlation)
+                    self.profile(&problem, &params, noise, (&mut points, &mut best), &tick)
                 }
-                _ => (Vec::new(), None, None),
+                _ => Profiled::default(),
             };
             progress(total, total);
             self.finish(
@@ -292,10 +260,49 @@ impl Fit {
                 search.generations,
                 problem.evaluations(),
                 noise,
-                (profiles, threshold),
-                correlation,
+                (profiled.profiles, profiled.threshold),
+                profiled.correlation,
             )
         })
+    }
+
+    /// The profile of each parameter about the best point, with the
+    /// threshold of its confidence interval; profiled again about a clearly
+    /// better point one finds (`REPROFILE_GAIN`, at most `PROFILE_ROUNDS`
+    /// times). Every point it evaluates joins `points`; `best` follows.
+    fn profile(
+        &self,
+        problem: &Problem,
+        params: &[Free],
+        noise: &Noise,
+        (points, best): (&mut Vec<Point>, &mut Point),
+        tick: &(dyn Fn() + Sync),
+    ) -> Profiled {
+        let mut threshold = calibrate::threshold(problem, points, best, noise, self.seed);
+        let mut rounds = 0;
+        let mut profiles = loop {
+            let profiles =
+                profile::profiles(problem, best, noise, self.profile_grid, threshold, tick);
+            for pr in &profiles {
+                points.extend(pr.points.iter().map(|(_, pt)| pt.clone()));
+            }
+            let better = best_of(points).clone();
+            let gain = noise.chi2(best) - noise.chi2(&better);
+            *best = better;
+            rounds += 1;
+            threshold = calibrate::threshold(problem, points, best, noise, self.seed);
+            if gain <= REPROFILE_GAIN || rounds == PROFILE_ROUNDS {
+                break profiles;
+            }
+        };
+        for (j, (pr, p)) in profiles.iter_mut().zip(params).enumerate() {
+            pr.bound(j, p, points, noise, threshold);
+        }
+        Profiled {
+            correlation: profile::correlation(points, noise, threshold, params.len()),
+            profiles,
+            threshold: Some(threshold),
+        }
     }
 
     /// Residuals of each test (their number does not depend on the values).
@@ -368,4 +375,12 @@ impl Fit {
             best_runs,
         })
     }
+}
+
+/// What `Fit::profile` found (nothing when the fit is not profiled).
+#[derive(Default)]
+struct Profiled {
+    profiles: Vec<Profile>,
+    threshold: Option<f64>,
+    correlation: Option<Vec<Vec<f64>>>,
 }
