@@ -36,7 +36,7 @@ mod select;
 
 pub use crate::laws::BandAngles;
 pub use input::SearchInput;
-pub use select::{Choice, TIE_TOLERANCE};
+pub use select::{Choice, Observer, TIE_TOLERANCE};
 
 use crate::surface::Surface;
 use block::{Block, BlockEnd};
@@ -51,23 +51,14 @@ const GROW_NODES_MIN: usize = 256;
 /// Reusable search state (no allocation per step once warmed up).
 #[derive(Clone, Debug, Default)]
 pub struct Search {
-    /// The best force of the current step and its candidates.
-    best: Best,
+    /// The admissible candidates of a scan, reused (`Best`).
+    admissible: Vec<Choice>,
     /// Emergence node of the previous increment (seeds the best force).
     previous: Option<usize>,
     /// The block of nodes being scanned.
     block: Block,
     /// Candidates evaluated in full since creation (for benchmarks).
     pub evaluations: u64,
-    /// Set while a landscape is being taken: the state to restore after it.
-    landscape: Option<Landscape>,
-}
-
-/// The state a landscape leaves as it found it.
-#[derive(Clone, Debug)]
-struct Landscape {
-    previous: Option<usize>,
-    evaluations: u64,
 }
 
 impl Search {
@@ -94,21 +85,37 @@ impl Search {
         input: &SearchInput,
         max_nodes: usize,
     ) -> Option<Choice> {
-        let prune = self.landscape.is_none();
-        let found = self.scan(surface, input, max_nodes, prune);
-        if found.is_some() || !prune {
-            return found;
+        let mut found = self.scan(surface, input, max_nodes, true, None);
+        if found.is_none() {
+            // None may be true (an end wall leaves no room); that a bound
+            // rejected every admissible candidate is proven not to happen:
+            // if it ever does, tests fail here and a user's run still gets
+            // the true minimum.
+            found = self.scan(surface, input, max_nodes, false, None);
+            debug_assert!(
+                found.is_none(),
+                "a bound rejected every admissible candidate"
+            );
         }
-        // None may be true (an end wall leaves no room); that a bound
-        // rejected every admissible candidate is proven not to happen: if it
-        // ever does, tests fail here and a user's run still gets the true
-        // minimum.
-        let exact = self.scan(surface, input, max_nodes, false);
-        debug_assert!(
-            exact.is_none(),
-            "a bound rejected every admissible candidate"
-        );
-        exact
+        self.previous = found.map(|c| c.node);
+        found
+    }
+
+    /// `run` without pruning, handing every admissible candidate up to the
+    /// stopping bound to `observe` as it is evaluated (a landscape); the
+    /// search is left as it was (the next `run` is seeded from the same
+    /// node, and `evaluations` counts increments only).
+    pub fn survey(
+        &mut self,
+        surface: &mut Surface,
+        input: &SearchInput,
+        max_nodes: usize,
+        observe: Observer,
+    ) -> Option<Choice> {
+        let evaluations = self.evaluations;
+        let found = self.scan(surface, input, max_nodes, false, Some(observe));
+        self.evaluations = evaluations;
+        found
     }
 
     /// The outward scan over candidates j = b + 1, b + 2, … (M2, M3, M5);
@@ -120,14 +127,15 @@ impl Search {
         input: &SearchInput,
         max_nodes: usize,
         prune: bool,
+        observer: Option<Observer>,
     ) -> Option<Choice> {
         let b = input.blade;
-        self.best.start(prune);
+        let mut best = Best::new(std::mem::take(&mut self.admissible), prune, observer);
         self.block.start_scan();
         let mut lines = Lines::new(surface, b, input.depth);
         let previous = self.previous.filter(|_| prune);
         if let Some(force) = previous.and_then(|j| seed::seed(surface, input, lines, j)) {
-            self.best.improve(force);
+            best.improve(force);
         }
         let mut least = LeastFriction::new(surface.friction[b], input);
         let mut j = b + 1;
@@ -138,9 +146,9 @@ impl Search {
         loop {
             let end = self
                 .block
-                .weigh(surface, input, &mut lines, &mut least, &self.best, j);
-            self.evaluations += self.block.footprints(surface, input, &lines, &self.best);
-            if self.block.settle(input, &lines, &mut self.best) {
+                .weigh(surface, input, &mut lines, &mut least, &best, j);
+            self.evaluations += self.block.footprints(surface, input, &lines, &best);
+            if self.block.settle(input, &lines, &mut best) {
                 break;
             }
             match end {
@@ -152,35 +160,13 @@ impl Search {
                 }
                 BlockEnd::FarField(j0) => {
                     let far = FarField::new(&lines, surface.ground_unit_weight, j0 - b);
-                    self.evaluations += far.scan(input, &lines, &mut self.best, max_nodes);
+                    self.evaluations += far.scan(input, &lines, &mut best, max_nodes);
                     break;
                 }
             }
         }
-        let choice = self.best.select();
-        self.previous = choice.map(|c| c.node);
+        let choice = best.select();
+        self.admissible = best.into_buffer();
         choice
-    }
-
-    /// Makes the next `run` a landscape: no pruning, and every admissible
-    /// candidate up to the stopping bound recorded (`end_landscape`).
-    pub fn begin_landscape(&mut self) {
-        self.landscape = Some(Landscape {
-            previous: self.previous,
-            evaluations: self.evaluations,
-        });
-        self.best.recorded = Some(Vec::new());
-    }
-
-    /// The candidates recorded since `begin_landscape`, nearest the blade
-    /// first; the search is left as it was before (the next increment is
-    /// seeded from the same node, and `evaluations` counts increments only).
-    pub fn end_landscape(&mut self) -> Vec<Choice> {
-        let Some(landscape) = self.landscape.take() else {
-            return Vec::new();
-        };
-        self.previous = landscape.previous;
-        self.evaluations = landscape.evaluations;
-        self.best.recorded.take().unwrap_or_default()
     }
 }

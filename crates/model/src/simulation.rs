@@ -16,7 +16,7 @@ use crate::landscape::Candidate;
 use crate::laws::Laws;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
-use crate::search::{Choice, Search, SearchInput};
+use crate::search::{Choice, Observer, Search, SearchInput};
 use crate::spill::SideHeaps;
 use crate::surface::Surface;
 use std::fmt;
@@ -311,7 +311,9 @@ impl Simulation {
         self.case.tip_depth(self.blade_position())
     }
 
-    fn find_mechanism(&mut self, face: Face) -> Option<Choice> {
+    /// The increment's mechanism on the current ground; with `observer`,
+    /// a survey that hands it every admissible candidate (`Search::survey`).
+    fn find_mechanism(&mut self, face: Face, observer: Option<Observer>) -> Option<Choice> {
         let d = self.tip_depth();
         let dx = self.surface.scheme.spacing;
         let c = &self.case;
@@ -339,7 +341,12 @@ impl Simulation {
         let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.
         let max_nodes = self.case.wall_node().map_or(reach, |w| reach.min(w + 1));
-        let choice = self.search.run(&mut self.surface, &input, max_nodes)?;
+        let choice = match observer {
+            None => self.search.run(&mut self.surface, &input, max_nodes),
+            Some(observe) => self
+                .search
+                .survey(&mut self.surface, &input, max_nodes, observe),
+        }?;
         // A band far out on undisturbed ground needs its nodes (and one more).
         let missing = (choice.node + 2).saturating_sub(self.surface.len());
         if missing > 0 {
@@ -363,9 +370,9 @@ impl Simulation {
     /// the next `step` is the one it would have been. Fails as `step`
     /// would if no candidate is admissible.
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
-        self.search.begin_landscape();
-        let found = self.find_mechanism(self.laws.face.for_climb(self.climb()));
-        let choices = self.search.end_landscape();
+        let mut choices = Vec::new();
+        let mut record = |c: &Choice| choices.push(*c);
+        let found = self.find_mechanism(self.laws.face.for_climb(self.climb()), Some(&mut record));
         if found.is_none() {
             return Err(self.no_mechanism());
         }
@@ -405,7 +412,7 @@ impl Simulation {
         let step = self.done + 1;
         let face = self.laws.face.for_climb(self.climb());
         let choice = self
-            .find_mechanism(face)
+            .find_mechanism(face, None)
             .ok_or_else(|| self.no_mechanism())?;
         let j = choice.node;
         let c = &self.case;

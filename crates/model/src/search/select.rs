@@ -31,10 +31,12 @@ pub struct Choice {
     pub dilation: f64,
 }
 
-/// The best force of one scan and the candidates that reached it, reused
-/// from step to step.
-#[derive(Clone, Debug, Default)]
-pub(super) struct Best {
+/// Told of every admissible candidate a scan evaluates, in the scan's
+/// order (nearest the blade first): a landscape's recorder.
+pub type Observer<'o> = &'o mut dyn FnMut(&Choice);
+
+/// The best force of one scan and the candidates that reached it.
+pub(super) struct Best<'o> {
     /// Best force so far, widened by the tie tolerance: the bar a
     /// candidate must not exceed.
     pub(super) bar: f64,
@@ -43,16 +45,28 @@ pub(super) struct Best {
     /// Admissible candidates that were at or below the bar when found,
     /// kept for the tie-break.
     admissible: Vec<Choice>,
-    /// Every admissible candidate, while a landscape is being taken.
-    pub(super) recorded: Option<Vec<Choice>>,
+    observer: Option<Observer<'o>>,
 }
 
-impl Best {
-    /// No candidate yet.
-    pub(super) fn start(&mut self, prune: bool) {
-        self.admissible.clear();
-        self.bar = f64::INFINITY;
-        self.prune = prune;
+impl<'o> Best<'o> {
+    /// No candidate yet; `buffer` is reused for the admissible candidates.
+    pub(super) fn new(
+        mut buffer: Vec<Choice>,
+        prune: bool,
+        observer: Option<Observer<'o>>,
+    ) -> Self {
+        buffer.clear();
+        Best {
+            bar: f64::INFINITY,
+            prune,
+            admissible: buffer,
+            observer,
+        }
+    }
+
+    /// The buffer, for the next scan.
+    pub(super) fn into_buffer(self) -> Vec<Choice> {
+        self.admissible
     }
 
     /// Lowers the bar to a force found.
@@ -87,8 +101,8 @@ impl Best {
             friction: angles.friction,
             dilation: angles.dilation,
         };
-        if let Some(recorded) = &mut self.recorded {
-            recorded.push(candidate);
+        if let Some(observe) = &mut self.observer {
+            observe(&candidate);
         }
         if force > self.bar {
             return;
