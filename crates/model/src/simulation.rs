@@ -11,7 +11,7 @@ use crate::case::{Case, CaseError};
 use crate::crescent::Crescents;
 use crate::face_friction::Face;
 use crate::grid::Scheme;
-use crate::kinematics::{Advance, Kinematics};
+use crate::kinematics::{Advance, Kinematics, Update};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
 use crate::mechanism::Loads;
@@ -409,17 +409,48 @@ impl Simulation {
     /// Advances the blade by one increment.
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
         let u = self.blade_position();
-        let step = self.done + 1;
         let face = self.laws.face.for_climb(self.climb());
         let choice = self
             .find_mechanism(face, None)
             .ok_or_else(|| self.no_mechanism())?;
-        let j = choice.node;
-        let c = &self.case;
         let depth = self.tip_depth();
-        let deepening = c.tip_depth(u + c.run.increment) - depth;
-        let y_emergence = self.surface.height[j];
-        let x_emergence = self.rake.x(self.surface.x(j), y_emergence, depth);
+        let y_emergence = self.surface.height[choice.node];
+        let x_emergence = self.rake.x(self.surface.x(choice.node), y_emergence, depth);
+        let update = self.move_soil(&choice, u, depth);
+        self.done += 1;
+        self.relax(&update, choice.node);
+        let omega = self
+            .laws
+            .face
+            .angle(face.mobilisation(choice.tan_beta, choice.dilation));
+        let force = choice.force * self.per_blade;
+        Ok(StepRecord {
+            step: self.done,
+            u,
+            force,
+            force_norm: self.normalised(choice.force),
+            // The reaction is at ω = m φw + α − 90° from the horizontal,
+            // the ω of the chosen mechanism's Eq. (1) (M12, M41).
+            force_h: force * omega.cos(),
+            force_v: force * omega.sin(),
+            beta_deg: choice.tan_beta.atan().to_degrees(),
+            friction_deg: choice.friction.to_degrees(),
+            dilation_deg: choice.dilation.to_degrees(),
+            x_emergence,
+            y_emergence,
+            depth,
+            slip: update.slip,
+            dilation_area: update.dilation_area,
+            mass: self.mass(),
+            mass_spilled: self.mass_spilled(),
+        })
+    }
+
+    /// Moves the soil for the chosen mechanism (§3): the block, the band
+    /// and the face by one increment, with the tip at `depth` going to its
+    /// depth at u + v0; the angles of the nodes whose shear changed follow.
+    fn move_soil(&mut self, choice: &Choice, u: f64, depth: f64) -> Update {
+        let (j, c) = (choice.node, &self.case);
         let band = Band::new(
             self.surface.face,
             j,
@@ -428,11 +459,11 @@ impl Simulation {
             depth,
             self.surface.scheme.spacing,
         );
-        let advance = self.advance(deepening);
+        let advance = self.advance(c.tip_depth(u + c.run.increment) - depth);
         let update = self.kinematics.apply(
             &mut self.surface,
             &band,
-            &choice,
+            choice,
             c.choices,
             &self.rake,
             advance,
@@ -441,8 +472,13 @@ impl Simulation {
         self.laws
             .refresh_angles(&mut self.surface, update.state_from..j + 1);
         self.surface.disturb(j + 1);
-        self.done += 1;
-        // Slopes changed only at the face and around the band.
+        update
+    }
+
+    /// Lets the slopes the increment changed avalanche (§6), at the face
+    /// and around the band emerging at node `j`, and a blade of finite
+    /// width spill its pile around its edges (§16.5).
+    fn relax(&mut self, update: &Update, j: usize) {
         let first = self.surface.face.node;
         let at_face = first..first + 3;
         let band_nodes = update.first_band_node.saturating_sub(2)..j + 2;
@@ -459,35 +495,6 @@ impl Simulation {
             let ahead = first..self.surface.pristine_from.min(self.surface.len());
             self.side.spill(&mut self.surface, width, tan_repose, ahead);
         }
-        // Face friction opposes the block's motion along the face. The
-        // reaction is at the mobilised m φw from the face normal, which is
-        // α − 90° from the horizontal: ω = m φw + α − 90° (M41), as in the
-        // chosen mechanism's Eq. (1), and the components are P* cos ω,
-        // P* sin ω (M12).
-        let omega = self
-            .laws
-            .face
-            .angle(face.mobilisation(choice.tan_beta, choice.dilation));
-        let (cos_w, sin_w) = (omega.cos(), omega.sin());
-        let force = choice.force * self.per_blade;
-        Ok(StepRecord {
-            step,
-            u,
-            force,
-            force_norm: self.normalised(choice.force),
-            force_h: force * cos_w,
-            force_v: force * sin_w,
-            beta_deg: choice.tan_beta.atan().to_degrees(),
-            friction_deg: choice.friction.to_degrees(),
-            dilation_deg: choice.dilation.to_degrees(),
-            x_emergence,
-            y_emergence,
-            depth,
-            slip: update.slip,
-            dilation_area: update.dilation_area,
-            mass: self.mass(),
-            mass_spilled: self.mass_spilled(),
-        })
     }
 
     /// Runs the remaining increments of the case, calling `observer` after
