@@ -16,8 +16,8 @@
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
 //!   reads a finished run's files back for drawing; [`record_run`] runs a
 //!   simulation capturing the frames.
-//! * [`write_run_dir`]: a run's folder with its pictures ([`draw_run_dir`]),
-//!   the same from every front end.
+//! * `write_run_dir`: a run's folder with its pictures (`draw_run_dir`),
+//!   the same from every front end (feature `pictures`).
 
 #![warn(missing_docs)]
 
@@ -30,6 +30,7 @@ mod landscape;
 mod measured;
 mod output;
 mod overrides;
+#[cfg(feature = "pictures")]
 mod pictures;
 mod record;
 
@@ -56,5 +57,6 @@ pub use output::{
     write_output_dir_then, RunOutput, HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
+#[cfg(feature = "pictures")]
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
 pub use record::{record_files, record_run, RecordedRun, RunTables, ANIMATION_FRAMES};
