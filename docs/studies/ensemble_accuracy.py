@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Time to accuracy in the ensemble sense (docs/performance.md, docs/model.md §12).
 
-For each paper case, runs an ensemble of 7 perturbed runs (`soilcut run
---ensemble 7`) for each scheme below and judges it against the reference
-grid's ensemble at d/2000 with `soilcut accuracy` (the rule: every
-unit-window ensemble mean within clamp(2 standard errors of the difference,
-1 %, 2.5 %), the whole-run mean within 1 %).
+For each paper case and the tine and dozer of cases/tools/, runs an ensemble
+of 7 perturbed runs (`soilcut run --ensemble 7`) for each scheme below and
+judges it against the reference grid's ensemble at d/2000 with `soilcut
+accuracy` (the rule: every unit-window ensemble mean within clamp(2 standard
+errors of the difference, 1 %, 2.5 %), the whole-run mean within 1 %).
 
     python3 docs/studies/ensemble_accuracy.py --soilcut target/release/soilcut --out DIR
 
@@ -25,12 +25,15 @@ from pathlib import Path
 
 from time_to_accuracy import depth_of  # the same folder: the case file's blade depth
 
-CASES = ["original", "table1-s", "fig8b", "table1-hs", "fig5"]
+# The paper's cases (cases/paper/) and the tools of finite width whose soil
+# softens (cases/tools/).
+CASES = ["original", "table1-s", "fig8b", "table1-hs", "fig5", "tools/tine", "tools/dozer"]
 REFERENCE = 2000
 # (name, d/v0, d/h): the reference grid (h = v0) and the coarse grid.
 SCHEMES = [
     ("reference d/250", 250, 250),
     ("reference d/500", 500, 500),
+    ("reference d/750", 750, 750),
     ("reference d/1000", 1000, 1000),
     ("coarse d/500, h d/25", 500, 25),
     ("coarse d/1000, h d/25", 1000, 25),
@@ -75,7 +78,8 @@ def main():
     runs = args.runs or args.out / "runs"
     rows = []
     for name in args.cases:
-        case = Path("cases/paper") / f"{name}.toml"
+        case = Path("cases") / (name if "/" in name else f"paper/{name}")
+        case = case.with_suffix(".toml")
         d = depth_of(case)
         ref = ensemble(
             args.soilcut, case, d, REFERENCE, REFERENCE, runs / name / "ref-d2000", args.jobs

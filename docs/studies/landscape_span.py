@@ -47,7 +47,9 @@ def landscape(soilcut, case, v0, folder):
     spans = defaultdict(lambda: {t: [] for t in THRESHOLDS})
     with open(folder / "landscape_map.csv") as f:
         for r in csv.DictReader(f):
-            u, dist, ratio = (float(r[k]) for k in ("u_over_d", "distance_over_d", "force_over_least"))
+            u, dist, ratio = (
+                float(r[k]) for k in ("u_over_d", "distance_over_d", "force_over_least")
+            )
             for t in THRESHOLDS:
                 if ratio <= t:
                     spans[u][t].append(dist)

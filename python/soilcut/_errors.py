@@ -59,7 +59,7 @@ class SnapshotError(ValueError):
 class AccuracyWarning(UserWarning):
     """A case that runs, on a grid known to cost accuracy: nodes coarser
     than the increment (``run.node_spacing`` > ``run.increment``) in soil
-    that softens converge to a limit of their own, 7-18 times the ensemble
+    that softens converge to a limit of their own, 7-22 times the ensemble
     rule's tolerance off the reference grid in the window mean forces of the
     paper's softening cases (``docs/model.md`` §9, §12.1). ``soilcut run``
     prints the same message on stderr."""

@@ -629,7 +629,7 @@ mod tests {
     }
 
     #[test]
-    fn increment_defaults_to_a_500th_of_the_depth_and_nodes_by_the_soil() {
+    fn increment_defaults_to_a_fraction_of_the_depth_and_nodes_by_the_soil() {
         let text: String = ORIGINAL
             .lines()
             .filter(|l| !l.starts_with("increment"))
@@ -637,28 +637,34 @@ mod tests {
             .collect();
         let loaded = parse_case(&text, &[]).unwrap();
         let d = loaded.case.blade.depth;
-        assert_eq!(loaded.case.run.increment, d / 500.0);
-        assert_eq!(loaded.case.run.node_spacing, d / 500.0);
+        let v0 = d / soilcut_model::DEFAULT_INCREMENTS_PER_DEPTH;
+        assert_eq!(loaded.case.run.increment, v0);
+        assert_eq!(loaded.case.run.node_spacing, v0);
         let resolved = loaded.resolved_toml();
         assert!(
-            resolved.contains(&format!("increment = {:?}", d / 500.0)),
+            resolved.contains(&format!("increment = {:?}", v0)),
             "{resolved}"
         );
         assert!(
-            resolved.contains(&format!("node_spacing = {:?}", d / 500.0)),
+            resolved.contains(&format!("node_spacing = {:?}", v0)),
             "{resolved}"
         );
         // Where the soil does not soften, the nodes default to d / 25 in
         // whole increments.
         let hardening = parse_case(&text, &["soil.friction.residual=35".parse().unwrap()]).unwrap();
         let h = hardening.case.run.node_spacing;
-        assert_eq!(h, 20.0 * d / 500.0);
+        let n = (h / v0).round();
+        assert_eq!(h, n * v0);
+        assert!(
+            n * v0 <= d / 25.0 * (1.0 + 1e-12) && (n + 1.0) * v0 > d / 25.0,
+            "{h}"
+        );
         assert!(hardening
             .resolved_toml()
             .contains(&format!("node_spacing = {h:?}")));
         let coarse = parse_case(&text, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
         assert_eq!(coarse.case.run.node_spacing, 0.08);
-        assert_eq!(coarse.case.run.increment, d / 500.0);
+        assert_eq!(coarse.case.run.increment, v0);
         let e = key_error(&text, &["run.node_spacing=0.03"]);
         assert_eq!(e.key, "run.node_spacing");
     }

@@ -4,15 +4,17 @@
 
 use super::Soil;
 
-/// `run.increment` when a case does not give it: v0 = d / 500, the
-/// coarsest of d/250, d/500 and d/1000 that is accurate by the ensemble rule
-/// (docs/model.md §12.1, (M40)) on every paper case, against the reference
-/// grid's ensemble at d/2000 (`docs/studies/ensemble-accuracy/`); the node
-/// spacing defaults to `default_node_spacing`.
-pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 500.0;
+/// `run.increment` when a case does not give it: v0 = d / 1000, the
+/// coarsest of d/250, d/500, d/750 and d/1000 that is accurate by the
+/// ensemble rule (docs/model.md §12.1, (M40)) on every paper case and the
+/// tine and dozer of `cases/tools/`, against the reference grid's ensemble
+/// at d/2000 under the face friction that ships (`mobilised`;
+/// `docs/studies/ensemble-accuracy/`); the node spacing defaults to
+/// `default_node_spacing`.
+pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1000.0;
 
 /// Node spacings per blade depth of the default coarse grid, used where
-/// the soil never softens: h = d / 25 at v0 = d / 500 is accurate by the
+/// the soil never softens: h = d / 25 at v0 = d / 1000 is accurate by the
 /// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`).
 pub const COARSE_NODES_PER_DEPTH: f64 = 25.0;
 

@@ -17,7 +17,7 @@ impl Case {
         if self.soil.softens() && h > v0 {
             warnings.push(format!(
                 "run.node_spacing = {h} is coarser than run.increment = {v0} in soil that \
-                 softens: such a grid converges to a limit of its own, 7-18 times the \
+                 softens: such a grid converges to a limit of its own, 7-22 times the \
                  ensemble rule's tolerance off the reference grid in the unit-window mean \
                  forces of Table 1 S, HS and Fig. 5 (docs/model.md §9, §12.1); leave \
                  run.node_spacing out for the reference grid"
