@@ -164,23 +164,17 @@ impl FactorTable {
         FactorTable { first, entries }
     }
 
-    /// A factor no larger than Eq. (1) at any φ' ≥ `phi` (radians, at
-    /// least the law's least angle less 0.01°), with +φw if `rising` and
-    /// −φw otherwise.
+    /// Factors no larger than Eq. (1) at any φ' ≥ `phi` (radians, at
+    /// least the law's least angle less 0.01°): (with +φw, with −φw).
     #[inline]
-    pub fn below(&self, phi: f64, rising: bool) -> &ForceFactor {
+    pub fn below(&self, phi: f64) -> &(ForceFactor, ForceFactor) {
         // A multiplication, not a division; shrunk by 1e-12 so that
         // rounding never takes the entry above φ.
         const BELOW: f64 = (1.0 - 1e-12) / FactorTable::STEP;
         let k = ((phi * BELOW) as usize)
             .saturating_sub(self.first)
             .min(self.entries.len() - 1);
-        let entry = &self.entries[k];
-        if rising {
-            &entry.0
-        } else {
-            &entry.1
-        }
+        &self.entries[k]
     }
 }
 
@@ -300,13 +294,13 @@ mod tests {
                 let Some(exact) = ForceFactor::new(phi, w).at(t) else {
                     continue; // β + φ + φw ≥ 90°: nothing to bound
                 };
-                let low = table.below(phi, true).at(t).unwrap();
+                let low = table.below(phi).0.at(t).unwrap();
                 assert!(low <= exact, "{deg} {t}: {low} {exact}");
                 // Tight away from β + φ + φw → 90°, where Eq. (1) blows up.
                 if deg <= 45.0 && deg + t.atan().to_degrees() + 10.0 < 80.0 {
                     assert!(low > 0.999 * exact, "{deg} {t}: {low} {exact}");
                 }
-                let sinking = table.below(phi, false).at(t).unwrap();
+                let sinking = table.below(phi).1.at(t).unwrap();
                 assert!(sinking <= low);
             }
         }

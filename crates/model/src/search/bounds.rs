@@ -115,9 +115,7 @@ impl LeastFriction {
 /// one in Eq. (1); one that does not, −φw (M9) or anything up to +φw (M41).
 pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar: f64) -> bool {
     let t = line.slope.tan_beta;
-    let table = &input.laws.table;
-    let rising = table.below(angles.friction, true);
-    let sinking = table.below(angles.friction, false);
+    let (rising, sinking) = input.laws.table.below(angles.friction);
     rising.can_beat(line.floor, t, bar)
         || (t <= input.face.sinking_below
             && match input.face.rule {
