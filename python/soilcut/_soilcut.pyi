@@ -88,8 +88,8 @@ class Simulation:
     def step(self) -> Step:
         """Advances the blade by one increment (``run.increment``) and
         returns its record. Raises :class:`soilcut.StepError` if no
-        mechanism is admissible and ``RuntimeError`` once the travel is
-        reached."""
+        mechanism is admissible or once the travel is reached
+        (:meth:`advance_to` goes beyond it)."""
     def advance(self, n: int) -> int:
         """Advances by up to ``n`` increments without returning their
         records; returns how many were made."""
