@@ -18,8 +18,8 @@ mod study_cmd;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    read_case, record_files, write_run_dir, LoadedCase, OutputError, Override, PictureError,
-    RecordedRun,
+    read_case, record_files, write_run_dir, InputError, LoadedCase, OutputError, Override,
+    PictureError, RecordedRun,
 };
 use soilcut_model::{Case, Simulation};
 use std::io::IsTerminal;
@@ -95,7 +95,13 @@ enum Command {
         #[arg(long, value_name = "N")]
         ensemble: Option<usize>,
         /// Worker threads for --ensemble [default: one per core]. Results do not depend on it.
-        #[arg(long, value_name = "N", default_value_t = 0, requires = "ensemble")]
+        #[arg(
+            long,
+            value_name = "N",
+            default_value_t = 0,
+            hide_default_value = true,
+            requires = "ensemble"
+        )]
         jobs: usize,
     },
     /// Read and validate a case without running it.
@@ -201,6 +207,31 @@ impl Failure {
         }
     }
 
+    /// A case error that a command-line argument's key caused (`--set`,
+    /// `--vary`: the error's key at, above or below the argument's, the
+    /// last such argument) names that argument rather than the case file:
+    /// the value to mend is there.
+    fn argument(path: &Path, flag: &str, args: &[String], e: InputError) -> Self {
+        let key = match &e {
+            InputError::Key(k) => k.key.as_str(),
+            _ => return Failure::input(path, e),
+        };
+        let related = |arg: &&String| {
+            let given = arg.split_once('=').map_or(arg.as_str(), |(k, _)| k).trim();
+            let within = |outer: &str, inner: &str| {
+                inner == outer
+                    || inner
+                        .strip_prefix(outer)
+                        .is_some_and(|r| r.starts_with('.'))
+            };
+            within(given, key) || within(key, given)
+        };
+        match args.iter().rev().find(related) {
+            Some(arg) => Failure::input(Path::new(&format!("{flag} {arg}")), e),
+            None => Failure::input(path, e),
+        }
+    }
+
     fn output(e: OutputError) -> Self {
         Failure {
             // An occupied or unnamed folder is the user's choice; I/O is not.
@@ -273,7 +304,7 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
         .map(|s| s.parse::<Override>())
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| Failure::input(path, e))?;
-    read_case(path, &overrides).map_err(|e| Failure::input(path, e))
+    read_case(path, &overrides).map_err(|e| Failure::argument(path, "--set", set, e))
 }
 
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {

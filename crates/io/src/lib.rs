@@ -35,7 +35,7 @@ mod record;
 
 pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
-    LoadedCase,
+    unknown_key, LoadedCase,
 };
 pub use columns::Columns;
 pub use error::{InputError, OutputError};
