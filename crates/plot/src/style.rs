@@ -12,7 +12,7 @@ use std::sync::Once;
 /// registered under it, and SVG viewers substitute their own sans-serif.
 pub const FAMILY: &str = "sans-serif";
 
-static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
+pub(crate) static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
 
 /// Registers the bundled font (once per process).
 pub fn register_font() {
