@@ -131,7 +131,8 @@ enum Command {
     /// Overlay the force and β* curves of finished runs (paper Fig. 7).
     #[command(after_help = COMPARE_EXAMPLES)]
     Compare {
-        /// The runs' output folders; the legend shows each case's title.
+        /// The runs' output folders; the legend shows each case's title, or
+        /// the folder's last components where titles are equal.
         #[arg(required = true, value_name = "OUTDIR")]
         dirs: Vec<PathBuf>,
         /// The picture to write, .png or .svg.

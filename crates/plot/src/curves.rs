@@ -60,8 +60,9 @@ pub fn draw_beta(run: &RunData, path: &Path) -> Result<(), PlotError> {
 }
 
 /// Overlays the force (top panel) and β* (bottom panel) curves of `runs`
-/// against u/d, each run in its own colour with its title in the legend
-/// (paper Fig. 7). A `measured` curve (u, force per unit width, in the
+/// against u/d, each run in its own colour and width, the first the widest,
+/// with its title in the legend (paper Fig. 7): runs that coincide (one
+/// case at two increments) stay visible under one another. A `measured` curve (u, force per unit width, in the
 /// first run's length unit) is drawn as black dots, normalised by the first
 /// run's d and γ0. PNG or SVG by `path`'s extension, 1200 px wide.
 pub fn draw_compare(
@@ -123,11 +124,11 @@ fn draw_quantity<'a, DB: DrawingBackend + 'a>(
     chart: &mut style::Chart<'a, DB>,
     q: Quantity,
     points: &[(f64, f64)],
-    color: RGBColor,
+    (color, width): (RGBColor, u32),
 ) -> DrawResult {
     match q {
-        Quantity::Force => curve(chart, points, color, PAPER.line),
-        Quantity::Beta => dots(chart, points, color, 2),
+        Quantity::Force => curve(chart, points, color, width),
+        Quantity::Beta => dots(chart, points, color, width / 2 + 1),
     }
 }
 
@@ -146,7 +147,8 @@ impl Picture for Single<'_> {
         let area = titled(root, &self.run.title, PAPER.title)?;
         let y = value_range(self.run.history.iter().map(|h| self.q.of(h)));
         let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q, PAPER)?;
-        draw_quantity(&mut chart, self.q, &points(self.run, self.q), style::CURVE)
+        let look = (style::CURVE, PAPER.line);
+        draw_quantity(&mut chart, self.q, &points(self.run, self.q), look)
     }
 }
 
@@ -164,12 +166,22 @@ impl Compare<'_> {
             .runs
             .iter()
             .enumerate()
-            .map(|(i, r)| (r.title.clone(), Mark::Line(series_color(i))))
+            .map(|(i, r)| {
+                let (color, width) = self.look(i);
+                (r.title.clone(), Mark::Stroke(color, width))
+            })
             .collect();
         if let Some(m) = self.measured {
             rows.push((m.label.clone(), Mark::Dot(BLACK)));
         }
         Legend::new(rows, WIDTH - 80, PAPER)
+    }
+
+    /// Run `i`'s colour and line width: 3 px wider than the next run's,
+    /// the last at the width of a single curve.
+    fn look(&self, i: usize) -> (RGBColor, u32) {
+        let later = (self.runs.len() - 1 - i) as u32;
+        (series_color(i), PAPER.line + 3 * later.min(4))
     }
 
     /// The measured points as (u/d, P/(γ0 d²)) of the first run.
@@ -220,7 +232,7 @@ impl Picture for Compare<'_> {
             let y = value_range(values.into_iter());
             let mut chart = curve_chart(&area, (u0, u1), y, q, PAPER)?;
             for (i, run) in self.runs.iter().enumerate() {
-                draw_quantity(&mut chart, q, &points(run, q), series_color(i))?;
+                draw_quantity(&mut chart, q, &points(run, q), self.look(i))?;
             }
             if q == Quantity::Force {
                 chart

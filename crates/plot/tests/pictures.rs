@@ -124,6 +124,30 @@ fn animation_and_comparison() {
     assert_eq!(Format::of(Path::new("x.SVG")).unwrap(), Format::Svg);
 }
 
+/// The pixels of the PNG at `path` that are exactly `rgb`.
+fn pixels_of(path: &Path, rgb: [u8; 3]) -> usize {
+    let decoder = png::Decoder::new(std::io::BufReader::new(fs::File::open(path).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    buf[..info.buffer_size()]
+        .chunks(3)
+        .filter(|p| *p == rgb)
+        .count()
+}
+
+/// One run compared with itself: the first curve, drawn wider, shows on
+/// both sides of the second along the whole run (a curve of one width
+/// hid it entirely; the legend's mark alone is 200 pixels).
+#[test]
+fn compared_runs_that_coincide_stay_visible() {
+    let tmp = tempfile::tempdir().unwrap();
+    let path = tmp.path().join("c.png");
+    draw_compare(&[run(0.0), run(0.0)], None, &path).unwrap();
+    let first = pixels_of(&path, [31, 119, 180]);
+    assert!(first > 3000, "{first} pixels of the first run's colour");
+}
+
 /// `run` with the blade deepening from d/2 to d over its first d of travel.
 fn deepening() -> RunData {
     let mut run = run(0.0);
