@@ -91,12 +91,12 @@ fn value_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (0.0, top(values, 1.0) * 1.1)
 }
 
-/// Builds a chart of the curves' layout on `area`.
-fn curve_chart<'a, DB: DrawingBackend>(
+/// Builds a chart of the curves' layout on `area`, against u/d.
+pub(crate) fn curve_chart<'a, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     x: (f64, f64),
     y: (f64, f64),
-    q: Quantity,
+    y_desc: &str,
     sizes: Sizes,
 ) -> Result<style::Chart<'a, DB>, String> {
     let mut chart = ChartBuilder::on(area)
@@ -106,7 +106,7 @@ fn curve_chart<'a, DB: DrawingBackend>(
         .y_label_area_size(sizes.desc * 4)
         .build_cartesian_2d(x.0..x.1, y.0..y.1)
         .map_err(text)?;
-    axes(&mut chart, U_DESC, q.desc(), sizes)?;
+    axes(&mut chart, U_DESC, y_desc, sizes)?;
     Ok(chart)
 }
 
@@ -146,7 +146,7 @@ impl Picture for Single<'_> {
         root.fill(&WHITE).map_err(text)?;
         let area = titled(root, &self.run.title, PAPER.title)?;
         let y = value_range(self.run.history.iter().map(|h| self.q.of(h)));
-        let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q, PAPER)?;
+        let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q.desc(), PAPER)?;
         let look = (style::CURVE, PAPER.line);
         draw_quantity(&mut chart, self.q, &points(self.run, self.q), look)
     }
@@ -230,7 +230,7 @@ impl Picture for Compare<'_> {
                 values.extend(measured.iter().map(|p| p.1));
             }
             let y = value_range(values.into_iter());
-            let mut chart = curve_chart(&area, (u0, u1), y, q, PAPER)?;
+            let mut chart = curve_chart(&area, (u0, u1), y, q.desc(), PAPER)?;
             for (i, run) in self.runs.iter().enumerate() {
                 draw_quantity(&mut chart, q, &points(run, q), self.look(i))?;
             }
