@@ -180,8 +180,8 @@ struct CaseOutput {
 
 impl CaseOutput {
     /// The `--set` overrides.
-    fn overrides(&self) -> Result<Vec<Override>, soilcut_io::InputError> {
-        self.set.iter().map(|s| s.parse::<Override>()).collect()
+    fn overrides(&self) -> Result<Vec<Override>, Failure> {
+        overrides(&self.set)
     }
 
     /// `--out`, or out/`name`.
@@ -228,9 +228,19 @@ impl Failure {
             within(given, key) || within(key, given)
         };
         match args.iter().rev().find(related) {
-            Some(arg) => Failure::input(Path::new(&format!("{flag} {arg}")), e),
+            Some(arg) => Failure::input(&named(flag, arg), e),
             None => Failure::input(path, e),
         }
+    }
+
+    /// A `--set` argument that is not `key.path=value` (or whose value is
+    /// beyond a number), named as the argument.
+    fn set(arg: &str, e: InputError) -> Self {
+        let message = match e {
+            InputError::Override { message, .. } => message,
+            e => e.to_string(),
+        };
+        Failure::input(&named("--set", arg), message)
     }
 
     fn output(e: OutputError) -> Self {
@@ -299,12 +309,21 @@ fn main() -> ExitCode {
     }
 }
 
+/// A command-line argument as the "path" of an error: `--set KEY=VALUE`,
+/// its control characters escaped so that the message stays one line.
+fn named(flag: &str, arg: &str) -> PathBuf {
+    PathBuf::from(format!("{flag} {}", soilcut_io::visible(arg)))
+}
+
+/// The `--set` arguments as overrides; a malformed one is named as itself.
+fn overrides(set: &[String]) -> Result<Vec<Override>, Failure> {
+    set.iter()
+        .map(|s| s.parse::<Override>().map_err(|e| Failure::set(s, e)))
+        .collect()
+}
+
 fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
-    let overrides = set
-        .iter()
-        .map(|s| s.parse::<Override>())
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| Failure::input(path, e))?;
+    let overrides = overrides(set)?;
     read_case(path, &overrides).map_err(|e| Failure::argument(path, "--set", set, e))
 }
 

@@ -175,10 +175,7 @@ impl Common {
     /// The base case, the output folder (checked to be free) and the case name.
     fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
         let path = &self.target.case;
-        let overrides = self
-            .target
-            .overrides()
-            .map_err(|e| Failure::input(path, e))?;
+        let overrides = self.target.overrides()?;
         let base = BaseCase::read(path, overrides)
             .map_err(|e| Failure::argument(path, "--set", &self.target.set, e))?;
         let name = base
@@ -346,11 +343,8 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
             .split_once('=')
             .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
         let case = Path::new(case);
-        let other = BaseCase::read(
-            case,
-            c.target.overrides().map_err(|e| Failure::input(path, e))?,
-        )
-        .map_err(|e| Failure::input(case, e))?;
+        let other =
+            BaseCase::read(case, c.target.overrides()?).map_err(|e| Failure::input(case, e))?;
         tests.push(test_of(Path::new(measured), other, width)?);
     }
     let fit = Fit {

@@ -38,7 +38,7 @@ pub use case_file::{
     unknown_key, LoadedCase,
 };
 pub use columns::Columns;
-pub use error::{InputError, OutputError};
+pub use error::{visible, InputError, OutputError};
 pub use finished::{
     frames_columns, frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table,
     FRAMES_HEADER, FRAME_ROWS,
