@@ -185,6 +185,11 @@ def main(argv: list[str] | None = None) -> dict:
     parser.add_argument("--quick", action="store_true", help="1 d planned with 3 rates")
     parser.add_argument("--out", type=pathlib.Path, default=HERE / "mpc.png")
     args = parser.parse_args(argv)
+    # The picture is drawn last: without matplotlib, say so before planning.
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        parser.error("draws its picture with matplotlib: pip install matplotlib")
     quick = args.quick or os.environ.get("SOILCUT_MPC_QUICK") == "1"
     return run(quick, args.out)
 

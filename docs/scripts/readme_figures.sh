@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Redraws the README's pictures of cases/paper/original.toml
 # (docs/img/force.png, beta.png, deformation.png) from a run at the case's
-# own settings, and docs/img/envelope.png from an ensemble of Table 1 HS. From the repository root:
+# own settings, docs/img/envelope.png from an ensemble of Table 1 HS, and
+# the landscapes of Table 1 HS and S (docs/img/landscape.png,
+# landscape_map_hs.png, landscape_map_s.png; README, docs/performance.md,
+# docs/reproduction.md). From the repository root:
 #   bash docs/scripts/readme_figures.sh
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -16,3 +19,11 @@ done
 # defaults, 7 perturbed members.
 "$soilcut" run cases/paper/table1-hs.toml --ensemble 7 --quiet --force --out "$out-ensemble"
 cp "$out-ensemble/plots/envelope.png" docs/img/envelope.png
+# Every candidate's force at u/d = 4, and the maps through the run, at d/500.
+"$soilcut" landscape cases/paper/table1-hs.toml --at 4 --force --out "$out-landscape" >/dev/null
+cp "$out-landscape/landscape.png" docs/img/landscape.png
+for name in hs s; do
+  "$soilcut" landscape "cases/paper/table1-$name.toml" --every 0.05 --force \
+    --out "$out-map-$name" >/dev/null
+  cp "$out-map-$name/landscape_map.png" "docs/img/landscape_map_$name.png"
+done

@@ -7,6 +7,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any, Union
 
 from . import _soilcut
+from ._errors import CaseError
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -55,9 +56,18 @@ class Case:
     @classmethod
     def from_file(cls, path: PathLike) -> Case:
         """Reads a case file (TOML, UTF-8). Raises ``OSError`` if it cannot be
-        read and :class:`soilcut.CaseError` if it is not a valid case."""
+        read and :class:`soilcut.CaseError`, its message starting with the
+        path, if it is not a valid case."""
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(
+                f"Case.from_file takes a path (str or os.PathLike), not {type(path).__name__}"
+            )
         with open(path, encoding="utf-8") as f:
-            return cls(f.read())
+            text = f.read()
+        try:
+            return cls(text)
+        except CaseError as e:
+            raise CaseError(f"{os.fspath(path)}: {e}", e.key) from None
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any]) -> Case:
@@ -132,10 +142,14 @@ class Case:
         return (Case, (self.to_toml(),))
 
 
-def native_of(case: Case | str) -> _soilcut.NativeCase:
-    """The native handle of a :class:`Case` (or of a case file's text)."""
+def case_of(case: Case | PathLike) -> Case:
+    """A :class:`Case` itself, or the case of a case file's path or text (a
+    path: ``os.PathLike``, or one line ending in ``.toml`` or naming a file)."""
     if isinstance(case, Case):
-        return case._native
-    if isinstance(case, str):
-        return Case(case)._native
-    raise TypeError(f"expected a soilcut.Case, not {type(case).__name__}")
+        return case
+    return Case._from_native(_soilcut.NativeCase.of(case))
+
+
+def native_of(case: Case | PathLike) -> _soilcut.NativeCase:
+    """The native handle of :func:`case_of`'s case."""
+    return case_of(case)._native

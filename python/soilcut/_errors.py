@@ -21,9 +21,12 @@ class CaseError(ValueError):
 
 
 class StepError(ValueError):
-    """An increment without an admissible mechanism (every candidate violates
-    β > 0 and β + φ + φw < 90°): the case cannot be simulated further. The
-    command line reports it as bad input too (exit code 2).
+    """An increment that cannot be made: none has an admissible mechanism
+    (every candidate violates β > 0 and β + φ + φw < 90°), so the case
+    cannot be simulated further, or a step was asked for after the case's
+    travel had been reached (``Simulation.advance_to`` goes beyond it; the
+    message says which). The command line reports the first as bad input
+    too (exit code 2).
 
     ``steps`` holds the records of the increments made before the one that
     failed, by the call that raised (:meth:`soilcut.Simulation.advance_to`

@@ -9,7 +9,7 @@ from typing import Any, NamedTuple, Union
 import numpy as np
 
 from . import _soilcut
-from ._case import Case, native_of
+from ._case import Case, case_of, native_of
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -43,12 +43,18 @@ def _frames(columns: dict[str, np.ndarray]) -> list[Frame]:
     ]
 
 
-def _frame_of(columns: dict[str, np.ndarray]):
+def pandas(what: str):
+    """pandas, or an ``ImportError`` saying that ``what`` needs it and which
+    extra installs it (plain ``pip install ./python`` has no pandas)."""
     try:
         import pandas as pd
-    except ImportError as e:  # pragma: no cover - depends on the environment
-        raise ImportError("a DataFrame needs pandas: pip install pandas") from e
-    return pd.DataFrame(columns)
+    except ImportError as e:
+        raise ImportError(f"{what} needs pandas: pip install 'soilcut[pandas]' (or pandas)") from e
+    return pd
+
+
+def _frame_of(columns: dict[str, np.ndarray]):
+    return pandas("a DataFrame").DataFrame(columns)
 
 
 class RunResult:
@@ -175,9 +181,12 @@ class Ensemble:
         )
 
 
-def run(case: Case, *, ensemble: int | None = None, jobs: int = 0) -> RunResult | Ensemble:
-    """Runs ``case`` to its end, as ``soilcut run`` does, and returns the
-    result. The interpreter is released while it runs (other threads go on).
+def run(
+    case: Case | PathLike, *, ensemble: int | None = None, jobs: int = 0
+) -> RunResult | Ensemble:
+    """Runs ``case`` (a :class:`Case`, or a case file's path or text) to its
+    end, as ``soilcut run`` does, and returns the result. The interpreter is
+    released while it runs (other threads go on).
 
     With ``ensemble=N``, runs the case's N perturbed members in parallel on
     ``jobs`` threads (0: one per core; the result does not depend on it) and
@@ -188,7 +197,7 @@ def run(case: Case, *, ensemble: int | None = None, jobs: int = 0) -> RunResult 
     mechanism; warns with :class:`soilcut.AccuracyWarning` where the case's
     grid is known to cost accuracy, as ``soilcut run`` warns on stderr.
     """
-    the_case = case if isinstance(case, Case) else Case(case)
+    the_case = case_of(case)
     if ensemble is not None:
         # The count's rule (at least 2) is the library's; the type is Python's.
         if isinstance(ensemble, bool) or not isinstance(ensemble, int):

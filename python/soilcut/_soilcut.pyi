@@ -6,6 +6,7 @@ The public names are re-exported by ``soilcut``: :class:`Simulation` and
 extension: every name, method and parameter on one side is on the other.
 """
 
+import os
 from collections.abc import Iterator
 from typing import Any
 
@@ -80,7 +81,7 @@ class Simulation:
     :meth:`snapshot` bytes continue bit for bit as the original would: a
     planner branches from them."""
 
-    def __init__(self, case: Case | NativeCase | str) -> None:
+    def __init__(self, case: CaseLike) -> None:
         """Flat ground for ``case`` (a :class:`soilcut.Case` or a case file's
         text); raises :class:`soilcut.CaseError` for a case the model cannot
         simulate, and warns with :class:`soilcut.AccuracyWarning` where its
@@ -88,8 +89,8 @@ class Simulation:
     def step(self) -> Step:
         """Advances the blade by one increment (``run.increment``) and
         returns its record. Raises :class:`soilcut.StepError` if no
-        mechanism is admissible and ``RuntimeError`` once the travel is
-        reached."""
+        mechanism is admissible or once the travel is reached
+        (:meth:`advance_to` goes beyond it)."""
     def advance(self, n: int) -> int:
         """Advances by up to ``n`` increments without returning their
         records; returns how many were made."""
@@ -176,6 +177,8 @@ class NativeCase:
     def from_toml(text: str) -> NativeCase: ...
     @staticmethod
     def from_dict(d: dict[str, Any]) -> NativeCase: ...
+    @staticmethod
+    def of(case: CaseLike) -> NativeCase: ...
     def set_keys(self, pairs: list[tuple[str, Any]]) -> NativeCase: ...
     def to_toml(self) -> str: ...
     def to_dict(self) -> dict[str, Any]: ...
@@ -209,7 +212,7 @@ class EnsembleRun:
     def members(self) -> list[tuple[str, RunRecords]]: ...
     def write(self, folder: str, force: bool, pictures: bool) -> None: ...
 
-CaseLike = NativeCase | Case | str
+CaseLike = NativeCase | Case | str | os.PathLike[str]
 
 def run(case: CaseLike) -> RunRecords: ...
 def ensemble(case: CaseLike, members: int, jobs: int) -> EnsembleRun: ...
@@ -221,6 +224,7 @@ def sweep_points(
 def sweep_csv(
     case: CaseLike, varies: list[tuple[str, Any]], sample: str, seed: int, jobs: int
 ) -> tuple[str, str]: ...
+def sweep_check(case: CaseLike, keys: list[str], values: list[Any]) -> None: ...
 def sweep_header(keys: list[str]) -> str: ...
 def sweep_row(
     case: CaseLike, keys: list[str], values: list[Any], run: int, total: int

@@ -11,16 +11,14 @@ from typing import Any, NamedTuple, Union
 import numpy as np
 
 from . import _soilcut
-from ._case import Case, native_of
+from ._case import Case, case_of, native_of
+from ._run import pandas
 
 Spec = Union[str, tuple[float, float], tuple[float, float, int], Sequence[Any]]
 
 
 def _read_csv(text: str):
-    try:
-        import pandas as pd
-    except ImportError as e:  # pragma: no cover - depends on the environment
-        raise ImportError("soilcut.sweep returns a pandas DataFrame: pip install pandas") from e
+    pd = pandas("soilcut.sweep (a DataFrame)")
     # The numbers must be the CSV's exactly: pandas < 3 rounds by default.
     exact = {} if int(pd.__version__.split(".")[0]) >= 3 else {"float_precision": "round_trip"}
     return pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=[""], **exact)
@@ -47,7 +45,10 @@ def sweep(
     (``initial_force_norm``, ``max_force_norm``, ``u_over_d_at_max``,
     ``final_force_norm``, ``peaks``, ``mean_force_norm_last_half``,
     ``mass_drift_rel``, ``band_jumps``, ``steps``; forces as P/(γ0 d²)). A
-    run that fails is a row with its error, not an exception.
+    run that fails is a row with its error, not an exception. A key that
+    is not part of the case raises :class:`soilcut.CaseError` naming it and
+    the nearest keys, and a missing pandas an ``ImportError``, both before
+    any run.
 
     Args:
         vary: dotted key → values: a spec string as ``--vary`` takes it
@@ -66,7 +67,8 @@ def sweep(
             ``Client.get_executor()`` (dask-jobqueue for Slurm or PBS). The
             result is the same as on one thread, row for row.
     """
-    case = case if isinstance(case, Case) else Case(case)
+    pandas("soilcut.sweep (a DataFrame)")  # before the runs, not after them
+    case = case_of(case)
     native = native_of(case)
     if (vary is None) == (samples is None):
         raise ValueError("give either vary (keys and their values) or samples (one dict per run)")
@@ -79,6 +81,7 @@ def sweep(
             if list(s.keys()) != keys:
                 raise ValueError(f"samples[{i}]: the keys differ from those of samples[0]: {keys}")
             points.append([s[k] for k in keys])
+        _soilcut.sweep_check(native, keys, points[0])
     else:
         varies = list(vary.items())
         if executor is None:

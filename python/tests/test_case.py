@@ -86,7 +86,8 @@ def test_errors_are_case_errors_with_the_cli_message(cli, original, key, value, 
     path = case_path("paper/original.toml")
     done = run_cli(cli, "check", str(path), "--set", cli_set, check=False)
     assert done.returncode == 2
-    assert done.stderr == f"error: {path}: {raised.value}\n"
+    # The command line names the --set that gave the value, not the file.
+    assert done.stderr == f"error: --set {cli_set}: {raised.value}\n"
     assert isinstance(raised.value, ValueError)
     assert raised.value.key is not None and str(raised.value).startswith(raised.value.key)
 
@@ -117,3 +118,30 @@ def test_errors_pickle_with_their_key(original):
         original.set("blade.depth", -1)
     again = pickle.loads(pickle.dumps(raised.value))
     assert (str(again), again.key) == (str(raised.value), "blade.depth")
+
+
+def test_a_path_is_taken_where_a_case_is(original, tmp_path):
+    short = original.update({"run.travel": 1.0, "run.increment": 0.2})
+    path = tmp_path / "short.toml"
+    path.write_text(short.to_toml(), encoding="utf-8")
+    reference = soilcut.run(short).history["force"]
+    for given in (path, str(path)):
+        np.testing.assert_array_equal(soilcut.run(given).history["force"], reference)
+        assert soilcut.Simulation(given).case == short
+    # A one-line string ending in .toml is a path even if it names no file.
+    with pytest.raises(FileNotFoundError):
+        soilcut.Simulation(str(tmp_path / "missing.toml"))
+    # The text itself is still the text.
+    assert soilcut.Simulation(short.to_toml()).case == short
+
+
+def test_from_file_refuses_what_is_no_path_and_names_the_file(tmp_path):
+    with pytest.raises(TypeError, match="takes a path"):
+        soilcut.Case.from_file(123)
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "bad"\nmodel = "original"\n[blade]\ndepth = -1\n', encoding="utf-8")
+    with pytest.raises(soilcut.CaseError) as e:
+        soilcut.Case.from_file(bad)
+    assert str(e.value).startswith(f"{bad}: ")
+    with pytest.raises(soilcut.CaseError, match=f"^{bad}: "):
+        soilcut.run(str(bad))

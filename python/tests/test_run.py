@@ -122,8 +122,9 @@ def test_advance_and_step_agree(refined):
     assert a.blade_position == b.blade_position and a.mass == b.mass
     assert a.step().force == b.step().force
     assert a.advance(10**9) == a.steps - 8 and a.is_done
-    with pytest.raises(RuntimeError):
+    with pytest.raises(soilcut.StepError, match="travel has been reached"):
         a.step()
+    assert a.steps_done == a.steps, "a refused step changes nothing"
 
 
 def test_results_pickle(refined):

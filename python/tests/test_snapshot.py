@@ -110,7 +110,7 @@ def test_advance_to_steers_the_tip_and_goes_beyond_the_travel(short):
     sim.advance_to(50.0, depth=20.0)
     assert sim.is_done and sim.case["run.travel"] == 50.0
     assert sim.steps == sim.steps_done == 125
-    with pytest.raises(RuntimeError):
+    with pytest.raises(soilcut.StepError, match="travel has been reached"):
         sim.step()
 
 

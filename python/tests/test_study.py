@@ -75,6 +75,32 @@ def test_samples_and_tuples(refined):
         soilcut.sweep(case)
 
 
+def test_a_key_not_of_the_case_is_refused_before_any_run(refined, monkeypatch):
+    def no_run(*args):
+        raise AssertionError("a run was started")
+
+    monkeypatch.setattr(soilcut._study, "_sweep_row", no_run)
+    case = short(refined)
+    for spec in (
+        {"vary": {"soil.frict": "30:40:2"}},
+        {"vary": {"soil.frict": [30, 40]}, "executor": concurrent.futures.ThreadPoolExecutor(1)},
+        {"samples": [{"soil.frict": 30}]},
+    ):
+        with pytest.raises(soilcut.CaseError, match="nearest: `soil.friction`") as e:
+            soilcut.sweep(case, **spec)
+        assert e.value.key == "soil.frict"
+
+
+def test_without_pandas_a_sweep_fails_before_its_runs(refined, monkeypatch):
+    def no_run(*args):
+        raise AssertionError("a run was started")
+
+    monkeypatch.setattr(soilcut._study._soilcut, "sweep_csv", no_run)
+    monkeypatch.setitem(__import__("sys").modules, "pandas", None)
+    with pytest.raises(ImportError, match=r"soilcut\[pandas\]"):
+        soilcut.sweep(short(refined), {"soil.friction.peak": [33]})
+
+
 def test_a_process_pool_gives_the_thread_result(refined):
     case = short(refined)
     alone = soilcut.sweep(case, VARY, sample="lhs:6", seed=4, jobs=1)

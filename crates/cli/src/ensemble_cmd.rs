@@ -17,8 +17,9 @@ pub fn run_ensemble(
     quiet: bool,
 ) -> Result<(), Failure> {
     let path = target.case.as_path();
-    let overrides = target.overrides().map_err(|e| Failure::input(path, e))?;
-    let base = BaseCase::read(path, overrides).map_err(|e| Failure::input(path, e))?;
+    let overrides = target.overrides()?;
+    let base = BaseCase::read(path, overrides)
+        .map_err(|e| Failure::argument(path, "--set", &target.set, e))?;
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
     let out = target.out_or(&case.name);
     check_output_dir(&out, target.force).map_err(Failure::output)?;

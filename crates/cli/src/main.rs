@@ -18,8 +18,8 @@ mod study_cmd;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    read_case, record_files, write_run_dir, LoadedCase, OutputError, Override, PictureError,
-    RecordedRun,
+    read_case, record_files, write_run_dir, InputError, LoadedCase, OutputError, Override,
+    PictureError, RecordedRun,
 };
 use soilcut_model::{Case, Simulation};
 use std::io::IsTerminal;
@@ -95,7 +95,13 @@ enum Command {
         #[arg(long, value_name = "N")]
         ensemble: Option<usize>,
         /// Worker threads for --ensemble [default: one per core]. Results do not depend on it.
-        #[arg(long, value_name = "N", default_value_t = 0, requires = "ensemble")]
+        #[arg(
+            long,
+            value_name = "N",
+            default_value_t = 0,
+            hide_default_value = true,
+            requires = "ensemble"
+        )]
         jobs: usize,
     },
     /// Read and validate a case without running it.
@@ -125,7 +131,8 @@ enum Command {
     /// Overlay the force and β* curves of finished runs (paper Fig. 7).
     #[command(after_help = COMPARE_EXAMPLES)]
     Compare {
-        /// The runs' output folders; the legend shows each case's title.
+        /// The runs' output folders; the legend shows each case's title, or
+        /// the folder's last components where titles are equal.
         #[arg(required = true, value_name = "OUTDIR")]
         dirs: Vec<PathBuf>,
         /// The picture to write, .png or .svg.
@@ -173,8 +180,8 @@ struct CaseOutput {
 
 impl CaseOutput {
     /// The `--set` overrides.
-    fn overrides(&self) -> Result<Vec<Override>, soilcut_io::InputError> {
-        self.set.iter().map(|s| s.parse::<Override>()).collect()
+    fn overrides(&self) -> Result<Vec<Override>, Failure> {
+        overrides(&self.set)
     }
 
     /// `--out`, or out/`name`.
@@ -199,6 +206,41 @@ impl Failure {
             path: path.to_path_buf(),
             message: message.to_string(),
         }
+    }
+
+    /// A case error that a command-line argument's key caused (`--set`,
+    /// `--vary`: the error's key at, above or below the argument's, the
+    /// last such argument) names that argument rather than the case file:
+    /// the value to mend is there.
+    fn argument(path: &Path, flag: &str, args: &[String], e: InputError) -> Self {
+        let key = match &e {
+            InputError::Key(k) => k.key.as_str(),
+            _ => return Failure::input(path, e),
+        };
+        let related = |arg: &&String| {
+            let given = arg.split_once('=').map_or(arg.as_str(), |(k, _)| k).trim();
+            let within = |outer: &str, inner: &str| {
+                inner == outer
+                    || inner
+                        .strip_prefix(outer)
+                        .is_some_and(|r| r.starts_with('.'))
+            };
+            within(given, key) || within(key, given)
+        };
+        match args.iter().rev().find(related) {
+            Some(arg) => Failure::input(&named(flag, arg), e),
+            None => Failure::input(path, e),
+        }
+    }
+
+    /// A `--set` argument that is not `key.path=value` (or whose value is
+    /// beyond a number), named as the argument.
+    fn set(arg: &str, e: InputError) -> Self {
+        let message = match e {
+            InputError::Override { message, .. } => message,
+            e => e.to_string(),
+        };
+        Failure::input(&named("--set", arg), message)
     }
 
     fn output(e: OutputError) -> Self {
@@ -267,13 +309,22 @@ fn main() -> ExitCode {
     }
 }
 
+/// A command-line argument as the "path" of an error: `--set KEY=VALUE`,
+/// its control characters escaped so that the message stays one line.
+fn named(flag: &str, arg: &str) -> PathBuf {
+    PathBuf::from(format!("{flag} {}", soilcut_io::visible(arg)))
+}
+
+/// The `--set` arguments as overrides; a malformed one is named as itself.
+fn overrides(set: &[String]) -> Result<Vec<Override>, Failure> {
+    set.iter()
+        .map(|s| s.parse::<Override>().map_err(|e| Failure::set(s, e)))
+        .collect()
+}
+
 fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
-    let overrides = set
-        .iter()
-        .map(|s| s.parse::<Override>())
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| Failure::input(path, e))?;
-    read_case(path, &overrides).map_err(|e| Failure::input(path, e))
+    let overrides = overrides(set)?;
+    read_case(path, &overrides).map_err(|e| Failure::argument(path, "--set", set, e))
 }
 
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {

@@ -50,7 +50,7 @@ pub struct Common {
     #[command(flatten)]
     target: CaseOutput,
     /// Worker threads [default: one per core]. Results do not depend on it.
-    #[arg(long, value_name = "N", default_value_t = 0)]
+    #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
     jobs: usize,
     /// No progress bar (it is shown only when stderr is a terminal).
     #[arg(long)]
@@ -109,7 +109,7 @@ pub struct FitArgs {
     evaluations: usize,
     /// Population of the search [default: max(16, 8 × free keys) for de,
     /// 4 + ⌊3 ln(free keys)⌋ for cmaes's first run, doubled at each restart].
-    #[arg(long, value_name = "N", default_value_t = 0)]
+    #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
     population: usize,
     /// Seed of the search. Results do not depend on --jobs.
     #[arg(long, default_value_t = 0)]
@@ -175,11 +175,9 @@ impl Common {
     /// The base case, the output folder (checked to be free) and the case name.
     fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
         let path = &self.target.case;
-        let overrides = self
-            .target
-            .overrides()
-            .map_err(|e| Failure::input(path, e))?;
-        let base = BaseCase::read(path, overrides).map_err(|e| Failure::input(path, e))?;
+        let overrides = self.target.overrides()?;
+        let base = BaseCase::read(path, overrides)
+            .map_err(|e| Failure::argument(path, "--set", &self.target.set, e))?;
         let name = base
             .load(&[])
             .map_err(|e| Failure::input(path, e))?
@@ -272,7 +270,13 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
         jobs: c.jobs,
         keep_runs: None,
     };
-    let runs = sweep.points().map_err(fail)?.len();
+    let runs = sweep
+        .points()
+        .map_err(|e| match e {
+            StudyError::Key(e) => Failure::argument(path, "--vary", &args.vary, e),
+            e => fail(e),
+        })?
+        .len();
     let mut result = None;
     write_study(&out, c.target.force, |dir| {
         if args.keep_runs {
@@ -288,12 +292,22 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
         Ok(())
     })
     .map_err(fail)?;
+    let first_error = result
+        .as_ref()
+        .and_then(|r| r.rows.iter().find_map(|row| row.outcome.clone().err()));
     let failed = result.map_or(0, |r| r.failed());
     println!(
         "sweep: {runs} runs ({failed} failed), outputs in {}",
         out.display()
     );
-    Ok(())
+    match first_error {
+        // Nothing to study: say so by the exit code too.
+        Some(first) if failed == runs => Err(Failure::input(
+            &out,
+            format!("every run failed; the first: {first}"),
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// A measured curve as a test of `base`, its forces divided by `w`.
@@ -329,11 +343,8 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
             .split_once('=')
             .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
         let case = Path::new(case);
-        let other = BaseCase::read(
-            case,
-            c.target.overrides().map_err(|e| Failure::input(path, e))?,
-        )
-        .map_err(|e| Failure::input(case, e))?;
+        let other =
+            BaseCase::read(case, c.target.overrides()?).map_err(|e| Failure::input(case, e))?;
         tests.push(test_of(Path::new(measured), other, width)?);
     }
     let fit = Fit {

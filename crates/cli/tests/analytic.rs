@@ -71,7 +71,8 @@ fn rake_outside_its_range_is_refused() {
             let o = soilcut(dir.path(), &[command, "case.toml", "--set", &set]);
             let err = String::from_utf8_lossy(&o.stderr);
             assert_eq!(o.status.code(), Some(2), "{err}");
-            assert!(err.starts_with("error: case.toml: blade.rake: "), "{err}");
+            let named = format!("error: --set {set}: blade.rake: ");
+            assert!(err.starts_with(&named), "{err}");
             assert!(err.contains("[20°, 90°]"), "{err}");
             assert_eq!(err.lines().count(), 1);
         }
@@ -93,7 +94,7 @@ fn rake_outside_its_range_is_refused() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.starts_with("error: case.toml: blade.wall_friction: "),
+        err.starts_with("error: --set blade.wall_friction=31: blade.wall_friction: "),
         "{err}"
     );
     // A face flatter than the repose (a tine or scraper) is a valid case.
@@ -121,7 +122,7 @@ fn negative_loads_are_refused() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(
-            err.starts_with(&format!("error: case.toml: {key}: ")),
+            err.starts_with(&format!("error: --set {key}=-1: {key}: ")),
             "{err}"
         );
     }
@@ -179,7 +180,7 @@ fn bad_depth_paths_are_refused() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{path}: {err}");
         assert!(
-            err.starts_with("error: case.toml: blade.depth_path: "),
+            err.starts_with(&format!("error: --set {set}: blade.depth_path: ")),
             "{err}"
         );
         assert!(err.contains(says), "{path}: {err}");

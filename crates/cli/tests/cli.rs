@@ -67,7 +67,8 @@ fn assert_ok(o: &Output) {
 
 /// `soilcut run` and `soilcut check` of `case` with `set` must both fail
 /// with exit code 2 and exactly one stderr line starting with `prefix`
-/// (after `error: case.toml: `), and `run` must create no output folder.
+/// (after `error: case.toml: `, or `error: --set S: ` for one of `set`),
+/// and `run` must create no output folder.
 fn assert_bad_input(case: &str, set: &[&str], prefix: &str) -> String {
     let sandbox = Sandbox::new(case);
     let mut sets = Vec::new();
@@ -83,10 +84,12 @@ fn assert_bad_input(case: &str, set: &[&str], prefix: &str) -> String {
         assert_eq!(o.status.code(), Some(2), "{command}: {err}");
         assert!(!err.contains("panicked"), "{err}");
         assert_eq!(err.lines().count(), 1, "one line: {err}");
-        let expected = format!("error: case.toml: {prefix}");
+        let places = std::iter::once("case.toml".to_string())
+            .chain(set.iter().map(|s| format!("--set {s}")));
+        let expected: Vec<String> = places.map(|p| format!("error: {p}: {prefix}")).collect();
         assert!(
-            err.starts_with(&expected),
-            "expected {expected:?}, got {err:?}"
+            expected.iter().any(|e| err.starts_with(e)),
+            "expected one of {expected:?}, got {err:?}"
         );
         assert!(stdout(&o).is_empty(), "{}", stdout(&o));
         line = err;
@@ -126,8 +129,54 @@ fn unknown_key_via_set() {
 }
 
 #[test]
+fn a_bad_set_value_names_the_set_not_the_file() {
+    let line = assert_bad_input(BASE, &["run.increment=abc"], "run.increment: ");
+    assert!(
+        line.starts_with("error: --set run.increment=abc: "),
+        "{line}"
+    );
+    // The last --set of the key is the one in force.
+    let set = [
+        "soil.friction.peak=30",
+        "run.travel=5",
+        "soil.friction.peak=95",
+    ];
+    let line = assert_bad_input(BASE, &set, "soil.friction.peak: ");
+    assert!(
+        line.starts_with("error: --set soil.friction.peak=95: "),
+        "{line}"
+    );
+    // A table set whole is named for the key below it that is wrong.
+    let set = ["soil.friction={ peak = 95, residual = 30 }"];
+    let line = assert_bad_input(BASE, &set, "soil.friction.peak: ");
+    assert!(line.starts_with("error: --set soil.friction="), "{line}");
+    // An error in the file, untouched by the --set, names the file.
+    let case = BASE.replace("depth = 20.0", "depth = -1.0");
+    let line = assert_bad_input(&case, &["run.travel=5"], "blade.depth: ");
+    assert!(line.starts_with("error: case.toml: "), "{line}");
+}
+
+#[test]
+fn a_number_beyond_a_float_is_out_of_range_not_a_string() {
+    let line = assert_bad_input(BASE, &["run.increment=1e400"], "1e400 is out of range");
+    assert!(
+        line.starts_with("error: --set run.increment=1e400: "),
+        "{line}"
+    );
+    assert!(!line.contains("string"), "{line}");
+}
+
+#[test]
 fn malformed_set() {
-    assert_bad_input(BASE, &["run.increment"], "--set run.increment: ");
+    let line = assert_bad_input(BASE, &["run.increment"], "expected key.path=value");
+    assert!(line.starts_with("error: --set run.increment: "), "{line}");
+    // The argument is named with its control characters escaped: one line.
+    let sandbox = Sandbox::new(BASE);
+    let o = sandbox.soilcut(&["check", "case.toml", "--set", "run.incr\nement"]);
+    assert_eq!(
+        stderr(&o),
+        "error: --set run.incr\\nement: expected key.path=value\n"
+    );
     assert_bad_input(BASE, &["run.increment.x=1"], "run.increment.x: ");
 }
 
@@ -564,6 +613,56 @@ fn help_shows_examples() {
 
 /// `soilcut --version` names the version and the commit the binary was
 /// built from: HEAD of this work tree when git can tell (`build.rs`).
+#[test]
+fn every_option_shows_one_default_at_most() {
+    let commands = [
+        "run",
+        "check",
+        "analytic",
+        "plot",
+        "compare",
+        "landscape",
+        "sweep",
+        "fit",
+        "converge",
+        "accuracy",
+    ];
+    for command in commands {
+        let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+            .args([command, "--help"])
+            .output()
+            .unwrap();
+        let help = stdout(&o);
+        // An option's entry runs from its `-` line to the next one.
+        for entry in help.split("\n  -").skip(1) {
+            assert!(
+                entry.matches("[default").count() <= 1,
+                "{command}: two defaults in -{entry}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_folder_that_is_not_a_run_is_named_so() {
+    let sandbox = Sandbox::new(BASE);
+    std::fs::create_dir(sandbox.path("empty")).unwrap();
+    for args in [vec!["plot", "empty"], vec!["compare", "empty"]] {
+        let o = sandbox.soilcut(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = stderr(&o);
+        assert!(
+            err.starts_with(
+                "error: empty: not a run folder: a run folder is one `soilcut run` wrote"
+            ),
+            "{err}"
+        );
+        assert!(!err.contains("cannot read"), "{err}");
+    }
+    let err = stderr(&sandbox.soilcut(&["plot", "nowhere"]));
+    assert!(err.starts_with("error: nowhere: no such folder: "), "{err}");
+}
+
 #[test]
 fn version_names_the_commit() {
     let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))

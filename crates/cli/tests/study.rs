@@ -87,6 +87,63 @@ fn sweep_files_do_not_depend_on_the_thread_count() {
 }
 
 #[test]
+fn an_unknown_varied_key_is_refused_before_any_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("x").display().to_string();
+    let case = refined();
+    let mut args = vec![
+        "sweep",
+        &case,
+        "--vary",
+        "soil.frict=30:40:2",
+        "--out",
+        &out,
+    ];
+    args.extend(SHORT);
+    let o = soilcut(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with(
+            "error: --vary soil.frict=30:40:2: soil.frict: unknown key (nearest: `soil.friction`;"
+        ),
+        "{err}"
+    );
+    assert!(o.stdout.is_empty() && !tmp.path().join("x").exists());
+}
+
+#[test]
+fn a_sweep_whose_every_run_fails_exits_2_with_its_files() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("x");
+    let case = refined();
+    let at = out.display().to_string();
+    // φc above φp in every run.
+    let mut args = vec![
+        "sweep",
+        &case,
+        "--vary",
+        "soil.friction.initial=50,55",
+        "--out",
+        &at,
+    ];
+    args.extend(SHORT);
+    let o = soilcut(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("every run failed; the first: soil.friction.initial"),
+        "{err}"
+    );
+    let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    assert_eq!(csv.lines().filter(|l| l.contains(",failed,")).count(), 2);
+    // One run that works is a sweep that works.
+    args[3] = "soil.friction.initial=20,55";
+    args.push("--force");
+    ok(&soilcut(&args));
+}
+
+#[test]
 fn bad_study_arguments_exit_2() {
     let tmp = tempfile::tempdir().unwrap();
     let case = refined();

@@ -42,10 +42,10 @@
 #define SOILCUT_ERR_ARGUMENT -4
 
 /**
- * The call is not allowed in the simulation's present state: a step after
- * the case's travel has been reached, the last step's record before any
- * step, a call on a handle from its own `soilcut_advance_to` callback
- * (other than `soilcut_state`, `soilcut_last_step`, `soilcut_last_error`).
+ * The call is not allowed in the simulation's present state: the last
+ * step's record before any step, a call on a handle from its own
+ * `soilcut_advance_to` callback (other than `soilcut_state`,
+ * `soilcut_last_step`, `soilcut_last_error`).
  */
 #define SOILCUT_ERR_STATE -5
 
@@ -62,6 +62,13 @@
  * code.
  */
 #define SOILCUT_ERR_PANIC -7
+
+/**
+ * A step after the case's travel has been reached (`run.travel`; the
+ * caller's mistake, the model's step error `TravelReached`): nothing is
+ * changed. `soilcut_advance_to` goes beyond the travel.
+ */
+#define SOILCUT_ERR_TRAVEL -8
 
 /**
  * A running simulation of one case. Opaque: created by
@@ -316,7 +323,7 @@ int soilcut_warnings(const struct SoilcutSimulation *sim, char *buf, size_t len,
  * `soilcut_last_step`).
  *
  * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `record`
- * misaligned), `SOILCUT_ERR_STATE` (the case's travel has been reached),
+ * misaligned), `SOILCUT_ERR_TRAVEL` (the case's travel has been reached),
  * `SOILCUT_ERR_STEP` (no admissible mechanism; the simulation is
  * unchanged) or `SOILCUT_ERR_PANIC`.
  *

@@ -1,6 +1,7 @@
 //! Status codes, the last error's message, and the guard every entry point
 //! runs in: a panic is caught here and never unwinds into the caller.
 
+use soilcut_model::StepError;
 use std::any::Any;
 use std::cell::RefCell;
 use std::ffi::c_char;
@@ -21,10 +22,10 @@ pub const SOILCUT_ERR_LENGTH: c_int = -3;
 /// A numeric argument out of its range: NaN or infinite, or a position
 /// behind the blade.
 pub const SOILCUT_ERR_ARGUMENT: c_int = -4;
-/// The call is not allowed in the simulation's present state: a step after
-/// the case's travel has been reached, the last step's record before any
-/// step, a call on a handle from its own `soilcut_advance_to` callback
-/// (other than `soilcut_state`, `soilcut_last_step`, `soilcut_last_error`).
+/// The call is not allowed in the simulation's present state: the last
+/// step's record before any step, a call on a handle from its own
+/// `soilcut_advance_to` callback (other than `soilcut_state`,
+/// `soilcut_last_step`, `soilcut_last_error`).
 pub const SOILCUT_ERR_STATE: c_int = -5;
 /// The increment has no admissible mechanism (the model's step error; the
 /// message says why). The simulation is unchanged.
@@ -34,6 +35,20 @@ pub const SOILCUT_ERR_STEP: c_int = -6;
 /// later call on it but soilcut_last_error and soilcut_free returns this
 /// code.
 pub const SOILCUT_ERR_PANIC: c_int = -7;
+/// A step after the case's travel has been reached (`run.travel`; the
+/// caller's mistake, the model's step error `TravelReached`): nothing is
+/// changed. `soilcut_advance_to` goes beyond the travel.
+pub const SOILCUT_ERR_TRAVEL: c_int = -8;
+
+/// The model's step error as a status: a step past the travel is the
+/// caller's, any other the soil's (no admissible mechanism).
+pub(crate) fn step_failure(e: &StepError) -> Failure {
+    let code = match e {
+        StepError::TravelReached { .. } => SOILCUT_ERR_TRAVEL,
+        _ => SOILCUT_ERR_STEP,
+    };
+    Failure::new(code, e.to_string())
+}
 
 /// A failed call: its status code and message.
 #[derive(Clone, Debug, PartialEq)]

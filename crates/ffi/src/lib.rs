@@ -25,11 +25,11 @@ mod record;
 
 pub use error::{
     SOILCUT_ERR_ARGUMENT, SOILCUT_ERR_INPUT, SOILCUT_ERR_LENGTH, SOILCUT_ERR_NULL,
-    SOILCUT_ERR_PANIC, SOILCUT_ERR_STATE, SOILCUT_ERR_STEP, SOILCUT_OK,
+    SOILCUT_ERR_PANIC, SOILCUT_ERR_STATE, SOILCUT_ERR_STEP, SOILCUT_ERR_TRAVEL, SOILCUT_OK,
 };
 pub use record::{SoilcutState, SoilcutStep};
 
-use error::{catch, copy_message, fail, guard, thread_last_error, Failure};
+use error::{catch, copy_message, fail, guard, step_failure, thread_last_error, Failure};
 use soilcut_io::{
     case_from_note, parse_case, read_case, InputError, LoadedCase, Override, HISTORY_HEADER,
 };
@@ -486,7 +486,7 @@ pub unsafe extern "C" fn soilcut_warnings(
 /// `soilcut_last_step`).
 ///
 /// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `record`
-/// misaligned), `SOILCUT_ERR_STATE` (the case's travel has been reached),
+/// misaligned), `SOILCUT_ERR_TRAVEL` (the case's travel has been reached),
 /// `SOILCUT_ERR_STEP` (no admissible mechanism; the simulation is
 /// unchanged) or `SOILCUT_ERR_PANIC`.
 ///
@@ -503,19 +503,7 @@ pub unsafe extern "C" fn soilcut_step(
             if !record.is_null() {
                 writable(record, "record")?;
             }
-            if state.sim.is_done() {
-                return Err(Failure::new(
-                    SOILCUT_ERR_STATE,
-                    format!(
-                        "the case's travel has been reached ({} increments)",
-                        state.sim.steps_done()
-                    ),
-                ));
-            }
-            let r = state
-                .sim
-                .step()
-                .map_err(|e| Failure::new(SOILCUT_ERR_STEP, e.to_string()))?;
+            let r = state.sim.step().map_err(|e| step_failure(&e))?;
             state.last = Some(r);
             if !record.is_null() {
                 put(record, SoilcutStep::new(&r, state.sim.case().blade.depth));
@@ -780,9 +768,7 @@ fn advance(
     *loaded = loaded.take().map(|l| l.steered(sim.case()));
     match result {
         Ok(_) => Ok(()),
-        Err(AdvanceError::Step { error, .. }) => {
-            Err(Failure::new(SOILCUT_ERR_STEP, error.to_string()))
-        }
+        Err(AdvanceError::Step { error, .. }) => Err(step_failure(&error)),
         Err(e) => Err(Failure::new(SOILCUT_ERR_ARGUMENT, e.to_string())),
     }
 }

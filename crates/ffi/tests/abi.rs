@@ -380,10 +380,15 @@ fn out_of_order_calls_are_state_errors() {
     step(sim);
     let second = step(sim);
     assert_eq!(state(sim).done, 1);
-    assert_eq!(unsafe { soilcut_step(sim, &mut record) }, SOILCUT_ERR_STATE);
+    // The model's rule (`StepError::TravelReached`), its own status.
     assert_eq!(
-        last_error(sim),
-        "the case's travel has been reached (2 increments)"
+        unsafe { soilcut_step(sim, &mut record) },
+        SOILCUT_ERR_TRAVEL
+    );
+    assert!(
+        last_error(sim).starts_with("the case's travel has been reached (2 increments)"),
+        "{}",
+        last_error(sim)
     );
     assert_eq!(record, SoilcutStep::default(), "nothing written");
     // The thread's message is the same; the state is unchanged.
@@ -701,7 +706,7 @@ fn one_handle_on_two_threads_is_serialised() {
                         let mut record = SoilcutStep::default();
                         match unsafe { soilcut_step(sim.0, &mut record) } {
                             SOILCUT_OK => mine.push(record.step),
-                            SOILCUT_ERR_STATE => return mine,
+                            SOILCUT_ERR_TRAVEL => return mine,
                             code => panic!("{code}: {}", last_error(sim.0)),
                         }
                         let _ = state(sim.0);

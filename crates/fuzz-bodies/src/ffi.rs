@@ -36,7 +36,7 @@ pub const FFI_CALLS: usize = 48;
 const SLOTS: usize = 2;
 
 /// Every status an entry point may return.
-const CODES: [c_int; 8] = [
+const CODES: [c_int; 9] = [
     SOILCUT_OK,
     SOILCUT_ERR_INPUT,
     SOILCUT_ERR_NULL,
@@ -45,6 +45,7 @@ const CODES: [c_int; 8] = [
     SOILCUT_ERR_STATE,
     SOILCUT_ERR_STEP,
     SOILCUT_ERR_PANIC,
+    SOILCUT_ERR_TRAVEL,
 ];
 
 /// The numbers a number argument is drawn from (or 8 raw bytes): the
@@ -390,7 +391,7 @@ impl Calls<'_> {
         let allowed = if sim.is_null() || record.how == Pointer::Misaligned {
             SOILCUT_ERR_NULL
         } else if Self::probe(sim).done != 0 {
-            SOILCUT_ERR_STATE
+            SOILCUT_ERR_TRAVEL
         } else if self.slots[i].as_ref().is_some_and(|s| s.steppable) && self.steps_left > 0 {
             SOILCUT_OK
         } else {

@@ -322,6 +322,34 @@ fn syntax(text: &str, e: &toml::de::Error) -> InputError {
     }
 }
 
+/// The error of a dotted `key` that no case file can hold, whatever its
+/// value: a key the schema does not know (naming the nearest it does), or
+/// one below a key that is not a table. `None` for a key the case may
+/// hold; its value is checked when a case is read. A study asks before its
+/// runs, which would each fail alike.
+pub fn unknown_key(
+    mut table: toml::Table,
+    overrides: &[Override],
+    key: &str,
+    value: &toml::Value,
+) -> Option<InputError> {
+    let probe = match Override::new(key, value.clone()) {
+        Ok(probe) => probe,
+        Err(e) => return Some(e),
+    };
+    for o in overrides.iter().chain([&probe]) {
+        if let Err(e) = o.apply(&mut table) {
+            return Some(e);
+        }
+    }
+    match serde_path_to_error::deserialize::<_, CaseFile>(table) {
+        Err(e) if quoted_after(e.inner().message(), "unknown field `").is_some() => {
+            Some(schema_error(&e))
+        }
+        _ => None,
+    }
+}
+
 /// Names the dotted key of a schema error, including the missing or unknown
 /// key itself (serde reports those at the enclosing table).
 fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
@@ -343,14 +371,52 @@ fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
     }
     if let Some(field) = quoted_after(message, "unknown field `") {
         let expected = message.split_once(", expected ").map_or("", |(_, e)| e);
+        let key = child(field);
+        let parent = key.rsplit_once('.').map_or("", |(parent, _)| parent);
         let hint = match expected {
             "" => String::new(),
-            e => format!(" (expected {})", e.replace("one of ", "one of: ")),
+            e => format!(
+                " (nearest: {}; expected {})",
+                nearest(parent, field, e),
+                e.replace("one of ", "one of: ")
+            ),
         };
-        return InputError::key(&child(field), format!("unknown key{hint}"));
+        return InputError::key(&key, format!("unknown key{hint}"));
     }
     let key = if path == "." { "case" } else { &path };
     InputError::key(key, message)
+}
+
+/// The keys of serde's `expected` list (`` one of `a`, `b` `` or `` `a` ``)
+/// fewest edits from the unknown `field`, dotted below `parent`: what a
+/// misspelling meant.
+fn nearest(parent: &str, field: &str, expected: &str) -> String {
+    let keys: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+    let least = keys.iter().map(|k| edits(field, k)).min().unwrap_or(0);
+    keys.iter()
+        .filter(|k| edits(field, k) == least)
+        .map(|k| match parent {
+            "" => format!("`{k}`"),
+            p => format!("`{p}.{k}`"),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The Levenshtein distance between `a` and `b`, in characters.
+fn edits(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let substituted = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substituted.min(row[j] + 1).min(diagonal + 1);
+        }
+    }
+    row[b.len()]
 }
 
 /// A key as it is written in TOML: bare if it can be, else quoted, so
@@ -714,6 +780,7 @@ mod tests {
         assert!(e.message.starts_with("unknown key"), "{e}");
         let e = key_error(ORIGINAL, &["soil.friction.pk=3"]);
         assert_eq!(e.key, "soil.friction.pk");
+        assert!(e.message.contains("(nearest: `soil.friction.peak`;"), "{e}");
         let e = key_error(ORIGINAL, &["colour=1"]);
         assert_eq!(e.key, "colour");
         let e = key_error(&ORIGINAL.replace("name = \"base\"\n", ""), &[]);
@@ -722,6 +789,28 @@ mod tests {
         assert_eq!(key_error(&format!("\"\" = 1\n{ORIGINAL}"), &[]).key, "\"\"");
         let e = key_error(&ORIGINAL.replace("[run]", "[run]\n\"a b\" = 1"), &[]);
         assert_eq!(e.key, "run.\"a b\"");
+    }
+
+    #[test]
+    fn a_key_no_value_can_set_is_told_from_a_bad_value() {
+        let table = parse_case_table(ORIGINAL).unwrap();
+        let unknown = |key: &str, value: toml::Value| {
+            unknown_key(table.clone(), &[], key, &value).map(|e| e.to_string())
+        };
+        let e = unknown("soil.frict", 30.into()).unwrap();
+        assert!(
+            e.starts_with("soil.frict: unknown key (nearest: `soil.friction`;"),
+            "{e}"
+        );
+        let e = unknown("soil.frict.peak", 30.into()).unwrap();
+        assert!(e.starts_with("soil.frict: unknown key"), "{e}");
+        assert!(unknown("run.increment.x", 1.into()).is_some());
+        // A known key with a bad value is the run's error, not the key's.
+        assert_eq!(unknown("soil.friction.peak", 95.into()), None);
+        assert_eq!(unknown("blade.depth", "deep".into()), None);
+        // The base overrides come first: a key they make a number has no children.
+        let base = ["run.travel=1".parse().unwrap()];
+        assert!(unknown_key(table.clone(), &base, "run.travel.x", &1.into()).is_some());
     }
 
     #[test]

@@ -112,7 +112,7 @@ impl std::error::Error for OutputError {}
 /// and shows what was given, where collapsing would hide it. Found by
 /// fuzzing (docs/fuzzing.md): an argument with a line break broke the
 /// message in two.
-pub(crate) fn visible(text: &str) -> String {
+pub fn visible(text: &str) -> String {
     text.chars()
         .map(|c| {
             if c.is_control() {

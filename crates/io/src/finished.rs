@@ -199,6 +199,9 @@ pub struct FinishedRun {
 /// Reads the files of the run in `dir`.
 pub fn read_finished_run(dir: &Path) -> Result<FinishedRun, RunFilesError> {
     let case_path = dir.join("case.resolved.toml");
+    if !case_path.is_file() {
+        return Err(not_a_run(dir));
+    }
     let case = read_case(&case_path, &[])
         .map_err(|e| RunFilesError::new(&case_path, e))?
         .case;
@@ -215,6 +218,25 @@ pub fn read_finished_run(dir: &Path) -> Result<FinishedRun, RunFilesError> {
         profile: Table::read(&dir.join("profile.csv"))?,
         frames,
     })
+}
+
+/// A folder without the files of a run: say what it is not and what a run
+/// folder is, rather than that one file of it is missing.
+fn not_a_run(dir: &Path) -> RunFilesError {
+    let what = if dir.is_dir() {
+        "not a run folder"
+    } else {
+        "no such folder"
+    };
+    let ensemble = if dir.join("ensemble.csv").is_file() {
+        " (an ensemble's members are its k-3 ... k+3 folders)"
+    } else {
+        ""
+    };
+    RunFilesError::new(
+        dir,
+        format!("{what}: a run folder is one `soilcut run` wrote, with case.resolved.toml, history.csv and profile.csv{ensemble}"),
+    )
 }
 
 #[cfg(test)]

@@ -36,10 +36,10 @@ mod record;
 
 pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
-    LoadedCase,
+    unknown_key, LoadedCase,
 };
 pub use columns::Columns;
-pub use error::{InputError, OutputError};
+pub use error::{visible, InputError, OutputError};
 pub use finished::{
     frames_columns, frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table,
     FRAMES_HEADER, FRAME_ROWS,

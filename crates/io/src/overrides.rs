@@ -24,7 +24,13 @@ impl FromStr for Override {
         let (key, value) = text
             .split_once('=')
             .ok_or_else(|| bad("expected key.path=value"))?;
-        Override::with_text(text, key.trim(), parse_value(value.trim()))
+        let value = value.trim();
+        if out_of_range(value) {
+            return Err(bad(&format!(
+                "{value} is out of range for a number (magnitude at most about 1.8e308)"
+            )));
+        }
+        Override::with_text(text, key.trim(), parse_value(value))
     }
 }
 
@@ -36,6 +42,16 @@ pub fn parse_value(text: &str) -> toml::Value {
         .ok()
         .and_then(|mut t| t.remove("v"))
         .unwrap_or_else(|| toml::Value::String(text.to_string()))
+}
+
+/// A number too large for a float (`1e400`): TOML refuses it, and taken
+/// as a bare string it would be reported as a string where a number is
+/// expected.
+fn out_of_range(value: &str) -> bool {
+    let number = |c: char| c.is_ascii_digit() || "+-.eE_".contains(c);
+    value.chars().all(number)
+        && value.parse::<f64>().is_ok_and(f64::is_infinite)
+        && !matches!(parse_value(value), toml::Value::Float(_))
 }
 
 impl Override {
@@ -116,6 +132,19 @@ mod tests {
     }
 
     #[test]
+    fn numbers_beyond_a_float_are_refused_as_such() {
+        let e = "run.increment=1e400".parse::<Override>().unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "--set run.increment=1e400: 1e400 is out of range for a number (magnitude at most about 1.8e308)"
+        );
+        assert!("run.increment=-1e400".parse::<Override>().is_err());
+        for fine in ["x=1e300", "x=inf", "x=1e-400", "x=e400"] {
+            assert!(fine.parse::<Override>().is_ok(), "{fine}");
+        }
+    }
+
+    #[test]
     fn malformed_overrides_are_refused() {
         assert!("run.increment".parse::<Override>().is_err());
         assert!("run..increment=1".parse::<Override>().is_err());
@@ -153,7 +182,7 @@ mod tests {
         assert!(e.to_string().starts_with("a\\tb.c.d: cannot set"), "{e}");
         assert_eq!(
             crate::parse_case("[\"x\\ny\"]\n", &[]).unwrap_err().to_string(),
-            "\"x\\ny\": unknown key (expected one of: `name`, `title`, `model`, `blade`, `soil`, `run`, `bin`, `choices`)"
+            "\"x\\ny\": unknown key (nearest: `run`, `bin`; expected one of: `name`, `title`, `model`, `blade`, `soil`, `run`, `bin`, `choices`)"
         );
     }
 }

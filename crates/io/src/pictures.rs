@@ -98,14 +98,53 @@ pub fn compare(dirs: &[PathBuf], measured: Option<&Path>, out: &Path) -> Result<
     Ok(())
 }
 
-/// Where two runs share a title, each run's legend entry becomes its folder
-/// (as given), so that runs of one case can be told apart.
+/// Where two runs share a title, each run's legend entry becomes its
+/// folder, shortened to the last components that tell it from the others
+/// (`out/original`, `/home/me/out/fine`: `original`, `fine`), so that runs
+/// of one case can be told apart without paths as long as the picture.
 fn label_by_folder(runs: &mut [RunData], dirs: &[PathBuf]) {
     let titles: Vec<String> = runs.iter().map(|r| r.title.clone()).collect();
-    for (run, dir) in runs.iter_mut().zip(dirs) {
-        if titles.iter().filter(|t| **t == run.title).count() > 1 {
-            run.title = dir.display().to_string();
+    let shared: Vec<bool> = titles
+        .iter()
+        .map(|t| titles.iter().filter(|u| *u == t).count() > 1)
+        .collect();
+    let folders: Vec<&PathBuf> = dirs
+        .iter()
+        .zip(&shared)
+        .filter(|(_, s)| **s)
+        .map(|(d, _)| d)
+        .collect();
+    for ((run, dir), shared) in runs.iter_mut().zip(dirs).zip(shared) {
+        if shared {
+            run.title = short_folder(dir, &folders);
         }
+    }
+}
+
+/// The last components of `dir`, as few as tell it from the other
+/// `folders` (all of it if none do: the same folder given twice).
+fn short_folder(dir: &Path, folders: &[&PathBuf]) -> String {
+    let tail = |d: &Path, n: usize| -> Vec<String> {
+        let parts: Vec<String> = d
+            .components()
+            .filter(|c| matches!(c, std::path::Component::Normal(_)))
+            .map(|c| c.as_os_str().to_string_lossy().into_owned())
+            .collect();
+        parts[parts.len().saturating_sub(n)..].to_vec()
+    };
+    let depth = dir.components().count().max(1);
+    let n = (1..=depth)
+        .find(|&n| {
+            let mine = tail(dir, n);
+            folders
+                .iter()
+                .filter(|f| f.as_path() != dir)
+                .all(|f| tail(f, n) != mine)
+        })
+        .unwrap_or(depth);
+    match tail(dir, n).join("/") {
+        label if label.is_empty() => dir.display().to_string(),
+        label => label,
     }
 }
 
@@ -186,6 +225,22 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
 mod tests {
     use super::*;
     use std::fs;
+
+    #[test]
+    fn folders_are_named_by_as_few_last_components_as_tell_them_apart() {
+        let labels = |dirs: &[&str]| -> Vec<String> {
+            let dirs: Vec<PathBuf> = dirs.iter().map(PathBuf::from).collect();
+            let folders: Vec<&PathBuf> = dirs.iter().collect();
+            dirs.iter().map(|d| short_folder(d, &folders)).collect()
+        };
+        assert_eq!(
+            labels(&["out/original", "/home/me/out/fine/"]),
+            ["original", "fine"]
+        );
+        assert_eq!(labels(&["/a/x/k-1", "/a/y/k-1"]), ["x/k-1", "y/k-1"]);
+        assert_eq!(labels(&["out/a", "./out/a"]), ["out/a", "out/a"]);
+        assert_eq!(labels(&["."]), ["."]);
+    }
 
     /// A finished run of `cases/paper/original.toml` (d = 20) with two
     /// increments, `history` its history.csv.

@@ -100,6 +100,12 @@ pub enum StepError {
         /// `bin.length`, the wall's distance from the blade's start.
         length: f64,
     },
+    /// A step asked for after the case's travel has been reached: the
+    /// caller's mistake, not the soil's (`advance_to` goes further).
+    TravelReached {
+        /// The increments done, all of the case's.
+        steps: usize,
+    },
 }
 
 impl fmt::Display for StepError {
@@ -112,6 +118,10 @@ impl fmt::Display for StepError {
             StepError::NoMechanismBeforeWall { step, u, length } => write!(
                 f,
                 "no admissible mechanism at increment {step} (u = {u}) emerges before the end wall at bin.length = {length}: shorten run.travel or lengthen the bin"
+            ),
+            StepError::TravelReached { steps } => write!(
+                f,
+                "the case's travel has been reached ({steps} increments): no step beyond run.travel; advance_to(x) goes further"
             ),
         }
     }
@@ -406,8 +416,12 @@ impl Simulation {
         }
     }
 
-    /// Advances the blade by one increment.
+    /// Advances the blade by one increment; after the case's travel,
+    /// `StepError::TravelReached`.
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
+        if self.is_done() {
+            return Err(StepError::TravelReached { steps: self.done });
+        }
         let u = self.blade_position();
         let face = self.laws.face.for_climb(self.climb());
         let choice = self

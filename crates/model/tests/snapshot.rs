@@ -6,7 +6,7 @@
 mod common;
 
 use soilcut_model::simulation::snapshot::{CHECKSUM_BYTES, CRATE_VERSION, FORMAT_VERSION, MAGIC};
-use soilcut_model::{AdvanceError, Case, Simulation, SnapshotError};
+use soilcut_model::{AdvanceError, Case, Simulation, SnapshotError, StepError};
 
 /// The original model's case, 3 d at d/50, after `steps` increments.
 fn stepped(steps: usize) -> Simulation {
@@ -218,6 +218,25 @@ fn advance_to_lands_on_the_first_whole_increment_at_or_beyond_x() {
         assert_eq!(records, expected, "x = {x}");
     }
     assert_eq!(rest(sim), rest(stepped));
+}
+
+#[test]
+fn a_step_past_the_travel_is_the_models_error_and_changes_nothing() {
+    let mut c = case();
+    c.run.travel = 3.0 * c.run.increment;
+    let mut sim = Simulation::new(&c).unwrap();
+    sim.run_to_end(|_| {}).unwrap();
+    let before = sim.snapshot();
+    let e = sim.step().unwrap_err();
+    assert_eq!(e, StepError::TravelReached { steps: 3 });
+    assert!(e.to_string().contains("travel has been reached"), "{e}");
+    assert_eq!(sim.snapshot(), before);
+    // advance_to goes beyond the travel, and a step after it is refused again.
+    sim.advance_to(4.0 * c.run.increment, None).unwrap();
+    assert_eq!(
+        sim.step().unwrap_err(),
+        StepError::TravelReached { steps: 4 }
+    );
 }
 
 #[test]

@@ -60,8 +60,9 @@ pub fn draw_beta(run: &RunData, path: &Path) -> Result<(), PlotError> {
 }
 
 /// Overlays the force (top panel) and β* (bottom panel) curves of `runs`
-/// against u/d, each run in its own colour with its title in the legend
-/// (paper Fig. 7). A `measured` curve (u, force per unit width, in the
+/// against u/d, each run in its own colour and width, the first the widest,
+/// with its title in the legend (paper Fig. 7): runs that coincide (one
+/// case at two increments) stay visible under one another. A `measured` curve (u, force per unit width, in the
 /// first run's length unit) is drawn as black dots, normalised by the first
 /// run's d and γ0. PNG or SVG by `path`'s extension, 1200 px wide.
 pub fn draw_compare(
@@ -90,12 +91,12 @@ fn value_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (0.0, top(values, 1.0) * 1.1)
 }
 
-/// Builds a chart of the curves' layout on `area`.
-fn curve_chart<'a, DB: DrawingBackend>(
+/// Builds a chart of the curves' layout on `area`, against u/d.
+pub(crate) fn curve_chart<'a, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     x: (f64, f64),
     y: (f64, f64),
-    q: Quantity,
+    y_desc: &str,
     sizes: Sizes,
 ) -> Result<style::Chart<'a, DB>, String> {
     let mut chart = ChartBuilder::on(area)
@@ -105,7 +106,7 @@ fn curve_chart<'a, DB: DrawingBackend>(
         .y_label_area_size(sizes.desc * 4)
         .build_cartesian_2d(x.0..x.1, y.0..y.1)
         .map_err(text)?;
-    axes(&mut chart, U_DESC, q.desc(), sizes)?;
+    axes(&mut chart, U_DESC, y_desc, sizes)?;
     Ok(chart)
 }
 
@@ -123,11 +124,11 @@ fn draw_quantity<'a, DB: DrawingBackend + 'a>(
     chart: &mut style::Chart<'a, DB>,
     q: Quantity,
     points: &[(f64, f64)],
-    color: RGBColor,
+    (color, width): (RGBColor, u32),
 ) -> DrawResult {
     match q {
-        Quantity::Force => curve(chart, points, color, PAPER.line),
-        Quantity::Beta => dots(chart, points, color, 2),
+        Quantity::Force => curve(chart, points, color, width),
+        Quantity::Beta => dots(chart, points, color, width / 2 + 1),
     }
 }
 
@@ -145,8 +146,9 @@ impl Picture for Single<'_> {
         root.fill(&WHITE).map_err(text)?;
         let area = titled(root, &self.run.title, PAPER.title)?;
         let y = value_range(self.run.history.iter().map(|h| self.q.of(h)));
-        let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q, PAPER)?;
-        draw_quantity(&mut chart, self.q, &points(self.run, self.q), style::CURVE)
+        let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q.desc(), PAPER)?;
+        let look = (style::CURVE, PAPER.line);
+        draw_quantity(&mut chart, self.q, &points(self.run, self.q), look)
     }
 }
 
@@ -164,12 +166,22 @@ impl Compare<'_> {
             .runs
             .iter()
             .enumerate()
-            .map(|(i, r)| (r.title.clone(), Mark::Line(series_color(i))))
+            .map(|(i, r)| {
+                let (color, width) = self.look(i);
+                (r.title.clone(), Mark::Stroke(color, width))
+            })
             .collect();
         if let Some(m) = self.measured {
             rows.push((m.label.clone(), Mark::Dot(BLACK)));
         }
         Legend::new(rows, WIDTH - 80, PAPER)
+    }
+
+    /// Run `i`'s colour and line width: 3 px wider than the next run's,
+    /// the last at the width of a single curve.
+    fn look(&self, i: usize) -> (RGBColor, u32) {
+        let later = (self.runs.len() - 1 - i) as u32;
+        (series_color(i), PAPER.line + 3 * later.min(4))
     }
 
     /// The measured points as (u/d, P/(γ0 d²)) of the first run.
@@ -218,9 +230,9 @@ impl Picture for Compare<'_> {
                 values.extend(measured.iter().map(|p| p.1));
             }
             let y = value_range(values.into_iter());
-            let mut chart = curve_chart(&area, (u0, u1), y, q, PAPER)?;
+            let mut chart = curve_chart(&area, (u0, u1), y, q.desc(), PAPER)?;
             for (i, run) in self.runs.iter().enumerate() {
-                draw_quantity(&mut chart, q, &points(run, q), series_color(i))?;
+                draw_quantity(&mut chart, q, &points(run, q), self.look(i))?;
             }
             if q == Quantity::Force {
                 chart

@@ -27,8 +27,11 @@ use std::path::Path;
 /// the right). The subset is every increment whose emergence point
 /// jumped plus 24 evenly spaced ones. Bottom panel, sharing the x axis:
 /// the shear ut accumulated by the soil along the final surface, as ut/d.
-/// PNG or SVG by `path`'s extension, 1200 px wide, as tall as the ground
-/// needs.
+/// Where the whole ground, to equal scales, is a strip (a long run: bands
+/// emerging 20-30 d ahead squash a pile 2 d high into a few pixels), a
+/// third panel shows the ground near the blade at the end, to equal scales
+/// of its own. PNG or SVG by `path`'s extension, 1200 px wide, as tall as
+/// the ground needs.
 pub fn draw_deformation(run: &RunData, path: &Path) -> Result<(), PlotError> {
     save(&Deformation::new(run), path)
 }
@@ -47,6 +50,11 @@ const SHEAR: u32 = 220;
 const EVEN_BANDS: usize = 24;
 /// At most this many slip lines of jumps (evenly spaced among them).
 const MAX_JUMPS: usize = 40;
+/// A ground plotting area lower than this, px, gets the panel near the
+/// blade.
+const STRIP: f64 = 250.0;
+/// Largest height of that panel's plotting area.
+const MAX_NEAR: f64 = 420.0;
 
 pub(crate) const X_DESC: &str = "x/d (–)";
 pub(crate) const Y_DESC: &str = "y/d (–)";
@@ -55,6 +63,8 @@ struct Deformation<'a> {
     run: &'a RunData,
     extent: Extent,
     panel: GroundPanel,
+    /// The ground near the blade, where the whole is a strip.
+    near: Option<GroundPanel>,
     bands: Vec<&'a Increment>,
 }
 
@@ -62,16 +72,49 @@ impl<'a> Deformation<'a> {
     fn new(run: &'a RunData) -> Self {
         let extent = Extent::of(run, [run.profile.as_slice()]);
         let sizes = (MARGIN, X_LABELS, Y_LABELS);
+        let panel = GroundPanel::new(extent, WIDTH - BAR, MAX_GROUND, sizes);
+        let near = (panel.scale * extent.height() < STRIP)
+            .then(|| GroundPanel::new(near_blade(run, extent), WIDTH - BAR, MAX_NEAR, sizes));
         Deformation {
             run,
             extent,
-            panel: GroundPanel::new(extent, WIDTH - BAR, MAX_GROUND, sizes),
+            panel,
+            near,
             bands: chosen_bands(&run.history),
         }
     }
 
     fn ground_height(&self) -> u32 {
         self.panel.height()
+    }
+
+    fn near_height(&self) -> u32 {
+        self.near.map_or(0, |p| p.height() + NEAR_TITLE)
+    }
+}
+
+/// Height of the line naming the panel near the blade.
+const NEAR_TITLE: u32 = 30;
+
+/// The ground near the blade at the end of the run: from 1 d behind the
+/// face to 1 d beyond the pile's toe (the first node ahead of the face
+/// back within 0.05 d of the original ground), at least 3 d ahead, within
+/// the whole's extent.
+fn near_blade(run: &RunData, whole: Extent) -> Extent {
+    let d = run.depth;
+    let face = run.final_position() / d;
+    let toe = run
+        .profile
+        .iter()
+        .map(|p| (p.x / d, p.y / d))
+        .find(|&(x, y)| x > face && y.abs() < 0.05)
+        .map_or(whole.x.1, |(x, _)| x);
+    Extent {
+        x: (
+            (face - 1.0).max(whole.x.0),
+            (toe + 1.0).max(face + 3.0).min(whole.x.1),
+        ),
+        y: whole.y,
     }
 }
 
@@ -111,10 +154,8 @@ impl Picture for Deformation<'_> {
     fn size(&self) -> (u32, u32) {
         let shear = 2 * MARGIN + SHEAR + X_LABELS;
         let legend = self.legend().height();
-        (
-            WIDTH,
-            title_height(PAPER.title) + legend + self.ground_height() + shear,
-        )
+        let ground = self.ground_height() + self.near_height();
+        (WIDTH, title_height(PAPER.title) + legend + ground + shear)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
@@ -126,29 +167,25 @@ impl Picture for Deformation<'_> {
         let (legend_area, area) = area.split_vertically(legend.height());
         legend.draw(&legend_area)?;
         let (upper, lower) = area.split_vertically(self.ground_height());
+        let (lower, near_area) = lower.split_vertically(2 * MARGIN + SHEAR + X_LABELS);
         let (ground_area, bar_area) = upper.split_horizontally(WIDTH - BAR);
         let (shear_area, _) = lower.split_horizontally(WIDTH - BAR);
         let u_max = round_up(top(run.history.iter().map(|h| h.u / d), 1.0));
-
-        let mut chart = self.panel.chart(&ground_area, self.extent.y)?;
-        axes(&mut chart, X_DESC, Y_DESC, PAPER)?;
-        let u_final = run.final_position();
-        draw_ground(&mut chart, run, &run.profile, u_final, self.extent)?;
-        for h in &self.bands {
-            let color = viridis(h.u / d / u_max);
-            draw_band(
-                &mut chart,
-                h,
-                self.extent.x.1,
-                d,
-                run.band_width,
-                color,
-                PAPER.line - 1,
-            )?;
-        }
-        draw_outline(&mut chart, run, &run.profile, u_final, self.extent, PAPER)?;
-        draw_ridges(&mut chart, run, self.extent)?;
+        self.draw_ground_panel(&ground_area, &self.panel, u_max)?;
         colour_bar(root, &bar_area, u_max, PAPER)?;
+        if let Some(near) = &self.near {
+            let (name, near_area) = near_area.split_vertically(NEAR_TITLE);
+            let style = font(PAPER.desc).pos(Pos::new(HPos::Left, VPos::Center));
+            let words = "near the blade at the end of the run (equal scales)";
+            name.draw(&Text::new(
+                words,
+                (Y_LABELS as i32, NEAR_TITLE as i32 / 2),
+                style,
+            ))
+            .map_err(text)?;
+            let (near_area, _) = near_area.split_horizontally(WIDTH - BAR);
+            self.draw_ground_panel(&near_area, near, u_max)?;
+        }
 
         let shear: Vec<(f64, f64)> = run
             .profile
@@ -169,6 +206,29 @@ impl Picture for Deformation<'_> {
 }
 
 impl Deformation<'_> {
+    /// The ground, the bands and the blade in `panel`'s extent, bands
+    /// coloured by u/d up to `u_max`.
+    fn draw_ground_panel<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        panel: &GroundPanel,
+        u_max: f64,
+    ) -> DrawResult {
+        let (run, ext) = (self.run, panel.extent);
+        let d = run.depth;
+        let mut chart = panel.chart(area, ext.y)?;
+        axes(&mut chart, X_DESC, Y_DESC, PAPER)?;
+        let u_final = run.final_position();
+        draw_ground(&mut chart, run, &run.profile, u_final, ext)?;
+        for h in &self.bands {
+            let color = viridis(h.u / d / u_max);
+            let width = PAPER.line - 1;
+            draw_band(&mut chart, h, ext.x.1, d, run.band_width, color, width)?;
+        }
+        draw_outline(&mut chart, run, &run.profile, u_final, ext, PAPER)?;
+        draw_ridges(&mut chart, run, ext)
+    }
+
     /// The legend above both panels.
     fn legend(&self) -> Legend {
         let what = if self.run.band_width > 0.0 {

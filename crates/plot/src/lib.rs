@@ -33,6 +33,7 @@ mod landscape;
 mod panels;
 mod render;
 mod style;
+mod typeset;
 
 pub use animation::draw_animation;
 pub use curves::{draw_beta, draw_compare, draw_force};

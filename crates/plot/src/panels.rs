@@ -100,13 +100,17 @@ impl Picture for Panels<'_> {
         )
     }
 
+    /// Row by row; a last row with fewer panels shares the whole width
+    /// among them, so that no panel is left empty.
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
         root.fill(&WHITE).map_err(text)?;
         let (top, body) = root.split_vertically(TITLE_HEIGHT);
         top.titled(self.title, (FAMILY, 26)).map_err(text)?;
-        let areas = body.split_evenly((self.rows, self.columns));
-        for (panel, area) in self.panels.iter().zip(&areas) {
-            draw_panel(panel, area)?;
+        let rows = body.split_evenly((self.rows, 1));
+        for (panels, row) in self.panels.chunks(self.columns).zip(&rows) {
+            for (panel, area) in panels.iter().zip(&row.split_evenly((1, panels.len()))) {
+                draw_panel(panel, area)?;
+            }
         }
         Ok(())
     }
@@ -137,6 +141,12 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     let all = || panel.series.iter().flat_map(|s| s.points.iter());
     let (x0, x1) = range(all().map(|p| p.0));
     let (y0, y1) = range(all().map(|p| p.1));
+    // Counts (levels, runs) across: a tick between them means nothing.
+    let whole = all().all(|p| p.0.fract() == 0.0) && x1 - x0 <= 20.0;
+    let x_tick = |x: f64| match whole && x.fract().abs() > 1e-9 {
+        true => String::new(),
+        false => span_tick(x, x1 - x0),
+    };
     let mut chart = ChartBuilder::on(area)
         .margin(12)
         .x_label_area_size(48)
@@ -152,7 +162,7 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
         .light_line_style(RGBColor(235, 235, 235))
         .x_labels(6)
         .y_labels(6)
-        .x_label_formatter(&|x| span_tick(*x, x1 - x0))
+        .x_label_formatter(&|x| x_tick(*x))
         .y_label_formatter(&|y| span_tick(*y, y1 - y0))
         .draw()
         .map_err(text)?;
@@ -188,7 +198,8 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
 }
 
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
-/// apart, or scientific notation for very small or large spans.
+/// apart and no trailing zeros (1, 2.5, not 1.00, 2.50), or scientific
+/// notation for very small or large spans.
 fn span_tick(value: f64, span: f64) -> String {
     if value.abs() < 1e-9 * span {
         "0".to_string()
@@ -196,7 +207,14 @@ fn span_tick(value: f64, span: f64) -> String {
         format!("{value:.2e}")
     } else {
         let decimals = (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize;
-        format!("{value:.decimals$}")
+        let fixed = format!("{value:.decimals$}");
+        match fixed.contains('.') {
+            true => fixed
+                .trim_end_matches('0')
+                .trim_end_matches('.')
+                .to_string(),
+            false => fixed,
+        }
     }
 }
 
@@ -207,10 +225,41 @@ mod tests {
     #[test]
     fn ticks_fit_the_span() {
         assert_eq!(span_tick(32.5, 10.0), "32.5");
-        assert_eq!(span_tick(1.25, 0.5), "1.250");
+        assert_eq!(span_tick(1.25, 0.5), "1.25");
+        assert_eq!(span_tick(2.0, 4.0), "2");
+        assert_eq!(span_tick(0.06, 0.07), "0.06");
         assert_eq!(span_tick(2e-15, 4e-15), "2.00e-15");
         assert_eq!(span_tick(1500.0, 2000.0), "1500");
         assert_eq!(span_tick(-1.26e-29, 1e-13), "0");
+    }
+
+    /// Three panels two to a row: the third spans the last row, whose right
+    /// half is drawn on, not left white.
+    #[test]
+    fn no_panel_is_left_empty() {
+        let panel = |label: &str| Panel {
+            x_label: "level".into(),
+            y_label: "y".into(),
+            series: vec![Series::line(label, vec![(1.0, 1.0), (2.0, 3.0)])],
+        };
+        let panels = [panel("a"), panel("b"), panel("c")];
+        let picture = Panels {
+            title: "t",
+            panels: &panels,
+            columns: 2,
+            rows: 2,
+        };
+        let (w, h) = picture.size();
+        let pixels = crate::render::rgb(&picture).unwrap();
+        let (w, h) = (w as usize, h as usize);
+        let inked = (h * 3 / 4..h)
+            .flat_map(|y| (w * 3 / 4..w).map(move |x| (y * w + x) * 3))
+            .filter(|&i| pixels[i..i + 3] != [255, 255, 255])
+            .count();
+        assert!(
+            inked > 1000,
+            "{inked} pixels drawn in the last row's right half"
+        );
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! Pictures to files: PNG (150 dpi), SVG, and the errors of both.
 
 use crate::style;
+use crate::typeset::Typeset;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -102,7 +103,7 @@ pub(crate) fn rgb(picture: &impl Picture) -> Result<Vec<u8>, String> {
     let (w, h) = picture.size();
     let mut buffer = vec![255u8; (w * h * 3) as usize];
     {
-        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        let root = Typeset(BitMapBackend::with_buffer(&mut buffer, (w, h))).into_drawing_area();
         picture
             .draw(&root)
             .and_then(|()| root.present().map_err(text))?;

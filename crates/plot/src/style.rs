@@ -12,7 +12,7 @@ use std::sync::Once;
 /// registered under it, and SVG viewers substitute their own sans-serif.
 pub const FAMILY: &str = "sans-serif";
 
-static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
+pub(crate) static FONT: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
 
 /// Registers the bundled font (once per process).
 pub fn register_font() {
@@ -433,6 +433,8 @@ pub fn round_up(v: f64) -> f64 {
 #[derive(Clone, Copy, Debug)]
 pub enum Mark {
     Line(RGBColor),
+    /// A line of this width, px.
+    Stroke(RGBColor, u32),
     Dashed(RGBColor),
     Block(RGBColor),
     Dot(RGBColor),
@@ -490,6 +492,10 @@ impl Legend {
                     Mark::Line(c) => area.draw(&PathElement::new(
                         vec![(x, y), (x + m, y)],
                         c.stroke_width(line + 1),
+                    )),
+                    Mark::Stroke(c, width) => area.draw(&PathElement::new(
+                        vec![(x, y), (x + m, y)],
+                        c.stroke_width(width),
                     )),
                     Mark::Dashed(c) => (0..4).try_for_each(|k| {
                         let x0 = x + k * m / 4;

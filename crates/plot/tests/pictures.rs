@@ -2,8 +2,8 @@
 //! deterministic, and no system font machinery is linked.
 
 use soilcut_plot::{
-    draw_animation, draw_compare, draw_run, Format, Frame, Increment, Measured, RunData,
-    SurfacePoint,
+    draw_animation, draw_compare, draw_deformation, draw_run, Format, Frame, Increment, Measured,
+    RunData, SurfacePoint,
 };
 use std::fs;
 use std::path::Path;
@@ -122,6 +122,53 @@ fn animation_and_comparison() {
     assert!(e.message.contains(".png or .svg"), "{e}");
     assert!(draw_compare(&[], None, &tmp.path().join("d.png")).is_err());
     assert_eq!(Format::of(Path::new("x.SVG")).unwrap(), Format::Svg);
+}
+
+/// The pixels of the PNG at `path` that are exactly `rgb`.
+fn pixels_of(path: &Path, rgb: [u8; 3]) -> usize {
+    let decoder = png::Decoder::new(std::io::BufReader::new(fs::File::open(path).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    buf[..info.buffer_size()]
+        .chunks(3)
+        .filter(|p| *p == rgb)
+        .count()
+}
+
+/// One run compared with itself: the first curve, drawn wider, shows on
+/// both sides of the second along the whole run (a curve of one width
+/// hid it entirely; the legend's mark alone is 200 pixels).
+#[test]
+fn compared_runs_that_coincide_stay_visible() {
+    let tmp = tempfile::tempdir().unwrap();
+    let path = tmp.path().join("c.png");
+    draw_compare(&[run(0.0), run(0.0)], None, &path).unwrap();
+    let first = pixels_of(&path, [31, 119, 180]);
+    assert!(first > 3000, "{first} pixels of the first run's colour");
+}
+
+/// A long run's ground, to equal scales over 30 d, is a strip: the
+/// picture adds the ground near the blade to scales of its own. A short
+/// run's is not, and has no such panel.
+#[test]
+fn a_long_run_shows_the_ground_near_the_blade_too() {
+    let tmp = tempfile::tempdir().unwrap();
+    let mut long = run(0.0);
+    // A band emerged 30 d ahead: the ground there moved by 0.01 d.
+    let far = long.profile.last().unwrap().x + 1.0;
+    long.profile.extend((0..1500).map(|k| SurfacePoint {
+        x: far + k as f64 * 0.2,
+        y: if k == 1499 { 0.1 } else { 0.0 },
+        accumulated_shear: 0.0,
+    }));
+    let near = "near the blade at the end of the run";
+    for (data, expected) in [(run(0.0), false), (long, true)] {
+        let path = tmp.path().join("d.svg");
+        draw_deformation(&data, &path).unwrap();
+        let svg = fs::read_to_string(&path).unwrap();
+        assert_eq!(svg.contains(near), expected);
+    }
 }
 
 /// `run` with the blade deepening from d/2 to d over its first d of travel.

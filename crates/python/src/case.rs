@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use soilcut_io::{load_case_table, parse_case_table, LoadedCase, Override};
 use soilcut_study::BaseCase;
+use std::path::Path;
 
 /// A validated case: the keys given (as a table and as text) and the case
 /// they make, every default filled in.
@@ -54,28 +55,55 @@ impl Case {
         BaseCase::from_table(self.table.clone(), vec![]).map_err(|e| case_error(py, &e))
     }
 
-    /// The handle of a `soilcut.Case`, of this class itself, or of a case
-    /// file's text.
+    /// The handle of a `soilcut.Case`, of this class itself, of a case
+    /// file's path (`os.PathLike`, or a string that [`names_a_file`]) or of
+    /// its text.
     pub fn extract<'py>(case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, Case>> {
+        let py = case.py();
         if let Ok(native) = case.cast::<Case>() {
             return Ok(native.clone());
         }
-        if let Ok(text) = case.cast::<PyString>() {
-            let native = Case::from_toml(case.py(), &text.to_cow()?)?;
-            return Bound::new(case.py(), native);
+        let path = match case.cast::<PyString>() {
+            Ok(text) if !names_a_file(&text.to_cow()?) => {
+                return Bound::new(py, Case::from_toml(py, &text.to_cow()?)?);
+            }
+            Ok(_) => true,
+            Err(_) => case.hasattr("__fspath__")?,
+        };
+        if path {
+            // Read as `Case.from_file` reads it: one rule for files.
+            let read = py
+                .import("soilcut")?
+                .getattr("Case")?
+                .call_method1("from_file", (case,))?;
+            return Ok(read.getattr("_native")?.cast_into::<Case>()?);
         }
         match case.getattr("_native") {
             Ok(native) => Ok(native.cast_into::<Case>()?),
             Err(_) => Err(pyo3::exceptions::PyTypeError::new_err(format!(
-                "expected a soilcut.Case (or a case file's text), not {}",
+                "expected a soilcut.Case, a case file's path or its text, not {}",
                 case.get_type().name()?
             ))),
         }
     }
 }
 
+/// Whether a string given where a case is expected is a case file's path,
+/// not its text: one line ending in `.toml` or naming a file (a case's
+/// text has a `key = value` line at least, and no file is named so).
+fn names_a_file(text: &str) -> bool {
+    !text.contains('\n') && (text.trim_end().ends_with(".toml") || Path::new(text).is_file())
+}
+
 #[pymethods]
 impl Case {
+    /// The case of a `soilcut.Case`, of a case file's path or of its text
+    /// (what every function taking a case accepts).
+    #[staticmethod]
+    fn of<'py>(case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, Case>> {
+        Case::extract(case)
+    }
+
     /// Reads and validates a case file's text.
     #[staticmethod]
     fn from_toml(py: Python<'_>, text: &str) -> PyResult<Case> {

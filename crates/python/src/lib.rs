@@ -24,6 +24,7 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::analytic, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_points, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_check, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_header, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;

@@ -91,12 +91,6 @@ impl Simulation {
 
     /// Advances the blade by one increment and returns its record.
     fn step(&mut self, py: Python<'_>) -> PyResult<Step> {
-        if self.sim.is_done() {
-            return Err(PyRuntimeError::new_err(format!(
-                "the case's travel has been reached ({} increments)",
-                self.sim.steps_done()
-            )));
-        }
         let sim = &mut self.sim;
         detached(py, || sim.step()).map(Step)
     }

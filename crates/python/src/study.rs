@@ -11,12 +11,13 @@ use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::Simulation;
 use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
 use soilcut_study::sample::{Sample, Vary};
-use soilcut_study::sweep::{Sweep, SweepResult};
+use soilcut_study::sweep::{check_keys, Sweep, SweepResult};
 use soilcut_study::{no_progress, StudyError};
 
 pub fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
     match e {
         StudyError::Case(message) => case_message(py, message),
+        StudyError::Key(e) => case_error(py, &e),
         e => PyValueError::new_err(e.to_string()),
     }
 }
@@ -126,6 +127,29 @@ pub fn sweep_csv(
     Ok((result.csv(), result.timing_csv()))
 }
 
+/// One run's values of `keys` as TOML values.
+fn toml_values(keys: &[String], values: &[Bound<'_, PyAny>]) -> PyResult<Vec<toml::Value>> {
+    keys.iter()
+        .zip(values)
+        .map(|(k, v)| to_toml(k, v))
+        .collect()
+}
+
+/// Refuses `keys` that no run of `case` could set (unknown to the case
+/// file), with `values` (one run's) as the probe: a sweep given its runs
+/// (`samples`) checks them before the first, as a `vary` sweep does.
+#[pyfunction]
+pub fn sweep_check(
+    py: Python<'_>,
+    case: &Bound<'_, PyAny>,
+    keys: Vec<String>,
+    values: Vec<Bound<'_, PyAny>>,
+) -> PyResult<()> {
+    let values = toml_values(&keys, &values)?;
+    let base = Case::extract(case)?.get().base(py)?;
+    check_keys(&base, &keys, &values).map_err(|e| study_error(py, e))
+}
+
 /// The header line of `sweep.csv` for a sweep over `keys`.
 #[pyfunction]
 pub fn sweep_header(keys: Vec<String>) -> String {
@@ -148,11 +172,7 @@ pub fn sweep_row(
             "run {run}: runs are numbered from 1 to total = {total}"
         )));
     }
-    let values = keys
-        .iter()
-        .zip(&values)
-        .map(|(k, v)| to_toml(k, v))
-        .collect::<PyResult<Vec<_>>>()?;
+    let values = toml_values(&keys, &values)?;
     let sweep = Sweep {
         base: Case::extract(case)?.get().base(py)?,
         varies: vec![],

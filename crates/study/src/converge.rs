@@ -128,8 +128,19 @@ pub struct Level {
 }
 
 /// Averaged quantities (the first five) and individual ones, as
-/// (name, value of a level, description).
+/// (name, value of a level, description: a legend's label up to its
+/// parenthesis).
 type Quantity = (&'static str, fn(&Level) -> f64, &'static str);
+
+/// A quantity's legend label: its description without the parenthesis.
+fn label_of(q: &Quantity) -> &'static str {
+    q.2.split(" (").next().unwrap_or(q.0)
+}
+
+/// Counts (peaks) are written as whole numbers.
+fn is_count(q: &Quantity) -> bool {
+    q.0 == "peaks"
+}
 
 /// The scalar quantities of a level, in the order of the report.
 pub const QUANTITIES: [Quantity; 8] = [
@@ -442,7 +453,13 @@ impl ConvergeResult {
         );
         let _ = writeln!(w, "|{}", "---|".repeat(5 + QUANTITIES.len()));
         for l in &self.levels {
-            let values: Vec<String> = QUANTITIES.iter().map(|q| f(q.1(l))).collect();
+            let values: Vec<String> = QUANTITIES
+                .iter()
+                .map(|q| match is_count(q) {
+                    true => format!("{}", q.1(l)),
+                    false => f(q.1(l)),
+                })
+                .collect();
             let _ = writeln!(
                 w,
                 "| {} | {} | {} | {} | {} | {} |",
@@ -543,7 +560,6 @@ impl ConvergeResult {
                 })
                 .collect()
         };
-        let names = Self::change_names();
         let changes = self.changes();
         let change_series = [0usize, 1, 2, 3, 5]
             .iter()
@@ -551,20 +567,20 @@ impl ConvergeResult {
                 let points = changes
                     .iter()
                     .enumerate()
-                    .map(|(k, row)| ((k + 1) as f64, row[i]))
+                    .map(|(k, row)| ((k + 1) as f64, 100.0 * row[i]))
                     .collect();
-                Series::line(names[i], points)
+                Series::line(label_of(&QUANTITIES[i]), points)
             })
             .collect();
         let panels = vec![
             Panel {
                 x_label: "u/d (window midpoint)".into(),
-                y_label: "window mean P/(γ0 d²)".into(),
+                y_label: "window mean P/(γ₀d²)".into(),
                 series: per_window(|l| &l.window_mean),
             },
             Panel {
                 x_label: "u/d (window midpoint)".into(),
-                y_label: "window max P/(γ0 d²) (envelope)".into(),
+                y_label: "window max P/(γ₀d²) (envelope)".into(),
                 series: per_window(|l| &l.window_max),
             },
             Panel {
@@ -578,12 +594,12 @@ impl ConvergeResult {
             },
             Panel {
                 x_label: "level k (change from level k − 1)".into(),
-                y_label: "relative change".into(),
+                y_label: "relative change (%)".into(),
                 series: change_series,
             },
             Panel {
                 x_label: "u/d".into(),
-                y_label: "P/(γ0 d²)".into(),
+                y_label: "P/(γ₀d²)".into(),
                 series: self
                     .levels
                     .iter()

@@ -10,6 +10,9 @@ pub enum StudyError {
     /// A bad study argument (`--vary`, `--free`, `--bounds`, `--sample`,
     /// measured data), named in the message.
     Spec(String),
+    /// A key of a study argument that the case file cannot hold (an
+    /// unknown `--vary` key), named with the nearest it can.
+    Key(InputError),
     /// The base case cannot be read, or cannot be run where the study
     /// needs it (the start of a fit, a level of a convergence study).
     Case(String),
@@ -41,6 +44,7 @@ impl fmt::Display for StudyError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             StudyError::Spec(m) | StudyError::Case(m) | StudyError::Plot(m) => f.write_str(m),
+            StudyError::Key(e) => write!(f, "{e}"),
             StudyError::Output(e) => write!(f, "{}: {e}", e.path().display()),
         }
     }

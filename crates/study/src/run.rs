@@ -47,6 +47,12 @@ impl BaseCase {
         }
     }
 
+    /// The error of a `key` no run can set, whatever `value` it takes
+    /// (`soilcut_io::unknown_key`), or `None`.
+    pub fn unknown_key(&self, key: &str, value: &toml::Value) -> Option<InputError> {
+        soilcut_io::unknown_key(self.table.clone(), &self.overrides, key, value)
+    }
+
     /// The case with `extra` overrides applied after the base ones.
     pub fn load(&self, extra: &[Override]) -> Result<LoadedCase, InputError> {
         let all: Vec<Override> = self.overrides.iter().chain(extra).cloned().collect();

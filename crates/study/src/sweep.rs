@@ -60,9 +60,17 @@ pub fn run_folder(run: usize, total: usize) -> String {
 }
 
 impl Sweep {
-    /// The runs this sweep will make (varied values per run).
+    /// The runs this sweep will make (varied values per run). A varied
+    /// key that no run could set (unknown to the case file) is an error
+    /// before any run, naming it and the nearest keys: every run would
+    /// fail alike.
     pub fn points(&self) -> Result<Vec<Vec<toml::Value>>, StudyError> {
-        points(&self.varies, self.sample)
+        let points = points(&self.varies, self.sample)?;
+        if let Some(first) = points.first() {
+            let keys: Vec<String> = self.varies.iter().map(|v| v.key.clone()).collect();
+            check_keys(&self.base, &keys, first)?;
+        }
+        Ok(points)
     }
 
     /// Runs every point on a pool of `jobs` threads. A run that fails is a
@@ -113,6 +121,22 @@ impl Sweep {
             wall_time_s,
         })
     }
+}
+
+/// Refuses keys that no run of `base` could set, with `values` (a run's)
+/// as the probe: a sweep given its runs directly (Python's `samples`)
+/// checks them as `Sweep::points` does.
+pub fn check_keys(
+    base: &BaseCase,
+    keys: &[String],
+    values: &[toml::Value],
+) -> Result<(), StudyError> {
+    for (key, value) in keys.iter().zip(values) {
+        if let Some(e) = base.unknown_key(key, value) {
+            return Err(StudyError::Key(e));
+        }
+    }
+    Ok(())
 }
 
 impl SweepResult {

@@ -60,6 +60,13 @@ fn one_row_per_level_with_halved_increments() {
             + md.matches(": undetermined").count(),
         QUANTITIES.len() + 2
     );
+    // Counts are whole numbers in the per-level table: its last column.
+    for l in &result.levels {
+        let row = format!("| {} | {} |", l.level, l.increment);
+        let line = md.lines().find(|x| x.starts_with(&row)).unwrap();
+        let peaks = line.trim_end_matches(" |").rsplit("| ").next().unwrap();
+        assert_eq!(peaks, l.peaks.to_string(), "{line}");
+    }
     let tmp = tempfile::tempdir().unwrap();
     result.draw(&tmp.path().join("converge.png")).unwrap();
 }
