@@ -1,0 +1,114 @@
+//! The checks on flat ground with a vertical face (tip at depth
+//! d = 1, γ = 1), against the closed forms of soilcut-model's `analytic`
+//! (Rankine, Coulomb) and the accepted passive coefficient of Kérisel &
+//! Absi (1990) for a rough wall. Coarse meshes: the tables against N are
+//! made by `examples/convergence.rs`.
+
+use soilcut_bounds::{bracket, Bracket, Problem, Soil};
+use soilcut_model::analytic::Wedge;
+
+fn flat(phi: f64, phi_w: f64, c: f64, q: f64, depth: f64) -> Problem {
+    let soil = Soil {
+        friction_deg: phi,
+        cohesion: c,
+        unit_weight: 1.0,
+    };
+    Problem::flat(1.0, soil, phi_w, q, depth)
+}
+
+fn wedge(phi: f64, phi_w: f64, c: f64, q: f64) -> Wedge {
+    Wedge {
+        unit_weight: 1.0,
+        depth: 1.0,
+        friction: phi.to_radians(),
+        wall_friction: phi_w.to_radians(),
+        rake: 90f64.to_radians(),
+        cohesion: c,
+        adhesion: 0.0,
+        surcharge: q,
+    }
+}
+
+fn solve(p: &Problem, n: usize) -> Bracket {
+    bracket(p, n).expect("both bounds solve")
+}
+
+/// Relative solver tolerance on a bound.
+const TOL: f64 = 1e-5;
+
+#[test]
+fn smooth_wall_brackets_rankine_and_closes_on_it() {
+    let p = flat(30.0, 0.0, 0.0, 0.0, 0.0);
+    let rankine = wedge(30.0, 0.0, 0.0, 0.0).rankine().force_h;
+    let mut widths = Vec::new();
+    for n in [2, 4, 8] {
+        let b = solve(&p, n);
+        assert!(b.lower.force <= rankine * (1.0 + TOL), "N = {n}: {b:?}");
+        assert!(b.upper.force >= rankine * (1.0 - TOL), "N = {n}");
+        widths.push((b.upper.force - b.lower.force) / rankine);
+    }
+    assert!(widths[2] < widths[1] && widths[1] < widths[0], "{widths:?}");
+    assert!(widths[2] < 0.03, "{widths:?}");
+}
+
+#[test]
+fn cohesion_and_surcharge_match_the_smooth_wall_closed_form() {
+    for (c, q) in [(0.5, 0.0), (0.0, 1.0), (1.0, 1.0)] {
+        let p = flat(30.0, 0.0, c, q, 0.0);
+        // Pp = ½ Kp γ d² + 2 c √Kp d + Kp q d.
+        let closed = wedge(30.0, 0.0, c, q).rankine().force_h;
+        let b = solve(&p, 6);
+        assert!(
+            b.lower.force <= closed * (1.0 + TOL),
+            "c {c} q {q}: {}",
+            b.lower.force
+        );
+        assert!(b.upper.force >= closed * (1.0 - TOL), "c {c} q {q}");
+        assert!(
+            b.upper.force < 1.03 * closed,
+            "c {c} q {q}: {}",
+            b.upper.force
+        );
+    }
+}
+
+#[test]
+fn purely_cohesive_soil_brackets_the_closed_form() {
+    // φ = 0: Kp = 1, Pp = ½ γ d² + 2 c d.
+    let p = flat(0.0, 0.0, 1.0, 0.0, 0.0);
+    let b = solve(&p, 4);
+    assert!(b.lower.force <= 2.5 * (1.0 + TOL) && b.upper.force >= 2.5 * (1.0 - TOL));
+    assert!(b.upper.force < 2.5 * 1.03);
+}
+
+/// Kérisel & Absi (1990), vertical wall, horizontal ground, φ = 30°,
+/// δ = φ: Kp = 6.42 for the resultant inclined at δ, so the horizontal
+/// force is ½ Kp cos δ γ d².
+const KERISEL_ABSI_30_30: f64 = 6.42;
+
+#[test]
+fn rough_wall_lies_below_coulomb_and_about_the_accepted_coefficient() {
+    let accepted = 0.5 * KERISEL_ABSI_30_30 * 30f64.to_radians().cos();
+    let coulomb = wedge(30.0, 30.0, 0.0, 0.0)
+        .coulomb()
+        .expect("admissible")
+        .force_h;
+    // Soil below the tip: the bracket contains the accepted coefficient.
+    let b = solve(&flat(30.0, 30.0, 0.0, 0.0, 1.5), 4);
+    assert!(
+        b.lower.force <= accepted && accepted <= b.upper.force,
+        "{b:?}"
+    );
+    assert!(b.upper.force < coulomb);
+    // soilcut's rigid floor at the tip level only adds strength: its
+    // bracket lies at or above the half-space's coefficient (the table's
+    // three figures: 1 %), and below Coulomb's planar wedge.
+    let b = solve(&flat(30.0, 30.0, 0.0, 0.0, 0.0), 6);
+    assert!(b.upper.force >= 0.99 * accepted, "{}", b.upper.force);
+    assert!(
+        b.upper.force < 0.8 * coulomb,
+        "{} vs {coulomb}",
+        b.upper.force
+    );
+    assert!(b.lower.force <= b.upper.force);
+}
