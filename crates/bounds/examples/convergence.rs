@@ -23,7 +23,7 @@ fn main() {
     println!("N\ttriangles\tlower\tupper\tmean\thalf_width_pct\tlower_s\tupper_s");
     for n in args[5..].iter().map(|&n| n as usize) {
         let b = bracket(&p, n).expect("solved");
-        let (lo, up) = (b.lower.force, b.upper.force);
+        let (lo, up) = (b.lower_force(), b.upper_force());
         let mean = 0.5 * (lo + up);
         println!(
             "{n}\t{}\t{lo:.4}\t{up:.4}\t{mean:.4}\t{:.2}\t{:.2}\t{:.2}",

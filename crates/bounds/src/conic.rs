@@ -90,6 +90,14 @@ impl std::fmt::Display for SolveError {
 
 impl std::error::Error for SolveError {}
 
+impl SolveError {
+    /// Whether the program has no solution (rather than the solver failing
+    /// to find one): for a bound, the ground cannot carry its own weight.
+    pub fn is_infeasible(&self) -> bool {
+        self.status.contains("Infeasible")
+    }
+}
+
 impl Program {
     /// n new variables; returns the first one's index.
     pub fn variables(&mut self, n: usize) -> usize {

@@ -26,28 +26,37 @@
 //! let p = Problem::flat(1.0, sand, 0.0, 0.0, 0.0);
 //! let b = soilcut_bounds::bracket(&p, 2).unwrap();
 //! // Rankine: ½ Kp γ d² = 1.5 (Kp = 3).
-//! assert!(b.lower.force <= 1.5 + 1e-6 && 1.5 <= b.upper.force + 1e-6);
+//! assert!(b.lower_force() <= 1.5 + 1e-6 && 1.5 <= b.upper_force() + 1e-6);
 //! ```
 
 #![warn(missing_docs)]
 
 pub mod conic;
 mod edges;
+pub mod instant;
 pub mod lower;
 pub mod mesh;
 pub mod problem;
 mod quadratic;
 pub mod scale;
+pub mod strength;
 pub mod upper;
 
+pub use conic::SolveError;
+pub use instant::{Floor, Instant, InstantError, Options};
 pub use lower::LowerBound;
 pub use mesh::{Mesh, Side};
 pub use problem::{Domain, Face, Ground, InputError, Problem, Soil};
+pub use strength::Strength;
 pub use upper::UpperBound;
 
-use std::time::Instant;
+use std::time::Instant as Clock;
 
-/// Both bounds on one mesh, in the problem's units.
+/// Both bounds on one mesh, in the problem's units. A bound the solver
+/// could not find holds the solver's status: infeasible where the ground
+/// as it stands cannot carry its own weight with its strength (a slope
+/// steeper than its friction angle allows), which no load on the face
+/// changes.
 #[derive(Clone, Debug)]
 pub struct Bracket {
     /// The mesh, in the problem's coordinates.
@@ -55,66 +64,65 @@ pub struct Bracket {
     /// N, the mesh parameter.
     pub n: usize,
     /// The lower bound (forces and stresses in the problem's units).
-    pub lower: LowerBound,
+    pub lower: Result<LowerBound, SolveError>,
     /// The upper bound (forces in the problem's units).
-    pub upper: UpperBound,
+    pub upper: Result<UpperBound, SolveError>,
     /// Wall-clock time of the lower bound's assembly and solve, seconds.
     pub lower_seconds: f64,
     /// Wall-clock time of the upper bound's assembly and solve, seconds.
     pub upper_seconds: f64,
 }
 
-/// Why a bracket could not be found.
-#[derive(Clone, Debug, PartialEq)]
-pub enum BoundsError {
-    /// An input out of range.
-    Input(InputError),
-    /// The conic solver failed (which bound, and its status).
-    Solver(&'static str, conic::SolveError),
-}
+impl Bracket {
+    /// The lower bound's force, NaN where it was not found.
+    pub fn lower_force(&self) -> f64 {
+        self.lower.as_ref().map_or(f64::NAN, |b| b.force)
+    }
 
-impl std::fmt::Display for BoundsError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            BoundsError::Input(e) => e.fmt(f),
-            BoundsError::Solver(which, e) => write!(f, "{which} bound: {e}"),
-        }
+    /// The upper bound's force, NaN where it was not found.
+    pub fn upper_force(&self) -> f64 {
+        self.upper.as_ref().map_or(f64::NAN, |b| b.force)
     }
 }
 
-impl std::error::Error for BoundsError {}
-
-/// Largest mesh parameter N accepted (about 54 N² triangles).
+/// Largest mesh parameter N accepted (about 28 N² triangles on a rigid
+/// floor, 54 N² with soil below the tip).
 pub const MAX_MESH: usize = 64;
 
 /// Solves both bounds on the mesh of parameter N (cells along the face near
 /// the tip, in [1, [`MAX_MESH`]]).
-pub fn bracket(p: &Problem, n: usize) -> Result<Bracket, BoundsError> {
-    p.validate().map_err(BoundsError::Input)?;
+pub fn bracket(p: &Problem, n: usize) -> Result<Bracket, InputError> {
+    p.validate()?;
     if n == 0 || n > MAX_MESH {
-        return Err(BoundsError::Input(InputError {
+        return Err(InputError {
             key: "mesh".into(),
             allowed: format!("in [1, {MAX_MESH}]"),
             value: n as f64,
-        }));
+        });
     }
     let scale = scale::Scale::of(p);
     let scaled = scale.problem(p);
     let mesh = Mesh::new(&scaled, n);
-    let clock = Instant::now();
-    let mut lower = lower::solve(&scaled, &mesh).map_err(|e| BoundsError::Solver("lower", e))?;
-    let lower_seconds = clock.elapsed().as_secs_f64();
-    let clock = Instant::now();
-    let mut upper = upper::solve(&scaled, &mesh).map_err(|e| BoundsError::Solver("upper", e))?;
-    let upper_seconds = clock.elapsed().as_secs_f64();
     let (s, h) = (scale.stress, scale.length);
-    lower.force *= s * h;
-    for node in lower.stress.iter_mut().flatten().flatten() {
-        *node *= s;
-    }
-    upper.force *= s * h;
-    upper.shear_rate.iter_mut().for_each(|r| *r /= h);
-    upper.dissipation.iter_mut().for_each(|d| *d *= s * h);
+    let clock = Clock::now();
+    let lower = lower::solve(&scaled, &mesh).map(|mut b| {
+        b.force *= s * h;
+        b.stress
+            .iter_mut()
+            .flatten()
+            .flatten()
+            .for_each(|x| *x *= s);
+        b
+    });
+    let lower_seconds = clock.elapsed().as_secs_f64();
+    let clock = Clock::now();
+    let upper = upper::solve(&scaled, &mesh).map(|mut b| {
+        b.force *= s * h;
+        b.shear_rate.iter_mut().for_each(|r| *r /= h);
+        b.dissipation.iter_mut().for_each(|d| *d *= s * h);
+        b
+    });
+    let upper_seconds = clock.elapsed().as_secs_f64();
     let mesh = Mesh {
         nodes: mesh.nodes.iter().map(|&q| scale.point(q)).collect(),
         ..mesh

@@ -21,8 +21,8 @@ fn unchanged(a: Domain, b: Domain) {
     let a = bracket(&rough(a), 3).unwrap();
     let b = bracket(&rough(b), 3).unwrap();
     for (x, y) in [
-        (a.lower.force, b.lower.force),
-        (a.upper.force, b.upper.force),
+        (a.lower_force(), b.lower_force()),
+        (a.upper_force(), b.upper_force()),
     ] {
         assert!((x - y).abs() < 0.005 * x, "{x} vs {y}");
     }

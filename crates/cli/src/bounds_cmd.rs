@@ -1,0 +1,165 @@
+//! `soilcut bounds`: rigorous lower and upper bounds (finite-element limit
+//! analysis) on the collapse load of the ground as it stands at one instant
+//! of a run, or at instants through it, beside soilcut's own force.
+
+use crate::{load, CaseOutput, Failure, Moment};
+use soilcut_bounds::{instant, Floor, Instant, InstantError, Options, Strength, MAX_MESH};
+use soilcut_io::{bounds_columns, bounds_json, floor_name, strength_name, write_output_dir};
+use std::path::Path;
+
+pub const EXAMPLES: &str = "\
+Examples:
+  soilcut bounds cases/paper/original.toml --at 1
+      writes out/original-bounds/{bounds.csv,bounds.json,case.resolved.toml}
+  soilcut bounds cases/paper/table1-hs.toml --at 2 --mesh 12 --json
+  soilcut bounds cases/paper/fig5.toml --every 0.5 --floor soil --strength davis";
+
+#[derive(clap::Args)]
+pub struct BoundsArgs {
+    #[command(flatten)]
+    target: CaseOutput,
+    #[command(flatten)]
+    moment: Moment,
+    /// Mesh parameter N: cells along the face near the tip (1 to 64; about
+    /// 28 N² triangles on a rigid floor).
+    #[arg(long, value_name = "N", default_value_t = 8)]
+    mesh: usize,
+    /// Below the tip level: soilcut's rigid floor, or deformable soil under
+    /// the tip and the trench.
+    #[arg(long, value_name = "FLOOR", default_value = "rigid", value_parser = ["rigid", "soil"])]
+    floor: String,
+    /// The soil's strength in the bounds: its own with associated flow, or
+    /// Davis's reduced strength from its dilation angle.
+    #[arg(long, value_name = "STRENGTH", default_value = "associated", value_parser = ["associated", "davis"])]
+    strength: String,
+    /// Print the results as JSON (bounds.json) instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+impl BoundsArgs {
+    fn options(&self, path: &Path) -> Result<Options, Failure> {
+        if self.mesh == 0 || self.mesh > MAX_MESH {
+            return Err(Failure::input(
+                path,
+                format!(
+                    "--mesh must be an integer from 1 to {MAX_MESH} (got {})",
+                    self.mesh
+                ),
+            ));
+        }
+        Ok(Options {
+            mesh: self.mesh,
+            floor: if self.floor == "soil" {
+                Floor::Soil
+            } else {
+                Floor::Rigid
+            },
+            strength: if self.strength == "davis" {
+                Strength::Davis
+            } else {
+                Strength::Associated
+            },
+        })
+    }
+}
+
+pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
+    let target = &args.target;
+    let path = target.case.as_path();
+    let loaded = load(path, &target.set)?;
+    let case = &loaded.case;
+    args.moment.check(case, path)?;
+    let options = args.options(path)?;
+    let out = target.out_or(&format!("{}-bounds", case.name));
+    soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
+    let instants = match (args.moment.at, args.moment.every) {
+        (Some(at), _) => instant::at(case, at, options).map(|i| vec![i]),
+        (None, every) => instant::every(case, every.unwrap_or(1.0), options),
+    }
+    .map_err(|e| failure(path, e))?;
+    let d = case.blade.depth;
+    let json = bounds_json(&instants, d, &options);
+    let files = vec![
+        ("bounds.csv", bounds_columns(&instants, d).csv()),
+        ("bounds.json", json.clone()),
+        ("case.resolved.toml", loaded.resolved_toml()),
+    ];
+    write_output_dir(&out, &files, target.force).map_err(Failure::output)?;
+    if args.json {
+        print!("{json}");
+    } else {
+        print!("{}", table(&instants, d, &options));
+        println!("outputs in {}", out.display());
+    }
+    Ok(())
+}
+
+/// Every failure of an instant is the case's or the input's.
+fn failure(path: &Path, e: InstantError) -> Failure {
+    Failure::input(path, e)
+}
+
+/// The table printed on stdout.
+fn table(instants: &[Instant], d: f64, options: &Options) -> String {
+    let mut out = format!(
+        "Limit-analysis bounds on the horizontal force (per unit width), mesh N = {}, floor {}, strength {}\n\
+         {:>8} {:>12} {:>12} {:>12} {:>9} {:>9} {:>8} {:>9} {:>8} {:>8}\n",
+        options.mesh,
+        floor_name(options.floor),
+        strength_name(options.strength),
+        "u/d",
+        "lower",
+        "upper",
+        "soilcut",
+        "s/lower",
+        "s/upper",
+        "±%",
+        "triangles",
+        "lower s",
+        "upper s",
+    );
+    let mut notes = Vec::new();
+    for i in instants {
+        let (b, r) = (&i.bracket, &i.record);
+        let (lo, up) = (b.lower_force(), b.upper_force());
+        out.push_str(&format!(
+            "{:>8.3} {:>12.6} {:>12.6} {:>12.6} {:>9.4} {:>9.4} {:>8.2} {:>9} {:>8.2} {:>8.2}\n",
+            r.u / d,
+            lo,
+            up,
+            r.force_h,
+            i.ratio_lower(),
+            i.ratio_upper(),
+            100.0 * (up - lo) / (up + lo),
+            b.mesh.triangles.len(),
+            b.lower_seconds,
+            b.upper_seconds,
+        ));
+        notes.extend(status_notes(i, d));
+    }
+    for note in notes {
+        out.push_str(&note);
+    }
+    out
+}
+
+/// A line for each bound the solver did not find (NaN in the table).
+fn status_notes(i: &Instant, d: f64) -> Vec<String> {
+    let u = i.record.u / d;
+    let b = &i.bracket;
+    let lower = b.lower.as_ref().err().map(|e| ("lower", e));
+    let upper = b.upper.as_ref().err().map(|e| ("upper", e));
+    lower
+        .into_iter()
+        .chain(upper)
+        .map(|(which, e)| {
+            let why = if e.is_infeasible() {
+                ": the ground as it stands cannot carry its own weight with its strength (a slope steeper than its friction angle)"
+            } else {
+                ""
+            };
+            format!("u/d = {u:.3}: no {which} bound, {e}{why}\n")
+        })
+        .collect()
+}
