@@ -21,7 +21,7 @@
 //! at the nodes holds them everywhere (the yield set is convex), so any
 //! feasible field is statically admissible and P_h ≤ the collapse load. The
 //! truncated boundaries carry no condition: the field is taken to continue
-//! beyond them, which the domain checks (`tests/domain.rs`) test by
+//! beyond them, which the domain checks (`crates/bounds/tests/domain.rs`) test by
 //! enlarging the mesh.
 
 use crate::conic::{Affine, Program, SolveError};

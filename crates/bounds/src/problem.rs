@@ -60,7 +60,7 @@ pub struct Ground {
 /// boundaries are fixed in the upper bound (rigid soil beyond, kinematically
 /// admissible) and free of any condition in the lower bound; the extents
 /// must be large enough that enlarging them no longer changes either bound
-/// (`tests/domain.rs` checks the defaults on the checks' problems).
+/// (`crates/bounds/tests/domain.rs` checks the defaults on the checks' problems).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Domain {
     /// Reach ahead of the tip, multiples of h, in [0.5, 100].

@@ -2,7 +2,7 @@
 //! d = 1, γ = 1), against the closed forms of soilcut-model's `analytic`
 //! (Rankine, Coulomb) and the accepted passive coefficient of Kérisel &
 //! Absi (1990) for a rough wall. Coarse meshes: the tables against N are
-//! made by `examples/convergence.rs`.
+//! made by `crates/bounds/examples/convergence.rs`.
 
 use soilcut_bounds::{bracket, Bracket, Problem, Soil};
 use soilcut_model::analytic::Wedge;
