@@ -16,3 +16,6 @@ done
 # defaults, 7 perturbed members.
 "$soilcut" run cases/paper/table1-hs.toml --ensemble 7 --quiet --force --out "$out-ensemble"
 cp "$out-ensemble/plots/envelope.png" docs/img/envelope.png
+# The bounds' fields (README, "Rigorous bounds"): the original case at u/d = 2.
+"$soilcut" bounds cases/paper/original.toml --at 2 --force --out "$out-bounds" >/dev/null
+cp "$out-bounds/bounds.png" docs/img/bounds.png

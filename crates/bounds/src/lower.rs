@@ -171,3 +171,51 @@ pub fn solve(p: &Problem, mesh: &Mesh) -> Result<LowerBound, SolveError> {
         size: lp.size(),
     })
 }
+
+/// The fraction of the strength a stress mobilises,
+/// √((σx − σy)² + (2τxy)²) / (2c cos φ − (σx + σy) sin φ): 1 at yield (L5);
+/// φ in degrees.
+pub fn mobilised(stress: [f64; 3], friction_deg: f64, cohesion: f64) -> f64 {
+    let [sx, sy, t] = stress;
+    let (s, k) = friction_deg.to_radians().sin_cos();
+    let radius = (sx - sy).hypot(2.0 * t);
+    let strength = 2.0 * cohesion * k - (sx + sy) * s;
+    if strength > 0.0 {
+        (radius / strength).min(1.0)
+    } else if radius > 0.0 {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+impl LowerBound {
+    /// Per triangle of `mesh` (in `p`'s coordinates), the largest fraction
+    /// of the strength its nodes mobilise.
+    pub fn mobilised(&self, p: &Problem, mesh: &Mesh) -> Vec<f64> {
+        (0..mesh.triangles.len())
+            .map(|e| {
+                let c = mesh.centroid(e);
+                let soil = p.soil_at(c[0], c[1]);
+                self.stress[e]
+                    .iter()
+                    .map(|&s| mobilised(s, soil.friction_deg, soil.cohesion))
+                    .fold(0.0, f64::max)
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rankine_passive_state_is_at_yield_and_hydrostatic_is_not() {
+        // φ = 30°: σx = Kp σy with Kp = 3 is at yield; σx = σy mobilises none.
+        assert!((mobilised([-3.0, -1.0, 0.0], 30.0, 0.0) - 1.0).abs() < 1e-12);
+        assert_eq!(mobilised([-1.0, -1.0, 0.0], 30.0, 0.0), 0.0);
+        // σx = 2 σy: R = 1 of 1.5.
+        assert!((mobilised([-2.0, -1.0, 0.0], 30.0, 0.0) - 2.0 / 3.0).abs() < 1e-12);
+    }
+}

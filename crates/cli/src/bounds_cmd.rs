@@ -4,7 +4,11 @@
 
 use crate::{load, CaseOutput, Failure, Moment};
 use soilcut_bounds::{instant, Floor, Instant, InstantError, Options, Strength, MAX_MESH};
-use soilcut_io::{bounds_columns, bounds_json, floor_name, strength_name, write_output_dir};
+use soilcut_io::{
+    bounds_columns, bounds_json, floor_name, strength_name, write_output_dir_then, OutputError,
+};
+use soilcut_model::Case;
+use soilcut_plot::{draw_bounds, BoundsFields};
 use std::path::Path;
 
 pub const EXAMPLES: &str = "\
@@ -85,7 +89,22 @@ pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
         ("bounds.json", json.clone()),
         ("case.resolved.toml", loaded.resolved_toml()),
     ];
-    write_output_dir(&out, &files, target.force).map_err(Failure::output)?;
+    // One instant: its fields as a picture too.
+    let picture = match instants.as_slice() {
+        [one] => Some(fields(one, case)),
+        _ => None,
+    };
+    write_output_dir_then(&out, &files, target.force, |staged| {
+        let Some(picture) = &picture else {
+            return Ok(());
+        };
+        let file = staged.join("bounds.png");
+        draw_bounds(picture, &file).map_err(|e| OutputError::Io {
+            path: file,
+            source: std::io::Error::other(e.message),
+        })
+    })
+    .map_err(Failure::output)?;
     if args.json {
         print!("{json}");
     } else {
@@ -93,6 +112,59 @@ pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
         println!("outputs in {}", out.display());
     }
     Ok(())
+}
+
+/// The picture of one instant: lengths over d from the tip, the view from
+/// half a face height behind the tip to 1.5 d past soilcut's band or two
+/// face heights ahead, whichever is further.
+fn fields(i: &Instant, case: &Case) -> BoundsFields {
+    let (b, r, p) = (&i.bracket, &i.record, &i.problem);
+    let d = case.blade.depth;
+    let tip = (p.face.tip_x, p.face.tip_y);
+    let scaled = |q: [f64; 2]| ((q[0] - tip.0) / d, q[1] / d);
+    let h = p.face_height() / d;
+    let top = p.ground.y.iter().fold(0.0, |m: f64, &y| m.max(y)) / d;
+    let bottom = b.mesh.nodes.iter().fold(0.0, |m: f64, q| m.min(q[1])) / d;
+    let reach = ((r.x_emergence - tip.0) / d + 1.5).max(2.0 * h);
+    let face_top = p.column_top(tip.0);
+    let face_x = tip.0 - (face_top - tip.1) * p.cot_rake();
+    BoundsFields {
+        title: format!(
+            "{}: the bounds' fields at u/d = {:.3} (N = {})",
+            case.title,
+            r.u / d,
+            b.n
+        ),
+        triangles: b
+            .mesh
+            .triangles
+            .iter()
+            .map(|t| t.map(|k| scaled(b.mesh.nodes[k])))
+            .collect(),
+        shear: b.upper.as_ref().map_or_else(
+            |_| vec![f64::NAN; b.mesh.triangles.len()],
+            |u| u.shear_rate.clone(),
+        ),
+        mobilised: b.lower.as_ref().map_or_else(
+            |_| vec![f64::NAN; b.mesh.triangles.len()],
+            |l| l.mobilised(p, &b.mesh),
+        ),
+        surface: p
+            .ground
+            .x
+            .iter()
+            .zip(&p.ground.y)
+            .map(|(&x, &y)| scaled([x, y]))
+            .take_while(|q| q.0 <= reach)
+            .collect(),
+        band: [
+            scaled([tip.0, tip.1]),
+            scaled([r.x_emergence, r.y_emergence]),
+        ],
+        face: [scaled([tip.0, tip.1]), scaled([face_x, face_top])],
+        x_range: (-0.5 * h, reach),
+        y_range: (bottom.max(tip.1 / d - 0.5 * h), top + 0.2 * h),
+    }
 }
 
 /// Every failure of an instant is the case's or the input's.

@@ -82,7 +82,7 @@ fn first_increment_is_coulomb_and_lies_within_the_bracket() {
     assert!((get("soilcut_over_lower") - soil / lower).abs() < 1e-12);
     assert_eq!(get("mesh"), 4.0);
     assert!(get("lower_seconds") > 0.0 && get("upper_seconds") > 0.0);
-    for name in ["bounds.json", "case.resolved.toml"] {
+    for name in ["bounds.json", "case.resolved.toml", "bounds.png"] {
         assert!(dir.path().join("b").join(name).is_file(), "{name}");
     }
 }
