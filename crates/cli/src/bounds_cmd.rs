@@ -3,9 +3,10 @@
 //! of a run, or at instants through it, beside soilcut's own force.
 
 use crate::{load, CaseOutput, Failure, Moment};
-use soilcut_bounds::{instant, Floor, Instant, InstantError, Options, Strength, MAX_MESH};
+use soilcut_bounds::{instant, Instant, InstantError, Options};
 use soilcut_io::{
-    bounds_columns, bounds_json, floor_name, strength_name, write_output_dir_then, OutputError,
+    bounds_columns, bounds_json, bounds_options, floor_name, strength_name, write_output_dir_then,
+    OutputError,
 };
 use soilcut_model::Case;
 use soilcut_plot::{draw_bounds, BoundsFields};
@@ -26,8 +27,13 @@ pub struct BoundsArgs {
     moment: Moment,
     /// Mesh parameter N: cells along the face near the tip (1 to 64; about
     /// 19 N² triangles on a rigid floor, 58 N² with soil below).
-    #[arg(long, value_name = "N", default_value_t = 8)]
-    mesh: usize,
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 8,
+        allow_negative_numbers = true
+    )]
+    mesh: i64,
     /// Below the tip level: soilcut's rigid floor, or deformable soil under
     /// the tip and the trench.
     #[arg(long, value_name = "FLOOR", default_value = "rigid", value_parser = ["rigid", "soil"])]
@@ -43,28 +49,8 @@ pub struct BoundsArgs {
 
 impl BoundsArgs {
     fn options(&self, path: &Path) -> Result<Options, Failure> {
-        if self.mesh == 0 || self.mesh > MAX_MESH {
-            return Err(Failure::input(
-                path,
-                format!(
-                    "--mesh must be an integer from 1 to {MAX_MESH} (got {})",
-                    self.mesh
-                ),
-            ));
-        }
-        Ok(Options {
-            mesh: self.mesh,
-            floor: if self.floor == "soil" {
-                Floor::Soil
-            } else {
-                Floor::Rigid
-            },
-            strength: if self.strength == "davis" {
-                Strength::Davis
-            } else {
-                Strength::Associated
-            },
-        })
+        bounds_options("--", self.mesh, &self.floor, &self.strength)
+            .map_err(|message| Failure::input(path, message))
     }
 }
 

@@ -3,7 +3,7 @@
 
 use crate::columns::Columns;
 use serde_json::json;
-use soilcut_bounds::{Floor, Instant, Options, SolveError, Strength};
+use soilcut_bounds::{Floor, Instant, Options, SolveError, Strength, MAX_MESH};
 
 /// Columns of `bounds.csv`, in order.
 pub const BOUNDS_HEADER: &str = "u,u_over_d,depth,face_height,soilcut,lower,upper,soilcut_over_lower,soilcut_over_upper,half_width,mesh,triangles,lower_seconds,upper_seconds,soilcut_force,beta_deg,friction_deg";
@@ -71,6 +71,44 @@ fn status<T>(bound: &Result<T, SolveError>) -> String {
         Ok(_) => "Solved".into(),
         Err(e) => e.status.clone(),
     }
+}
+
+/// The options of a bounds command from its arguments, checked; `prefix`
+/// is how the caller's user names them (`--` on the command line): a bad
+/// one is named with its allowed values.
+pub fn bounds_options(
+    prefix: &str,
+    mesh: i64,
+    floor: &str,
+    strength: &str,
+) -> Result<Options, String> {
+    let Some(mesh) = usize::try_from(mesh)
+        .ok()
+        .filter(|n| (1..=MAX_MESH).contains(n))
+    else {
+        return Err(format!(
+            "{prefix}mesh must be an integer from 1 to {MAX_MESH} (got {mesh})"
+        ));
+    };
+    let floor = match floor {
+        "rigid" => Floor::Rigid,
+        "soil" => Floor::Soil,
+        other => return Err(format!("{prefix}floor must be rigid or soil (got {other})")),
+    };
+    let strength = match strength {
+        "associated" => Strength::Associated,
+        "davis" => Strength::Davis,
+        other => {
+            return Err(format!(
+                "{prefix}strength must be associated or davis (got {other})"
+            ))
+        }
+    };
+    Ok(Options {
+        mesh,
+        floor,
+        strength,
+    })
 }
 
 /// The name of a floor, as `--floor` takes it.

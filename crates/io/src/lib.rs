@@ -34,7 +34,9 @@ mod overrides;
 mod pictures;
 mod record;
 
-pub use bounds::{bounds_columns, bounds_json, floor_name, strength_name, BOUNDS_HEADER};
+pub use bounds::{
+    bounds_columns, bounds_json, bounds_options, floor_name, strength_name, BOUNDS_HEADER,
+};
 pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
     LoadedCase,
