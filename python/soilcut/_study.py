@@ -256,8 +256,9 @@ class Bounds(NamedTuple):
     ``mesh``, ``triangles``, ``lower_seconds``, ``upper_seconds`` (s),
     ``soilcut_force`` (resultant), ``beta_deg``, ``friction_deg``."""
     lower_status: str
-    """``"Solved"``, or the solver's status (``"PrimalInfeasible"``: the
-    ground cannot carry its own weight with its strength)."""
+    """``"Solved"``, or the solver's status (``"PrimalInfeasible"``: no
+    stress field on the mesh carries the ground's own weight with its
+    strength)."""
     upper_status: str
     """The same for the upper bound."""
 

@@ -92,7 +92,8 @@ impl std::error::Error for SolveError {}
 
 impl SolveError {
     /// Whether the program has no solution (rather than the solver failing
-    /// to find one): for a bound, the ground cannot carry its own weight.
+    /// to find one): for a lower bound, no field on the mesh carries the
+    /// ground's own weight.
     pub fn is_infeasible(&self) -> bool {
         self.status.contains("Infeasible")
     }

@@ -53,10 +53,10 @@ pub use upper::UpperBound;
 use std::time::Instant as Clock;
 
 /// Both bounds on one mesh, in the problem's units. A bound the solver
-/// could not find holds the solver's status: infeasible where the ground
-/// as it stands cannot carry its own weight with its strength (a slope
-/// steeper than its friction angle allows), which no load on the face
-/// changes.
+/// could not find holds the solver's status: the lower bound is infeasible
+/// where no stress field on the mesh carries the ground's own weight with
+/// its strength, whatever the face does (a slope steeper than its friction
+/// angle, or one just below it on too coarse a mesh).
 #[derive(Clone, Debug)]
 pub struct Bracket {
     /// The mesh, in the problem's coordinates.

@@ -213,7 +213,7 @@ fn status_notes(i: &Instant, d: f64) -> Vec<String> {
         .chain(upper)
         .map(|(which, e)| {
             let why = if e.is_infeasible() {
-                ": the ground as it stands cannot carry its own weight with its strength (a slope steeper than its friction angle)"
+                ": no stress field on this mesh carries the ground's own weight with its strength (a slope steeper than its friction angle, or a mesh too coarse to show that it holds)"
             } else {
                 ""
             };

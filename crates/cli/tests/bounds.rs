@@ -87,6 +87,56 @@ fn first_increment_is_coulomb_and_lies_within_the_bracket() {
     }
 }
 
+/// A short refined case with associated flow: φ = ψ = 35° at every shear,
+/// a repose angle below φ (so the pile can stand).
+const REFINED: &str = include_str!("../../io/testdata/refined.toml");
+const ASSOCIATED: [&str; 6] = [
+    "--set",
+    "soil.friction={ initial = 35, peak = 35, residual = 35 }",
+    "--set",
+    "soil.dilation={ initial = 35, peak = 35, residual = 35 }",
+    "--set",
+    "soil.repose=30",
+];
+
+/// For associated flow soilcut's band is a mechanism of the upper bound's
+/// kind: its force is never below the lower bound, and not above the
+/// (coarse) upper bound by more than 2 % (N = 6: on N = 4 the lower bound
+/// finds no field for the pile from u/d = 0.5 on).
+#[test]
+fn associated_soil_is_never_below_the_lower_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("case.toml"), REFINED).unwrap();
+    let mut args = vec![
+        "bounds",
+        "case.toml",
+        "--every",
+        "0.25",
+        "--mesh",
+        "6",
+        "--out",
+        "b",
+    ];
+    args.extend(ASSOCIATED);
+    let o = soilcut(dir.path(), &args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(dir.path().join("b/bounds.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 4, "u/d = 0, 0.25, 0.5, 0.75");
+    for r in rows {
+        let (lower, upper, soil) = (r[at("lower")], r[at("upper")], r[at("soilcut")]);
+        assert!(
+            lower <= soil && soil <= 1.02 * upper,
+            "{lower} {soil} {upper}"
+        );
+    }
+}
+
 /// Exit code 2, one stderr line naming `key`, and no output folder.
 fn assert_refused(extra: &[&str], key: &str) {
     let dir = sandbox();
