@@ -25,38 +25,45 @@ fn sandbox() -> tempfile::TempDir {
     dir
 }
 
-/// The numbers of the one row of `bounds.csv`, by column name.
-fn row(dir: &Path) -> impl Fn(&str) -> f64 {
+/// The rows of `bounds.csv` in `dir`, each a lookup of its numbers by
+/// column name.
+fn rows(dir: &Path) -> Vec<impl Fn(&str) -> f64> {
     let text = std::fs::read_to_string(dir.join("bounds.csv")).unwrap();
     let mut lines = text.lines();
-    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    assert_eq!(header.join(","), BOUNDS_HEADER);
-    let values: Vec<f64> = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
-    move |name| values[header.iter().position(|h| h == name).unwrap()]
+    assert_eq!(lines.next().unwrap(), BOUNDS_HEADER);
+    let header: Vec<String> = BOUNDS_HEADER.split(',').map(String::from).collect();
+    lines
+        .map(|line| {
+            let values: Vec<f64> = line.split(',').map(|v| v.parse().unwrap()).collect();
+            let header = header.clone();
+            move |name: &str| values[header.iter().position(|h| h == name).unwrap()]
+        })
+        .collect()
+}
+
+/// Runs `soilcut bounds case.toml` with `args` in a folder holding `case`
+/// and returns the rows of its `bounds.csv`.
+fn bounds_rows(case: &str, args: &[&str]) -> Vec<impl Fn(&str) -> f64> {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("case.toml"), case).unwrap();
+    let mut all = vec!["bounds", "case.toml", "--out", "b"];
+    all.extend(args);
+    let o = soilcut(dir.path(), &all);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for name in ["bounds.json", "case.resolved.toml"] {
+        assert!(dir.path().join("b").join(name).is_file(), "{name}");
+    }
+    // One instant is drawn too.
+    let drawn = dir.path().join("b/bounds.png").is_file();
+    assert_eq!(drawn, args.contains(&"--at"));
+    rows(&dir.path().join("b"))
 }
 
 #[test]
 fn first_increment_is_coulomb_and_lies_within_the_bracket() {
-    let dir = sandbox();
-    let mut args = vec![
-        "bounds",
-        "case.toml",
-        "--at",
-        "0",
-        "--mesh",
-        "4",
-        "--out",
-        "b",
-    ];
+    let mut args = vec!["--at", "0", "--mesh", "4"];
     args.extend(CONSTANT);
-    let o = soilcut(dir.path(), &args);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let get = row(&dir.path().join("b"));
+    let get = bounds_rows(BASE, &args).remove(0);
     let wedge = Wedge {
         unit_weight: 1.0,
         depth: 20.0,
@@ -82,9 +89,6 @@ fn first_increment_is_coulomb_and_lies_within_the_bracket() {
     assert!((get("soilcut_over_lower") - soil / lower).abs() < 1e-12);
     assert_eq!(get("mesh"), 4.0);
     assert!(get("lower_seconds") > 0.0 && get("upper_seconds") > 0.0);
-    for name in ["bounds.json", "case.resolved.toml", "bounds.png"] {
-        assert!(dir.path().join("b").join(name).is_file(), "{name}");
-    }
 }
 
 /// A short refined case with associated flow: φ = ψ = 35° at every shear,
@@ -105,31 +109,12 @@ const ASSOCIATED: [&str; 6] = [
 /// finds no field for the pile from u/d = 0.5 on).
 #[test]
 fn associated_soil_is_never_below_the_lower_bound() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("case.toml"), REFINED).unwrap();
-    let mut args = vec![
-        "bounds",
-        "case.toml",
-        "--every",
-        "0.25",
-        "--mesh",
-        "6",
-        "--out",
-        "b",
-    ];
+    let mut args = vec!["--every", "0.25", "--mesh", "6"];
     args.extend(ASSOCIATED);
-    let o = soilcut(dir.path(), &args);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let text = std::fs::read_to_string(dir.path().join("b/bounds.csv")).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
+    let rows = bounds_rows(REFINED, &args);
     assert_eq!(rows.len(), 4, "u/d = 0, 0.25, 0.5, 0.75");
-    for r in rows {
-        let (lower, upper, soil) = (r[at("lower")], r[at("upper")], r[at("soilcut")]);
+    for get in rows {
+        let (lower, upper, soil) = (get("lower"), get("upper"), get("soilcut"));
         assert!(
             lower <= soil && soil <= 1.02 * upper,
             "{lower} {soil} {upper}"
