@@ -9,7 +9,7 @@ use soilcut_io::{
     OutputError,
 };
 use soilcut_model::Case;
-use soilcut_plot::{draw_bounds, BoundsFields};
+use soilcut_plot::{draw_bounds, draw_panels, BoundsFields, Panel, Series};
 use std::path::Path;
 
 pub const EXAMPLES: &str = "\
@@ -75,17 +75,23 @@ pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
         ("bounds.json", json.clone()),
         ("case.resolved.toml", loaded.resolved_toml()),
     ];
-    // One instant: its fields as a picture too.
-    let picture = match instants.as_slice() {
-        [one] => Some(fields(one, case)),
-        _ => None,
-    };
+    // One instant: its fields; instants through the run: the forces and
+    // ratios against u/d.
     write_output_dir_then(&out, &files, target.force, |staged| {
-        let Some(picture) = &picture else {
-            return Ok(());
+        let (file, drawn) = match instants.as_slice() {
+            [one] => {
+                let file = staged.join("bounds.png");
+                let drawn = draw_bounds(&fields(one, case), &file);
+                (file, drawn)
+            }
+            many => {
+                let file = staged.join("bounds_every.png");
+                let title = format!("{}: soilcut beside the bounds", case.title);
+                let drawn = draw_panels(&title, &through_run(many, case), 2, &file);
+                (file, drawn)
+            }
         };
-        let file = staged.join("bounds.png");
-        draw_bounds(picture, &file).map_err(|e| OutputError::Io {
+        drawn.map_err(|e| OutputError::Io {
             path: file,
             source: std::io::Error::other(e.message),
         })
@@ -151,6 +157,40 @@ fn fields(i: &Instant, case: &Case) -> BoundsFields {
         x_range: (-0.5 * h, reach),
         y_range: (bottom.max(tip.1 / d - 0.5 * h), top + 0.2 * h),
     }
+}
+
+/// The forces over γ0 d² and soilcut's ratios to the bounds against u/d
+/// (instants without a bound leave it out).
+fn through_run(instants: &[Instant], case: &Case) -> Vec<Panel> {
+    let d = case.blade.depth;
+    let norm = case.soil.unit_weight * d * d;
+    let curve = |f: &dyn Fn(&Instant) -> f64| -> Vec<(f64, f64)> {
+        instants
+            .iter()
+            .map(|i| (i.record.u / d, f(i)))
+            .filter(|p| p.1.is_finite())
+            .collect()
+    };
+    vec![
+        Panel {
+            x_label: "u/d (–)".into(),
+            y_label: "horizontal force / (γ₀d²) (–)".into(),
+            series: vec![
+                Series::line("lower bound", curve(&|i| i.bracket.lower_force() / norm)),
+                Series::line("upper bound", curve(&|i| i.bracket.upper_force() / norm)),
+                Series::points("soilcut", curve(&|i| i.record.force_h / norm)),
+            ],
+        },
+        Panel {
+            x_label: "u/d (–)".into(),
+            y_label: "soilcut / bound (–)".into(),
+            series: vec![
+                Series::line("soilcut / lower", curve(&|i| i.ratio_lower())),
+                Series::line("soilcut / upper", curve(&|i| i.ratio_upper())),
+                Series::line("1", curve(&|_| 1.0)),
+            ],
+        },
+    ]
 }
 
 /// Every failure of an instant is the case's or the input's.

@@ -53,9 +53,10 @@ fn bounds_rows(case: &str, args: &[&str]) -> Vec<impl Fn(&str) -> f64> {
     for name in ["bounds.json", "case.resolved.toml"] {
         assert!(dir.path().join("b").join(name).is_file(), "{name}");
     }
-    // One instant is drawn too.
-    let drawn = dir.path().join("b/bounds.png").is_file();
-    assert_eq!(drawn, args.contains(&"--at"));
+    // One instant's fields are drawn, or the instants through the run.
+    let one = args.contains(&"--at");
+    assert_eq!(dir.path().join("b/bounds.png").is_file(), one);
+    assert_eq!(dir.path().join("b/bounds_every.png").is_file(), !one);
     rows(&dir.path().join("b"))
 }
 
