@@ -1,7 +1,7 @@
 //! The bracket against the mesh parameter N on the checks' problems: flat
-//! ground, vertical face, tip at depth d = 1, γ = 1.
+//! ground, tip at depth d = 1, γ = 1, the face at rake RAKE (90: vertical).
 //!
-//! cargo run --release -p soilcut-bounds --example convergence -- PHI PHI_W C Q DEPTH [N...]
+//! cargo run --release -p soilcut-bounds --example convergence -- PHI PHI_W C Q DEPTH RAKE [N...]
 //!
 //! Prints N, triangles, lower, upper, their mean, the half-width relative to
 //! the mean, and the wall time of each bound.
@@ -19,9 +19,10 @@ fn main() {
         cohesion: c,
         unit_weight: 1.0,
     };
-    let p = Problem::flat(1.0, soil, phi_w, q, args[4]);
+    let mut p = Problem::flat(1.0, soil, phi_w, q, args[4]);
+    p.face.rake_deg = args[5];
     println!("N\ttriangles\tlower\tupper\tmean\thalf_width_pct\tlower_s\tupper_s");
-    for n in args[5..].iter().map(|&n| n as usize) {
+    for n in args[6..].iter().map(|&n| n as usize) {
         let b = bracket(&p, n).expect("solved");
         let (lo, up) = (b.lower_force(), b.upper_force());
         let mean = 0.5 * (lo + up);
