@@ -1,6 +1,6 @@
-//! The six-node triangle: the mesh's vertices plus one node at the middle
-//! of every edge, and the derivatives of its quadratic shape functions at
-//! the vertices.
+//! The six-node triangle (its vertices, then the mid-sides of sides (0,1),
+//! (1,2), (2,0)): the derivatives of its quadratic shape functions at the
+//! vertices.
 //!
 //! In area coordinates L_i the shape functions are N_i = L_i (2 L_i − 1) at
 //! the vertices and N_ij = 4 L_i L_j at the mid-sides, with
@@ -8,53 +8,7 @@
 //! At vertex k: ∂N_k = 3 ∂L_k, ∂N_i = −∂L_i (i ≠ k), ∂N_kj = 4 ∂L_j, and the
 //! mid-side opposite k contributes nothing.
 
-use crate::mesh::{twice_area, Mesh};
-use std::collections::HashMap;
-
-/// The six nodes of each triangle: vertices 0–2, then the mid-sides of
-/// sides (0,1), (1,2), (2,0); mid-side nodes are numbered after the mesh's
-/// vertices.
-pub struct Quadratic {
-    /// Node indices per triangle.
-    pub nodes: Vec<[usize; 6]>,
-    /// Total number of nodes (vertices and mid-sides).
-    pub count: usize,
-    /// Mid-side node of each edge by its (smaller, larger) vertex pair.
-    pub midside: HashMap<(usize, usize), usize>,
-}
-
-impl Quadratic {
-    /// Numbers the mid-side nodes in element order.
-    pub fn new(mesh: &Mesh) -> Quadratic {
-        let mut midside = HashMap::new();
-        let mut count = mesh.nodes.len();
-        let nodes = mesh
-            .triangles
-            .iter()
-            .map(|t| {
-                let mut six = [t[0], t[1], t[2], 0, 0, 0];
-                for l in 0..3 {
-                    let key = (t[l].min(t[(l + 1) % 3]), t[l].max(t[(l + 1) % 3]));
-                    six[3 + l] = *midside.entry(key).or_insert_with(|| {
-                        count += 1;
-                        count - 1
-                    });
-                }
-                six
-            })
-            .collect();
-        Quadratic {
-            nodes,
-            count,
-            midside,
-        }
-    }
-
-    /// The mid-side node of edge (a, b).
-    pub fn middle(&self, a: usize, b: usize) -> usize {
-        self.midside[&(a.min(b), a.max(b))]
-    }
-}
+use crate::mesh::twice_area;
 
 /// 2A·∂N/∂x and 2A·∂N/∂y of the six shape functions at vertex k of
 /// triangle `p`, and 2A.

@@ -17,8 +17,9 @@ pub struct BoundsFields {
     pub title: String,
     /// The mesh's triangles, three (x, y) corners each.
     pub triangles: Vec<[(f64, f64); 3]>,
-    /// Per triangle: the upper bound's plastic shear rate, any unit (drawn
-    /// relative to its largest value); NaN where there is no upper bound.
+    /// Per triangle: the upper bound's plastic shear rate (with its edges'
+    /// slip spread over it), any unit (drawn relative to its largest
+    /// value); NaN where there is no upper bound.
     pub shear: Vec<f64>,
     /// Per triangle: the lower bound's mobilised strength, in [0, 1]; NaN
     /// where there is no lower bound.
