@@ -54,12 +54,13 @@ pub struct UpperBound {
     /// (u, v) at each triangle's three vertices, per unit blade velocity.
     pub velocity: Vec<[[f64; 2]; 3]>,
     /// Where the soil fails, per triangle: its mean plastic shear strain
-    /// rate ρ (U1), plus the slip ζ of its edges' discontinuities spread
-    /// over it (half an edge's ∫ ζ ds to each side, over the area): per
-    /// unit blade velocity per unit length.
+    /// rate ρ (U1), plus the slip ζ of its edges' discontinuities in the
+    /// soil spread over it (half an edge's ∫ ζ ds to each side, all of a
+    /// truncation's, over the area; not the slip on the face): per unit
+    /// blade velocity per unit length.
     pub shear_rate: Vec<f64>,
-    /// Dissipation in each triangle and half of its edges', power per unit
-    /// width.
+    /// Dissipation in each triangle and its share of its edges' in the
+    /// soil, power per unit width.
     pub dissipation: Vec<f64>,
     /// Interior-point iterations.
     pub iterations: u32,
@@ -246,12 +247,15 @@ fn edges(lp: &mut Program, p: &Problem, mesh: &Mesh, vel: &Velocity) -> Vec<Slip
             Side::Far => soil_interface(p, mesh, half.0, Across::Rigid([0.0, 0.0])),
         };
         for zeta in interface_edge(lp, nodes, n, len, &interface) {
-            slips.push(Slip {
-                zeta,
-                element: half.0,
-                length: len,
-                cohesion: interface.cohesion,
-            });
+            // The soil's slip on the face is not the soil failing.
+            if side == Side::Far {
+                slips.push(Slip {
+                    zeta,
+                    element: half.0,
+                    length: len,
+                    cohesion: interface.cohesion,
+                });
+            }
         }
     }
     for (first, second) in edges.interior(mesh) {

@@ -36,9 +36,11 @@ pub struct BoundsFields {
     pub y_range: (f64, f64),
 }
 
-/// Draws the upper bound's shear rate (left, white to red) with soilcut's
-/// band (dashed) and the lower bound's mobilised strength (right, white to
-/// blue), 1600 × 700 px, PNG or SVG by `path`'s extension.
+/// Draws the upper bound's shear rate (left, white to red by the square
+/// root of its fraction of the largest, so that a band shows beside the
+/// tip's fan) with soilcut's band (dashed) and the lower bound's mobilised
+/// strength (right, white to blue), 1600 × 700 px, PNG or SVG by `path`'s
+/// extension.
 pub fn draw_bounds(fields: &BoundsFields, path: &Path) -> Result<(), PlotError> {
     let n = fields.triangles.len();
     if n == 0 || fields.shear.len() != n || fields.mobilised.len() != n {
@@ -124,7 +126,13 @@ impl Picture for BoundsFields {
         let shear: Vec<f64> = self
             .shear
             .iter()
-            .map(|s| if largest > 0.0 { s / largest } else { *s })
+            .map(|s| {
+                if largest > 0.0 {
+                    (s / largest).sqrt()
+                } else {
+                    *s
+                }
+            })
             .collect();
         self.panel(
             &left,
