@@ -12,10 +12,10 @@
 //! trench. soilcut's force is that of the increment evaluated on this
 //! ground, its horizontal component (`StepRecord::force_h`).
 
+use crate::bracket::{bracket, Bracket};
 use crate::problem::InputError;
-use crate::problem::{Domain, Face, Ground, Problem, Soil};
+use crate::problem::{Domain, Face, Ground, Problem, Soil, MIN_RAKE};
 use crate::strength::Strength;
-use crate::{bracket, Bracket};
 use soilcut_model::material::Material;
 use soilcut_model::{Case, CaseError, Simulation, StepError, StepRecord};
 
@@ -75,6 +75,9 @@ pub enum InstantError {
     Bounds(InputError),
     /// The case has a blade of finite width; the bounds are plane strain.
     FiniteWidth(f64),
+    /// The case's rake is below the bounds' range (its mesh's columns
+    /// parallel to the face would lie too flat).
+    Rake(f64),
 }
 
 impl std::fmt::Display for InstantError {
@@ -86,6 +89,10 @@ impl std::fmt::Display for InstantError {
             InstantError::FiniteWidth(w) => write!(
                 f,
                 "blade.width = {w}: the bounds are plane strain; remove blade.width"
+            ),
+            InstantError::Rake(a) => write!(
+                f,
+                "blade.rake = {a}: the bounds take a rake in [{MIN_RAKE}, 90] degrees"
             ),
         }
     }
@@ -176,12 +183,21 @@ fn domain(p: &Problem, sim: &Simulation, floor: Floor) -> Domain {
     }
 }
 
-/// Runs `case` to u/d = `at` and brackets the collapse load of the ground
-/// there; soilcut's increment on that ground is evaluated too.
-pub fn at(case: &Case, at: f64, options: Options) -> Result<Instant, InstantError> {
+/// A case the bounds can take: plane strain, a rake in their range.
+fn check(case: &Case) -> Result<(), InstantError> {
     if let Some(w) = case.blade.width {
         return Err(InstantError::FiniteWidth(w));
     }
+    if case.blade.rake < MIN_RAKE {
+        return Err(InstantError::Rake(case.blade.rake));
+    }
+    Ok(())
+}
+
+/// Runs `case` to u/d = `at` and brackets the collapse load of the ground
+/// there; soilcut's increment on that ground is evaluated too.
+pub fn at(case: &Case, at: f64, options: Options) -> Result<Instant, InstantError> {
+    check(case)?;
     let mut sim = Simulation::new(case).map_err(InstantError::Case)?;
     advance_to(&mut sim, at).map_err(InstantError::Step)?;
     instant(&mut sim, options)
@@ -190,9 +206,7 @@ pub fn at(case: &Case, at: f64, options: Options) -> Result<Instant, InstantErro
 /// Brackets at u/d = 0, E, 2E, … through the whole run of `case` (each at
 /// the first increment at or beyond), E = `every` > 0.
 pub fn every(case: &Case, every: f64, options: Options) -> Result<Vec<Instant>, InstantError> {
-    if let Some(w) = case.blade.width {
-        return Err(InstantError::FiniteWidth(w));
-    }
+    check(case)?;
     let mut sim = Simulation::new(case).map_err(InstantError::Case)?;
     let d = case.blade.depth;
     let mut out: Vec<Instant> = Vec::new();

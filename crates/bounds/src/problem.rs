@@ -128,6 +128,10 @@ fn check(key: &str, value: f64, lo: f64, hi: f64) -> Result<(), InputError> {
     })
 }
 
+/// The least rake the mesh takes, degrees: its columns parallel to the
+/// face would lie too flat below it.
+pub const MIN_RAKE: f64 = 30.0;
+
 /// Largest magnitude of any length or stress: keeps the scaled problem's
 /// products finite.
 const BIG: f64 = 1e20;
@@ -146,7 +150,7 @@ impl Problem {
         let f = &self.face;
         check("face.tip_x", f.tip_x, -BIG, BIG)?;
         check("face.tip_y", f.tip_y, -BIG, BIG)?;
-        check("face.rake_deg", f.rake_deg, 30.0, 90.0)?;
+        check("face.rake_deg", f.rake_deg, MIN_RAKE, 90.0)?;
         check("face.friction_deg", f.friction_deg, 0.0, 89.0)?;
         check("face.adhesion", f.adhesion, 0.0, BIG)?;
         check("surcharge", self.surcharge, 0.0, BIG)?;

@@ -145,6 +145,10 @@ fn bad_input_is_refused_naming_the_key_and_range() {
     assert_refused(&["--at", "-1"], "--at must be a number from 0 to");
     assert_refused(&["--every", "0"], "--every must be a number above 0");
     assert_refused(
+        &["--at", "0", "--set", "blade.rake=20"],
+        "blade.rake = 20: the bounds take a rake in [30, 90] degrees",
+    );
+    assert_refused(
         &["--at", "0", "--set", "blade.width=40"],
         "blade.width = 40",
     );
