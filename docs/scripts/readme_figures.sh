@@ -27,3 +27,6 @@ for name in hs s; do
     --out "$out-map-$name" >/dev/null
   cp "$out-map-$name/landscape_map.png" "docs/img/landscape_map_$name.png"
 done
+# The bounds' fields (README, "Rigorous bounds"): the original case at u/d = 2.
+"$soilcut" bounds cases/paper/original.toml --at 2 --force --out "$out-bounds" >/dev/null
+cp "$out-bounds/bounds.png" docs/img/bounds.png

@@ -26,10 +26,11 @@ from ._case import Case
 from ._errors import AccuracyWarning, CaseError, SnapshotError, StepError
 from ._run import Ensemble, Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
-from ._study import FitResult, Landscape, analytic, fit, landscape, sweep
+from ._study import Bounds, FitResult, Landscape, analytic, bounds, fit, landscape, sweep
 
 __all__ = [
     "AccuracyWarning",
+    "Bounds",
     "Case",
     "CaseError",
     "Ensemble",
@@ -43,6 +44,7 @@ __all__ = [
     "StepError",
     "__version__",
     "analytic",
+    "bounds",
     "fit",
     "landscape",
     "run",

@@ -245,3 +245,48 @@ def landscape(case: Case, at: float) -> Landscape:
     ``soilcut landscape --at`` takes it."""
     u, candidates = _soilcut.landscape(native_of(case), float(at))
     return Landscape(u, candidates)
+
+
+class Bounds(NamedTuple):
+    """Rigorous limit-analysis bounds on the ground as it stands at one
+    instant, beside soilcut's force there (``soilcut bounds --at``)."""
+
+    columns: dict[str, np.ndarray]
+    """The columns of ``bounds.csv`` (one row): ``u``, ``u_over_d``,
+    ``depth``, ``face_height`` (length), ``soilcut``, ``lower``, ``upper``
+    (horizontal forces, γ·length² per unit width; NaN for a bound not
+    found), ``soilcut_over_lower``, ``soilcut_over_upper``, ``half_width``,
+    ``mesh``, ``triangles``, ``lower_seconds``, ``upper_seconds`` (s),
+    ``soilcut_force`` (resultant), ``beta_deg``, ``friction_deg``."""
+    lower_status: str
+    """``"Solved"``, or the solver's status (``"PrimalInfeasible"``: no
+    stress field on the mesh carries the ground's own weight with its
+    strength)."""
+    upper_status: str
+    """The same for the upper bound."""
+
+    def __getitem__(self, key):  # type: ignore[override]
+        """A column's one value by name (``b["lower"]``), or a field by index."""
+        if isinstance(key, str):
+            return float(self.columns[key][0])
+        return tuple.__getitem__(self, key)
+
+
+def bounds(
+    case: Case,
+    at: float,
+    *,
+    mesh: int = 8,
+    floor: str = "rigid",
+    strength: str = "associated",
+) -> Bounds:
+    """Lower and upper bounds (finite-element limit analysis) on the
+    horizontal force the ground as it stands before the increment at u/d =
+    ``at`` can carry, beside soilcut's force of that increment, as
+    ``soilcut bounds --at`` computes them: ``mesh`` N in [1, 64], ``floor``
+    "rigid" (soilcut's floor at the tip level) or "soil", ``strength``
+    "associated" or "davis" (docs/model.md §18)."""
+    columns, lower, upper = _soilcut.bounds(
+        native_of(case), float(at), mesh=mesh, floor=floor, strength=strength
+    )
+    return Bounds(columns, lower, upper)

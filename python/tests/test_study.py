@@ -246,3 +246,21 @@ def test_landscape_is_the_cli_landscape(cli, tmp_path, refined):
     assert taken.candidates["force"].min() == run["force"][step], "the least is the run's choice"
     with pytest.raises(ValueError, match="at must be"):
         soilcut.landscape(refined, 2.0)
+
+
+def test_bounds_are_the_cli_bounds(cli, tmp_path, refined):
+    taken = soilcut.bounds(refined, 0, mesh=3)
+    out = tmp_path / "b"
+    run_cli(cli, "bounds", str(REFINED), "--at", "0", "--mesh", "3", "--out", str(out))
+    theirs = soilcut._soilcut.csv_columns("bounds.csv", (out / "bounds.csv").read_text())
+    assert list(taken.columns) == list(theirs)
+    timed = {"lower_seconds", "upper_seconds"}
+    for name, column in theirs.items():
+        if name not in timed:
+            assert taken.columns[name].tolist() == column.tolist(), name
+    assert taken.lower_status == "Solved" and taken.upper_status == "Solved"
+    assert taken["lower"] <= taken["upper"]
+    with pytest.raises(ValueError, match="mesh must be an integer from 1 to 64"):
+        soilcut.bounds(refined, 0, mesh=0)
+    with pytest.raises(ValueError, match="floor must be rigid or soil"):
+        soilcut.bounds(refined, 0, floor="sand")

@@ -2,10 +2,9 @@
 //! a run (the landscape of minimum effort), or a map of such landscapes
 //! through the run.
 
-use crate::{load, CaseOutput, Failure};
+use crate::{load, CaseOutput, Failure, Moment};
 use soilcut_io::{
-    check_landscape_at, check_landscape_every, landscape_at, landscape_csv, landscape_map_csv,
-    write_output_dir_then, LoadedCase, OutputError,
+    landscape_at, landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
 };
 use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
@@ -24,19 +23,11 @@ Examples:
 const MAP_BIN: f64 = 0.05;
 
 #[derive(clap::Args)]
-#[command(group(clap::ArgGroup::new("when").required(true).args(["at", "every"])))]
 pub struct LandscapeArgs {
     #[command(flatten)]
     target: CaseOutput,
-    /// Blade displacement u/d at which to take the landscape: that of the
-    /// first increment at or beyond it, or of the last increment (0 to
-    /// run.travel / blade.depth).
-    #[arg(long, value_name = "U_OVER_D", allow_negative_numbers = true)]
-    at: Option<f64>,
-    /// Instead of one landscape, take one at u/d = 0, E, 2E, … through the
-    /// whole run and map them (E in (0, run.travel / blade.depth]).
-    #[arg(long, value_name = "E", allow_negative_numbers = true)]
-    every: Option<f64>,
+    #[command(flatten)]
+    moment: Moment,
 }
 
 pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
@@ -44,18 +35,13 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     let path = target.case.as_path();
     let loaded = load(path, &target.set)?;
     let case = &loaded.case;
-    let (checked, value) = match (args.at, args.every) {
-        (Some(at), _) => (check_landscape_at(case, "--at", at), at),
-        (None, Some(every)) => (check_landscape_every(case, "--every", every), every),
-        (None, None) => return Err(Failure::input(path, "give --at or --every")),
-    };
-    checked.map_err(|message| Failure::input(path, message))?;
+    args.moment.check(case, path)?;
     let out = target.out_or(&format!("{}-landscape", case.name));
     soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
-    let taken = match args.at {
-        Some(at) => one(&mut sim, &loaded, at, path)?,
-        None => map(&mut sim, &loaded, value, path)?,
+    let taken = match (args.moment.at, args.moment.every) {
+        (Some(at), _) => one(&mut sim, &loaded, at, path)?,
+        (None, every) => map(&mut sim, &loaded, every.unwrap_or(1.0), path)?,
     };
     write_output_dir_then(&out, &taken.files, target.force, |staged| {
         let file = staged.join(taken.picture.name());

@@ -1,5 +1,5 @@
 //! `soilcut`: the command line. Argument parsing and calls into
-//! `soilcut-io` and `soilcut-model` only.
+//! `soilcut-io`, `soilcut-model` and `soilcut-bounds` only.
 //!
 //! Exit codes: 0 success, 2 bad input (case file, `--set`, an occupied
 //! output folder, a case without an admissible mechanism), 1 anything else
@@ -11,6 +11,7 @@
 
 mod accuracy_cmd;
 mod analytic_cmd;
+mod bounds_cmd;
 mod ensemble_cmd;
 mod landscape_cmd;
 mod study_cmd;
@@ -147,6 +148,9 @@ enum Command {
     /// The force of every candidate band at one moment of a run.
     #[command(after_help = landscape_cmd::EXAMPLES)]
     Landscape(landscape_cmd::LandscapeArgs),
+    /// Rigorous lower and upper bounds on the ground's collapse load at an instant, beside soilcut's force.
+    #[command(after_help = bounds_cmd::EXAMPLES)]
+    Bounds(bounds_cmd::BoundsArgs),
     /// Run a case for many values of its keys (a grid or a Latin-hypercube sample), in parallel.
     #[command(after_help = study_cmd::SWEEP_EXAMPLES)]
     Sweep(study_cmd::SweepArgs),
@@ -189,6 +193,34 @@ impl CaseOutput {
         self.out
             .clone()
             .unwrap_or_else(|| Path::new("out").join(name))
+    }
+}
+
+/// The moment of a run a command looks at: one instant, or instants
+/// through the whole run.
+#[derive(clap::Args)]
+#[group(required = true, multiple = false)]
+struct Moment {
+    /// Blade displacement u/d of the instant: that of the first increment
+    /// at or beyond it, or of the last increment (0 to run.travel /
+    /// blade.depth).
+    #[arg(long, value_name = "U_OVER_D", allow_negative_numbers = true)]
+    at: Option<f64>,
+    /// Instead of one instant, take one at u/d = 0, E, 2E, … through the
+    /// whole run (E in (0, run.travel / blade.depth]).
+    #[arg(long, value_name = "E", allow_negative_numbers = true)]
+    every: Option<f64>,
+}
+
+impl Moment {
+    /// Checks --at or --every against the case's travel.
+    fn check(&self, case: &Case, path: &Path) -> Result<(), Failure> {
+        let checked = match (self.at, self.every) {
+            (Some(at), _) => soilcut_io::check_landscape_at(case, "--at", at),
+            (None, Some(every)) => soilcut_io::check_landscape_every(case, "--every", every),
+            (None, None) => Err("give --at or --every".into()),
+        };
+        checked.map_err(|message| Failure::input(path, message))
     }
 }
 
@@ -295,6 +327,7 @@ fn main() -> ExitCode {
             measured,
         } => compare(&dirs, measured.as_deref(), &out),
         Command::Landscape(args) => landscape_cmd::landscape(args),
+        Command::Bounds(args) => bounds_cmd::bounds(args),
         Command::Sweep(args) => study_cmd::sweep(args),
         Command::Fit(args) => study_cmd::fit(args),
         Command::Converge(args) => study_cmd::converge(args),

@@ -21,6 +21,7 @@
 
 #![warn(missing_docs)]
 
+mod bounds;
 mod case_file;
 mod columns;
 mod csv_text;
@@ -34,6 +35,9 @@ mod overrides;
 mod pictures;
 mod record;
 
+pub use bounds::{
+    bounds_columns, bounds_json, bounds_options, floor_name, strength_name, BOUNDS_HEADER,
+};
 pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
     unknown_key, LoadedCase,

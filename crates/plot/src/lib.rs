@@ -15,6 +15,7 @@
 //! * [`draw_landscape_map`]: how near each place comes to the least force,
 //!   increment after increment.
 //! * [`draw_panels`]: panels of points and lines (parameter studies).
+//! * [`draw_bounds`]: the limit-analysis bounds' fields at one instant.
 //!
 //! Lengths are drawn divided by the blade depth d (the case's length unit
 //! is not stored with a run), so every axis is dimensionless.
@@ -26,6 +27,7 @@
 
 mod animation;
 mod blade;
+mod bounds;
 mod curves;
 mod deformation;
 mod envelope;
@@ -36,6 +38,7 @@ mod style;
 mod typeset;
 
 pub use animation::draw_animation;
+pub use bounds::{draw_bounds, BoundsFields};
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
 pub use envelope::{draw_envelope, Envelope};

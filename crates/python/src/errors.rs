@@ -59,7 +59,7 @@ pub fn key_error(py: Python<'_>, key: &str, message: &str) -> PyErr {
 }
 
 /// `soilcut.StepError`: an increment without an admissible mechanism.
-fn step_error(py: Python<'_>, e: StepError) -> PyErr {
+pub fn step_error(py: Python<'_>, e: StepError) -> PyErr {
     raise(py, "StepError", e.to_string(), None)
 }
 

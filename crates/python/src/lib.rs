@@ -1,8 +1,10 @@
 //! `soilcut._soilcut`: the Python extension of soilcut. Type conversions
-//! only, over `soilcut-model`, `soilcut-io` and `soilcut-study`; the
+//! only, over `soilcut-model`, `soilcut-io`, `soilcut-study` and
+//! `soilcut-bounds`; the
 //! Python package `soilcut` (python/soilcut) builds its API on it. Every
 //! simulation runs with the interpreter released (`Python::detach`).
 
+mod bounds;
 mod case;
 mod convert;
 mod ensemble;
@@ -29,6 +31,7 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::bounds, m)?)?;
     m.add_function(wrap_pyfunction!(ensemble::ensemble, m)?)?;
     m.add_class::<ensemble::EnsembleRun>()?;
     m.add_class::<simulation::Simulation>()?;
