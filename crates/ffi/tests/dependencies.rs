@@ -16,10 +16,8 @@ fn the_c_abi_links_no_plotting_crate() {
             "--prefix",
             "none",
         ])
-        .args([
-            "--manifest-path",
-            concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"),
-        ])
+        .arg("--manifest-path")
+        .arg(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"))
         .output()
         .expect("cargo tree runs");
     assert!(
