@@ -12,11 +12,24 @@ fn main() {
 }
 
 /// Whole run of `cases/paper/fig5.toml` at increments d/200 to d/2000
-/// (`docs/performance.md`: run time against the increment).
+/// with the default search (`docs/performance.md`: run time against the
+/// increment).
 #[divan::bench(args = [200, 250, 500, 1000, 2000], sample_count = 3, sample_size = 1)]
 fn fig5_run(bencher: Bencher, per_depth: u32) {
     let increment = format!("run.increment={}", 20.0 / per_depth as f64);
     let case = shipped_case("paper/fig5.toml", &[&increment]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
+/// The same with the exhaustive search (`run.samples_per_band = 0`), the
+/// search before issue 28, for the ratio in one bench run.
+#[divan::bench(args = [250, 500, 1000], sample_count = 3, sample_size = 1)]
+fn fig5_run_exhaustive(bencher: Bencher, per_depth: u32) {
+    let increment = format!("run.increment={}", 20.0 / per_depth as f64);
+    let case = shipped_case("paper/fig5.toml", &[&increment, "run.samples_per_band=0"]);
     let evaluations = run(&case);
     bencher
         .counter(ItemsCount::new(evaluations))

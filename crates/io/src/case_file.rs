@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 use soilcut_model::{
     default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
     Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, UnitWeightRule,
-    DEFAULT_INCREMENTS_PER_DEPTH,
+    DEFAULT_INCREMENTS_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -207,7 +207,7 @@ struct AngleFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { travel, increment, node_spacing }"
+    expecting = "a table { travel, increment, node_spacing, samples_per_band }"
 )]
 struct RunFile {
     travel: f64,
@@ -215,6 +215,8 @@ struct RunFile {
     increment: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     node_spacing: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    samples_per_band: Option<f64>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -560,6 +562,10 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         .run
         .node_spacing
         .get_or_insert_with(|| default_node_spacing(&soil, depth, increment));
+    let samples_per_band = *file
+        .run
+        .samples_per_band
+        .get_or_insert(DEFAULT_SAMPLES_PER_BAND);
     let case = Case {
         name: file.name.clone(),
         title,
@@ -577,6 +583,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             travel: file.run.travel,
             increment,
             node_spacing,
+            samples_per_band,
         },
         bin: Bin {
             length: file.bin.map(|b| b.length),

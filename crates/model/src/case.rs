@@ -11,7 +11,10 @@ mod error;
 mod validate;
 mod warnings;
 
-pub use defaults::{default_node_spacing, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH};
+pub use defaults::{
+    default_node_spacing, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
+    DEFAULT_SAMPLES_PER_BAND,
+};
 pub use error::CaseError;
 pub use validate::{MAGNITUDE, MAX_NODES, THINNEST_WIDTH};
 
@@ -134,6 +137,9 @@ pub struct Run {
     /// h: spacing of the surface nodes, a whole multiple k = h / v0 of the
     /// increment (k = 1 is the reference scheme; see `surface`).
     pub node_spacing: f64,
+    /// Candidates the search's first stage evaluates per band width dB
+    /// (0: every node; `Case::search_stride`, docs/model.md §2.8).
+    pub samples_per_band: f64,
 }
 
 /// How a candidate band takes its angles from the nodes it touches.
@@ -262,6 +268,19 @@ impl Case {
         (self.run.node_spacing / self.run.increment)
             .round()
             .max(1.0) as usize
+    }
+
+    /// The search's stride: its first stage evaluates every stride-th
+    /// candidate from the face, dB / (samples h) nodes apart (at least 1;
+    /// 1 for a slip line or with `run.samples_per_band` = 0), its second
+    /// every node within a stride of the best of those (docs/model.md §2.8).
+    pub fn search_stride(&self) -> usize {
+        let samples = self.run.samples_per_band;
+        if samples == 0.0 {
+            return 1;
+        }
+        let spacing = samples * self.run.node_spacing;
+        ((self.soil.band_width / spacing).floor() as usize).max(1)
     }
 
     /// The last node of the ground: the node at or before the end wall

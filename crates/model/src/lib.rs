@@ -38,7 +38,7 @@ pub use case::default_node_spacing;
 pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule,
     Model, Run, Soil, UnitWeightRule, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
-    MAGNITUDE,
+    DEFAULT_SAMPLES_PER_BAND, MAGNITUDE,
 };
 pub use landscape::Candidate;
 pub use simulation::{

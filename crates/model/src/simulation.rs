@@ -347,6 +347,7 @@ impl Simulation {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(),
             crescents,
+            stride: self.case.search_stride(),
         };
         let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.

@@ -38,6 +38,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             travel: travel_depths * d,
             increment: d / per_depth,
             node_spacing: d / per_depth,
+            samples_per_band: 0.0,
         },
         bin: Default::default(),
         choices: Default::default(),
@@ -102,4 +103,33 @@ pub fn window_means(history: &[soilcut_model::StepRecord], d: f64, windows: usiz
             window.iter().sum::<f64>() / window.len() as f64
         })
         .collect()
+}
+
+/// Over the increments checked (every `every`-th): how many, how many
+/// above the landscape's least force by more than the tie tolerance, and
+/// the largest relative excess. Fails if a force is below the least.
+pub fn least_force_excess(case: &Case, every: usize) -> (usize, usize, f64) {
+    let mut sim = soilcut_model::Simulation::new(case).expect("a valid case");
+    let (mut checked, mut above, mut largest) = (0, 0, 0.0f64);
+    while !sim.is_done() {
+        let least = sim.steps_done().is_multiple_of(every).then(|| {
+            let candidates = sim.landscape().expect("a mechanism");
+            candidates
+                .iter()
+                .map(|c| c.force)
+                .fold(f64::INFINITY, f64::min)
+        });
+        let record = sim.step().expect("a mechanism");
+        let Some(least) = least else { continue };
+        let e = record.force / least - 1.0;
+        assert!(
+            e >= -soilcut_model::search::TIE_TOLERANCE,
+            "step {}: {e:e} below the least",
+            record.step
+        );
+        checked += 1;
+        above += usize::from(e > soilcut_model::search::TIE_TOLERANCE);
+        largest = largest.max(e);
+    }
+    (checked, above, largest)
 }

@@ -15,6 +15,7 @@ use soilcut_model::accuracy::{agreement, Spread};
 use soilcut_model::search::TIE_TOLERANCE;
 use soilcut_model::{
     default_node_spacing, AngleLaw, Case, Model, Simulation, DEFAULT_INCREMENTS_PER_DEPTH,
+    DEFAULT_SAMPLES_PER_BAND,
 };
 
 /// Fractions in [0, 1) drawn in turn: the random choices of one case.
@@ -178,6 +179,29 @@ fn runs_and_conserves(case: &Case) {
     }
 }
 
+/// The same random cases, refined, at v0 = d/200 with the sampled search
+/// (strides of 2 to 15 nodes): never below the least force of the full
+/// landscape, above it at few increments and by little
+/// (`sampled_search.rs`).
+#[test]
+fn random_cases_with_the_sampled_search_find_the_least_force() {
+    for_random(4, (20, 16), |draws| {
+        let mut case = case_of(draws);
+        if case.soil.band_width == 0.0 {
+            return;
+        }
+        case.run.increment = case.blade.depth / 200.0;
+        case.run.node_spacing = case.run.increment;
+        case.run.samples_per_band = 8.0;
+        let (checked, above, largest) = common::least_force_excess(&case, 7);
+        assert!(
+            above * 10 <= checked,
+            "{above} of {checked} above: {case:?}"
+        );
+        assert!(largest < 1e-2, "{largest:e} above: {case:?}");
+    });
+}
+
 /// The same random cases on coarse node grids (h = k v0, k from 2 to 8).
 #[test]
 fn random_cases_on_coarse_grids_run_and_conserve() {
@@ -213,15 +237,18 @@ fn ensemble(case: &Case, windows: usize) -> (Vec<Spread>, Spread) {
 }
 
 /// `case` at `increment` and `node_spacing`.
-fn at(case: &Case, increment: f64, node_spacing: f64) -> Case {
+/// `case` at `increment` and `node_spacing`, with `samples` per band width
+/// in the search (0: every node).
+fn at(case: &Case, increment: f64, node_spacing: f64, samples: f64) -> Case {
     let mut c = case.clone();
     c.run.increment = increment;
     c.run.node_spacing = node_spacing;
+    c.run.samples_per_band = samples;
     c
 }
 
-/// At the default grid (`DEFAULT_INCREMENTS_PER_DEPTH`,
-/// `default_node_spacing`) the ensembles of random cases it was not chosen
+/// At the default grid and search (`DEFAULT_INCREMENTS_PER_DEPTH`,
+/// `default_node_spacing`, `DEFAULT_SAMPLES_PER_BAND`) the ensembles of random cases it was not chosen
 /// on are accurate by the ensemble rule (M40) against the reference grid's
 /// ensemble at d/2000, over the first 1.5 depths of travel; where the soil
 /// does not soften, the default is the coarse grid.
@@ -240,9 +267,9 @@ fn the_default_grid_is_accurate_on_random_cases() {
             let v0 = d / DEFAULT_INCREMENTS_PER_DEPTH;
             let h = default_node_spacing(&case.soil, d, v0);
             assert_eq!(h > v0, !case.soil.softens());
-            let (windows, whole) = ensemble(&at(&case, v0, h), 1);
+            let (windows, whole) = ensemble(&at(&case, v0, h, DEFAULT_SAMPLES_PER_BAND), 1);
             let fine = d / 2000.0;
-            let (ref_windows, ref_whole) = ensemble(&at(&case, fine, fine), 1);
+            let (ref_windows, ref_whole) = ensemble(&at(&case, fine, fine, 0.0), 1);
             let a = agreement(&windows, &whole, &ref_windows, &ref_whole);
             assert!(a.accurate(), "{a:?}: {case:?}");
         });

@@ -13,6 +13,12 @@ use super::Soil;
 /// `default_node_spacing`.
 pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1000.0;
 
+/// `run.samples_per_band` when a case does not give it: the search's first
+/// stage evaluates 8 candidates per band width (`Case::search_stride`),
+/// accurate by the ensemble rule on every paper case and the tine and
+/// dozer (`docs/studies/ensemble-accuracy/`).
+pub const DEFAULT_SAMPLES_PER_BAND: f64 = 8.0;
+
 /// Node spacings per blade depth of the default coarse grid, used where
 /// the soil never softens: h = d / 25 at v0 = d / 1000 is accurate by the
 /// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`).

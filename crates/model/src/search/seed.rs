@@ -5,16 +5,18 @@
 use super::angles::footprint_angles;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
+use crate::laws::BandAngles;
 use crate::surface::Surface;
 
-/// Force of candidate j computed on its own (an upper bound for the scan),
-/// if it is admissible; `lines` as at the scan's start.
+/// Candidate j computed on its own (its force an upper bound for the
+/// scan), if it is admissible: its line, band angles and the running sums
+/// before it; `lines` as at the scan's start.
 pub(super) fn seed(
     surface: &Surface,
     input: &SearchInput,
     mut lines: Lines,
     j: usize,
-) -> Option<f64> {
+) -> Option<(Lines, Line, BandAngles)> {
     let b = lines.face.node;
     if j <= b || j + 1 >= surface.len() {
         return None;
@@ -34,5 +36,5 @@ pub(super) fn seed(
     let band = line.slope.band(&lines, j, input.band_width);
     let m = band.footprint(&surface.height);
     let angles = input.laws.band_angles(footprint_angles(surface, j, m));
-    line.force(input, &lines, angles)
+    Some((lines, line, angles))
 }
