@@ -743,6 +743,24 @@ mod tests {
     }
 
     #[test]
+    fn samples_per_band_defaults_and_refuses_a_negative_count() {
+        let loaded = parse_case(ORIGINAL, &[]).unwrap();
+        let samples = loaded.case.run.samples_per_band;
+        assert_eq!(samples, soilcut_model::DEFAULT_SAMPLES_PER_BAND);
+        let resolved = loaded.resolved_toml();
+        assert!(
+            resolved.contains(&format!("samples_per_band = {samples:?}")),
+            "{resolved}"
+        );
+        let every = parse_case(ORIGINAL, &["run.samples_per_band=0".parse().unwrap()]).unwrap();
+        assert_eq!(every.case.search_stride(), 1);
+        for bad in ["-1", "nan", "inf"] {
+            let e = key_error(ORIGINAL, &[&format!("run.samples_per_band={bad}")]);
+            assert_eq!(e.key, "run.samples_per_band", "{bad}");
+        }
+    }
+
+    #[test]
     fn resolved_round_trip_is_identical() {
         for text in [ORIGINAL, REFINED] {
             let loaded = parse_case(text, &[]).unwrap();
