@@ -42,11 +42,11 @@ pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
     unknown_key, LoadedCase,
 };
-pub use columns::Columns;
-pub use error::{visible, InputError, OutputError};
+pub use columns::{Columns, Table};
+pub use error::{visible, InputError, OutputError, RunFilesError};
 pub use finished::{
-    frames_columns, frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table,
-    FRAMES_HEADER, FRAME_ROWS,
+    frames_columns, frames_csv, read_finished_run, FinishedRun, SurfaceFrame, FRAMES_HEADER,
+    FRAME_ROWS,
 };
 pub use landscape::{
     check_landscape_at, check_landscape_every, landscape_at, landscape_columns, landscape_csv,
@@ -58,9 +58,9 @@ pub use measured::{
 };
 pub use output::{
     check_output_dir, history_columns, peak_prominence_rule, profile_columns, write_output_dir,
-    write_output_dir_then, RunOutput, HISTORY_HEADER, PROFILE_HEADER,
+    write_output_dir_then, RunOutput, RunTables, HISTORY_HEADER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
 #[cfg(feature = "pictures")]
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
-pub use record::{record_files, record_run, RecordedRun, RunTables, ANIMATION_FRAMES};
+pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};

@@ -2,8 +2,8 @@
 //! `soilcut-plot`. Every front end writes a run's folder through
 //! [`write_run_dir`], so the folders are identical.
 
-use crate::error::OutputError;
-use crate::finished::{read_finished_run, FinishedRun, RunFilesError};
+use crate::error::{OutputError, RunFilesError};
+use crate::finished::{read_finished_run, FinishedRun};
 use crate::output::write_output_dir_then;
 use soilcut_plot::{Frame, Increment, Measured, PlotError, RunData, SurfacePoint};
 use std::path::{Path, PathBuf};
