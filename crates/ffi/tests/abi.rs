@@ -14,7 +14,7 @@ const ORIGINAL: &str = include_str!("../../../cases/paper/original.toml");
 fn short(steps: usize) -> String {
     ORIGINAL.replace(
         "travel = 100.0",
-        &format!("travel = {}", steps as f64 * 0.04),
+        &format!("travel = {}\nincrement = 0.04", steps as f64 * 0.04),
     )
 }
 
@@ -192,7 +192,7 @@ fn a_bad_case_file_names_the_path_and_the_key() {
         message.starts_with(path.to_str().unwrap()) && message.contains(": blade.rake: "),
         "{message}"
     );
-    let travel = CString::new("run.travel=0.08").unwrap();
+    let travel = CString::new("run.travel=0.04").unwrap();
     let sets = [travel.as_ptr()];
     let code = unsafe { soilcut_new_from_file(path.as_ptr(), sets.as_ptr(), 1, &mut sim) };
     assert_eq!(code, SOILCUT_OK);
