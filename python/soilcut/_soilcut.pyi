@@ -19,7 +19,12 @@ __version__: str
 class Step:
     """One increment (a row of ``history.csv``): forces per unit width
     (γ·length², force per unit width), or per blade with ``blade.width``
-    (γ·length³), lengths in the case's unit, angles in degrees."""
+    (γ·length³), lengths in the case's unit, angles in degrees. Its
+    attributes are the columns of ``history.csv`` (:attr:`fields`), served
+    by ``__getattr__`` from the one list of them (soilcut-io's ``HISTORY``)."""
+
+    fields: tuple[str, ...]
+    """The names of the record's values, ``history.csv``'s columns in order."""
 
     @property
     def step(self) -> int:
@@ -27,6 +32,9 @@ class Step:
     @property
     def u(self) -> float:
         """Blade displacement u at which the mechanism was evaluated (length)."""
+    @property
+    def u_over_d(self) -> float:
+        """u / d, d = blade.depth."""
     @property
     def force(self) -> float:
         """Resultant blade force P per unit width (γ·length², force per unit width)."""
@@ -71,6 +79,8 @@ class Step:
     def mass_spilled(self) -> float:
         """Weight of the soil spilled around the blade's edges so far (0 in
         plane strain; units of ``mass``)."""
+    def __getattr__(self, name: str) -> Any: ...
+    def __dir__(self) -> list[str]: ...
     def __repr__(self) -> str: ...
 
 class Simulation:

@@ -26,12 +26,18 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
 }
 
 fn module_of(src: &Path, file: &Path) -> Module {
-    let rel = file.strip_prefix(src).expect("under src").with_extension("");
+    let rel = file
+        .strip_prefix(src)
+        .expect("under src")
+        .with_extension("");
     let mut parts: Module = rel
         .components()
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
         .collect();
-    if matches!(parts.last().map(String::as_str), Some("lib" | "main" | "mod")) {
+    if matches!(
+        parts.last().map(String::as_str),
+        Some("lib" | "main" | "mod")
+    ) {
         parts.pop();
     }
     parts
@@ -78,13 +84,21 @@ fn expand(tree: &str) -> Vec<String> {
             '{' => depth += 1,
             '}' => depth -= 1,
             ',' if depth == 0 => {
-                out.extend(expand(&inner[from..i]).into_iter().map(|t| format!("{prefix}{t}")));
+                out.extend(
+                    expand(&inner[from..i])
+                        .into_iter()
+                        .map(|t| format!("{prefix}{t}")),
+                );
                 from = i + 1;
             }
             _ => {}
         }
     }
-    out.extend(expand(&inner[from..]).into_iter().map(|t| format!("{prefix}{t}")));
+    out.extend(
+        expand(&inner[from..])
+            .into_iter()
+            .map(|t| format!("{prefix}{t}")),
+    );
     out
 }
 
@@ -118,8 +132,10 @@ fn targets(from: &Module, declaration: &str) -> Vec<Module> {
 fn graph(src: &Path) -> BTreeMap<Module, BTreeSet<Module>> {
     let mut files = Vec::new();
     rust_files(src, &mut files);
-    let modules: BTreeMap<Module, PathBuf> =
-        files.iter().map(|f| (module_of(src, f), f.clone())).collect();
+    let modules: BTreeMap<Module, PathBuf> = files
+        .iter()
+        .map(|f| (module_of(src, f), f.clone()))
+        .collect();
     let mut edges = BTreeMap::new();
     for (module, file) in &modules {
         let text = fs::read_to_string(file).expect("a source file");
@@ -140,7 +156,10 @@ fn graph(src: &Path) -> BTreeMap<Module, BTreeSet<Module>> {
 }
 
 /// A cycle through `start`, if one exists (depth-first search).
-fn cycle_through(edges: &BTreeMap<Module, BTreeSet<Module>>, start: &Module) -> Option<Vec<Module>> {
+fn cycle_through(
+    edges: &BTreeMap<Module, BTreeSet<Module>>,
+    start: &Module,
+) -> Option<Vec<Module>> {
     let mut stack = vec![(start.clone(), vec![start.clone()])];
     let mut seen = BTreeSet::new();
     while let Some((at, path)) = stack.pop() {

@@ -6,8 +6,7 @@ use crate::errors::{case_error, case_message, detached};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
-use soilcut_io::{check_landscape_at, landscape_at, landscape_columns};
-use soilcut_model::analytic::{Baseline, Wedge};
+use soilcut_io::{baselines, check_landscape_at, landscape_at, landscape_columns};
 use soilcut_model::Simulation;
 use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
 use soilcut_study::sample::{Sample, Vary};
@@ -271,47 +270,23 @@ pub fn fit<'py>(
     Ok(out)
 }
 
-fn baseline<'py>(py: Python<'py>, b: Option<Baseline>, norm: f64) -> PyResult<Bound<'py, PyAny>> {
-    let Some(b) = b else {
-        return Ok(py.None().into_bound(py));
-    };
-    let d = PyDict::new(py);
-    d.set_item("force", b.force)?;
-    d.set_item("force_norm", b.force / norm)?;
-    d.set_item("force_h", b.force_h)?;
-    d.set_item("force_v", b.force_v)?;
-    d.set_item("failure_angle_deg", b.failure_angle.to_degrees())?;
-    if let Some(f) = b.factors {
-        let factors = PyDict::new(py);
-        factors.set_item("n_gamma", f.n_gamma)?;
-        factors.set_item("n_c", f.n_c)?;
-        factors.set_item("n_a", f.n_a)?;
-        factors.set_item("n_q", f.n_q)?;
-        d.set_item("factors", factors)?;
-    }
-    Ok(d.into_any())
-}
-
 /// The analytical baselines of the case's initial flat ground, as
-/// `soilcut analytic` prints them: `rankine`, `coulomb` and `fee`, each a
-/// dict (or None where no wedge is admissible).
+/// `soilcut analytic` prints them and `summary.json` holds them
+/// (`soilcut_io::baselines`): `rankine`, `coulomb` and `fee`, each a dict
+/// (or None where no wedge is admissible), in the library's order.
 #[pyfunction]
 pub fn analytic<'py>(py: Python<'py>, case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
     let case = Case::extract(case)?.get().loaded.case.clone();
-    let wedge = Wedge::of_case(&case);
-    let norm = case.force_scale();
-    let out = PyDict::new(py);
-    out.set_item("rankine", baseline(py, Some(wedge.rankine()), norm)?)?;
-    out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
-    out.set_item("fee", baseline(py, wedge.fee(), norm)?)?;
-    if let Some(w) = case.blade.width {
-        let narrow = wedge.mckyes_ali(w);
-        let d = baseline(py, narrow.map(|n| n.baseline), norm * w)?;
-        if let (Some(n), Ok(dict)) = (narrow, d.cast::<PyDict>()) {
-            dict.set_item("rupture", n.rupture)?;
-            dict.set_item("crescent_angle_deg", n.crescent_angle.to_degrees())?;
-        }
-        out.set_item("mckyes_ali", d)?;
+    let text = serde_json::to_string(&baselines(&case)).expect("baselines serialise");
+    // Python's json keeps the fields' order and reads every float back
+    // exactly (serde_json writes the shortest round-trip form).
+    let out = PyModule::import(py, "json")?
+        .call_method1("loads", (text,))?
+        .cast_into::<PyDict>()?;
+    if case.blade.width.is_some() && !out.contains("mckyes_ali")? {
+        // summary.json leaves out a blade's baseline without an admissible
+        // wedge; Python has said None there.
+        out.set_item("mckyes_ali", py.None())?;
     }
     Ok(out)
 }
