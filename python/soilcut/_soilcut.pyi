@@ -15,6 +15,12 @@ import numpy as np
 from ._case import Case
 
 __version__: str
+FIT_EVALUATIONS: int
+"""Default runs of a fit's global search (``soilcut fit --evaluations``)."""
+FIT_POLISH_ITERATIONS: int
+"""Default Nelder-Mead iterations of a fit's polish (``--polish``)."""
+FIT_PROFILE_GRID: int
+"""Default grid of a fit's profiles (``--profile-points``)."""
 
 class Step:
     """One increment (a row of ``history.csv``): forces per unit width
@@ -231,14 +237,13 @@ def analytic(case: CaseLike) -> dict[str, dict[str, Any] | None]: ...
 def sweep_points(
     case: CaseLike, varies: list[tuple[str, Any]], sample: str, seed: int
 ) -> tuple[list[str], list[list[Any]]]: ...
-def sweep_csv(
+def sweep_run(
     case: CaseLike, varies: list[tuple[str, Any]], sample: str, seed: int, jobs: int
-) -> tuple[str, str]: ...
+) -> dict[str, Any]: ...
 def sweep_check(case: CaseLike, keys: list[str], values: list[Any]) -> None: ...
-def sweep_header(keys: list[str]) -> str: ...
 def sweep_row(
     case: CaseLike, keys: list[str], values: list[Any], run: int, total: int
-) -> tuple[str, float]: ...
+) -> tuple[dict[str, Any], float]: ...
 def fit(
     case: CaseLike,
     measured: list[tuple[float, float]],

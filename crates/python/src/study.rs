@@ -6,6 +6,7 @@ use crate::errors::{case_error, case_message, detached};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
+use pyo3::IntoPyObjectExt;
 use soilcut_io::{baselines, check_landscape_at, landscape_at, landscape_columns};
 use soilcut_model::Simulation;
 use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
@@ -108,22 +109,57 @@ pub fn sweep_points<'py>(
     Ok((keys, points))
 }
 
-/// `sweep.csv` of a whole sweep run on `jobs` threads (0: one per core),
-/// and `timing.csv`.
+/// The table of `sweep.csv` as columns, in its order: `run` (whole
+/// numbers), the varied keys' values, `status`, `error` (NaN where a run
+/// did not fail, as pandas reads an empty field), then the figures as
+/// float64 arrays ([`SweepResult::figure_columns`], NaN where a run
+/// failed).
+fn sweep_table<'py>(py: Python<'py>, result: &SweepResult) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let rows = &result.rows;
+    out.set_item("run", rows.iter().map(|r| r.run).collect::<Vec<_>>())?;
+    for (k, key) in result.keys.iter().enumerate() {
+        let values = rows
+            .iter()
+            .map(|r| from_toml(py, &r.values[k]))
+            .collect::<PyResult<Vec<_>>>()?;
+        out.set_item(key, values)?;
+    }
+    let status: Vec<&str> = rows
+        .iter()
+        .map(|r| if r.outcome.is_ok() { "ok" } else { "failed" })
+        .collect();
+    out.set_item("status", status)?;
+    let errors = rows
+        .iter()
+        .map(|r| match &r.outcome {
+            Ok(_) => f64::NAN.into_py_any(py),
+            Err(e) => e.into_py_any(py),
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    out.set_item("error", errors)?;
+    for (name, values) in arrays(py, &result.figure_columns())?.iter() {
+        out.set_item(name, values)?;
+    }
+    Ok(out)
+}
+
+/// A whole sweep run on `jobs` threads (0: one per core), as the columns
+/// of `sweep.csv` (see `sweep_table`).
 #[pyfunction]
-pub fn sweep_csv(
-    py: Python<'_>,
-    case: &Bound<'_, PyAny>,
-    varies: Vec<(String, Bound<'_, PyAny>)>,
+pub fn sweep_run<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
+    varies: Vec<(String, Bound<'py, PyAny>)>,
     sample: &str,
     seed: u64,
     jobs: usize,
-) -> PyResult<(String, String)> {
+) -> PyResult<Bound<'py, PyDict>> {
     let sweep = sweep_of(py, case, varies, sample, seed, jobs)?;
     let result = py
         .detach(|| sweep.run(&no_progress))
         .map_err(|e| study_error(py, e))?;
-    Ok((result.csv(), result.timing_csv()))
+    sweep_table(py, &result)
 }
 
 /// One run's values of `keys` as TOML values.
@@ -149,23 +185,18 @@ pub fn sweep_check(
     check_keys(&base, &keys, &values).map_err(|e| study_error(py, e))
 }
 
-/// The header line of `sweep.csv` for a sweep over `keys`.
+/// Run `run` (from 1) of `total` of a sweep over `keys`: its row of
+/// `sweep.csv` as columns of one value (see `sweep_table`) and its wall
+/// time.
 #[pyfunction]
-pub fn sweep_header(keys: Vec<String>) -> String {
-    SweepResult { keys, rows: vec![] }.csv()
-}
-
-/// Run `run` (from 1) of `total` of a sweep over `keys`: its line of
-/// `sweep.csv` (without the header) and its wall time.
-#[pyfunction]
-pub fn sweep_row(
-    py: Python<'_>,
-    case: &Bound<'_, PyAny>,
+pub fn sweep_row<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
     keys: Vec<String>,
-    values: Vec<Bound<'_, PyAny>>,
+    values: Vec<Bound<'py, PyAny>>,
     run: usize,
     total: usize,
-) -> PyResult<(String, f64)> {
+) -> PyResult<(Bound<'py, PyDict>, f64)> {
     if run == 0 || run > total {
         return Err(PyValueError::new_err(format!(
             "run {run}: runs are numbered from 1 to total = {total}"
@@ -187,9 +218,7 @@ pub fn sweep_row(
         keys,
         rows: vec![row],
     };
-    let csv = result.csv();
-    let line = csv.split_once('\n').map_or("", |(_, rows)| rows);
-    Ok((line.to_string(), wall_time_s))
+    Ok((sweep_table(py, &result)?, wall_time_s))
 }
 
 /// A calibration as `soilcut fit` makes it: the best values, their
@@ -215,7 +244,6 @@ pub fn fit<'py>(
     let case = case.get();
     let title = case.loaded.case.title.clone();
     let w = measured_width(width, &case.loaded.case, "width").map_err(|e| study_error(py, e))?;
-    let measured: Vec<(f64, f64)> = measured.iter().map(|&(u, p)| (u, p / w)).collect();
     let compare: Compare = objective
         .parse()
         .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
@@ -225,12 +253,13 @@ pub fn fit<'py>(
     let (evaluations, population, polish_iterations, profile_grid) = budget;
     let weights = vec![1.0; measured.len()];
     let fit = Fit {
-        tests: vec![Test {
-            name: "measured".to_string(),
-            base: case.base(py)?,
-            measured,
+        tests: vec![Test::per_width(
+            "measured",
+            case.base(py)?,
+            &measured,
             weights,
-        }],
+            w,
+        )],
         free,
         bounds,
         compare,
@@ -258,13 +287,8 @@ pub fn fit<'py>(
     out.set_item("best_rms", r.best.rms)?;
     out.set_item("start_rms", r.start.rms)?;
     let files = PyDict::new(py);
-    files.set_item("fit.md", r.markdown(&title))?;
-    files.set_item("fit.csv", r.csv())?;
-    files.set_item("curves.csv", r.curves_csv())?;
-    files.set_item("profiles.csv", r.profiles_csv())?;
-    files.set_item("search.csv", r.search_csv())?;
-    for (name, toml) in r.best_tomls() {
-        files.set_item(name, toml)?;
+    for (name, text) in r.files(&title) {
+        files.set_item(name, text)?;
     }
     out.set_item("files", files)?;
     Ok(out)
