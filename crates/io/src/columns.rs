@@ -6,7 +6,7 @@
 
 use crate::csv_text::CsvText;
 use crate::error::RunFilesError;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Named columns of numbers, every column as long as the others.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -83,113 +83,71 @@ impl Columns {
         out.finish()
     }
 
-    /// The columns of a CSV text of numbers (`name` names it in errors):
-    /// what [`Columns::csv`] wrote reads back to the same columns.
-    pub fn parse(name: &str, text: &str) -> Result<Columns, RunFilesError> {
-        let table = Table::parse(Path::new(name), text)?;
-        let mut out = Columns::named(table.header().to_vec());
-        for (slot, name) in out.values.iter_mut().zip(table.header()) {
-            *slot = table.column(name)?;
-        }
-        Ok(out)
-    }
-}
-
-/// A CSV file of numbers with a header line, read by column name.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Table {
-    path: PathBuf,
-    header: Vec<String>,
-    rows: Vec<Vec<f64>>,
-}
-
-impl Table {
-    /// Reads `path`: a header of column names, then rows of numbers.
-    pub fn read(path: &Path) -> Result<Table, RunFilesError> {
+    /// Reads the CSV file of numbers at `path` (as [`Columns::parse`]).
+    pub fn read(path: &Path) -> Result<Columns, RunFilesError> {
         let text = std::fs::read_to_string(path).map_err(|e| RunFilesError::new(path, e))?;
-        Table::parse(path, &text)
+        Columns::parse(path, &text)
     }
 
-    /// Parses `text` (`path` names it in errors).
-    pub fn parse(path: &Path, text: &str) -> Result<Table, RunFilesError> {
-        let mut lines = text
-            .lines()
-            .enumerate()
-            .filter(|(_, l)| !l.trim().is_empty());
-        let header: Vec<String> = lines
-            .next()
-            .ok_or_else(|| RunFilesError::new(path, "empty file: expected a header line"))?
-            .1
-            .split(',')
-            .map(|c| c.trim().to_string())
-            .collect();
-        let mut rows = Vec::new();
-        for (i, line) in lines {
-            let row = line
-                .split(',')
-                .map(|v| v.trim().parse::<f64>())
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| RunFilesError::new(path, format!("line {}: {e}", i + 1)))?;
-            if row.len() != header.len() {
-                let message = format!(
-                    "line {}: {} values for {} columns",
-                    i + 1,
-                    row.len(),
-                    header.len()
-                );
-                return Err(RunFilesError::new(path, message));
-            }
-            rows.push(row);
-        }
-        Ok(Table {
-            path: path.to_path_buf(),
-            header,
-            rows,
-        })
-    }
-
-    /// The column names, in order.
-    pub fn header(&self) -> &[String] {
-        &self.header
-    }
-
-    /// Number of rows.
-    pub fn len(&self) -> usize {
-        self.rows.len()
-    }
-
-    /// Whether the table has no rows.
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
-    }
-
-    /// The values of column `name`, row by row.
-    pub fn column(&self, name: &str) -> Result<Vec<f64>, RunFilesError> {
-        let i = self
-            .header
+    /// The columns of a CSV text of numbers with a header line (`path`
+    /// names it in errors), read with the `csv` crate: blank lines are
+    /// skipped and fields trimmed. What [`Columns::csv`] wrote reads back
+    /// to the same columns.
+    pub fn parse(path: impl AsRef<Path>, text: &str) -> Result<Columns, RunFilesError> {
+        let path = path.as_ref();
+        // The line of the record that starts at `byte` (the csv crate's
+        // count skips blank lines, and its position is before them).
+        let line_at = |byte: u64| {
+            let (before, after) = text.as_bytes().split_at(byte as usize);
+            let breaks = |bytes: &[u8]| bytes.iter().filter(|&&b| b == b'\n').count();
+            let blank = after.iter().take_while(|b| b.is_ascii_whitespace()).count();
+            breaks(before) + breaks(&after[..blank]) + 1
+        };
+        let fail = |line: usize, message: String| {
+            RunFilesError::new(path, format!("line {line}: {message}"))
+        };
+        let mut reader = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .flexible(true)
+            .from_reader(text.as_bytes());
+        let names: Vec<String> = reader
+            .headers()
+            .map_err(|e| fail(1, e.to_string()))?
             .iter()
-            .position(|h| h == name)
-            .ok_or_else(|| RunFilesError::new(&self.path, format!("no column `{name}`")))?;
-        Ok(self.rows.iter().map(|r| r[i]).collect())
-    }
-
-    /// The columns named in `names`, in that order.
-    pub fn columns<const N: usize>(
-        &self,
-        names: [&str; N],
-    ) -> Result<[Vec<f64>; N], RunFilesError> {
-        let mut out: [Vec<f64>; N] = std::array::from_fn(|_| Vec::new());
-        for (slot, name) in out.iter_mut().zip(names) {
-            *slot = self.column(name)?;
+            .map(str::to_string)
+            .collect();
+        if names.is_empty() {
+            return Err(RunFilesError::new(
+                path,
+                "empty file: expected a header line",
+            ));
+        }
+        let mut out = Columns::named(names);
+        for record in reader.records() {
+            let record = record
+                .map_err(|e| fail(e.position().map_or(0, |p| line_at(p.byte())), e.to_string()))?;
+            let line = record.position().map_or(0, |p| line_at(p.byte()));
+            if record.len() != out.names.len() {
+                let message = format!("{} values for {} columns", record.len(), out.names.len());
+                return Err(fail(line, message));
+            }
+            for (column, field) in out.values.iter_mut().zip(&record) {
+                column.push(field.parse().map_err(|e| fail(line, format!("{e}")))?);
+            }
         }
         Ok(out)
     }
 
-    /// The values of column `name`, or `None` if the table has no such
-    /// column (a column added in a later version, absent from older runs).
-    pub fn optional_column(&self, name: &str) -> Option<Vec<f64>> {
-        let i = self.header.iter().position(|h| h == name)?;
-        Some(self.rows.iter().map(|r| r[i]).collect())
+    /// The columns named in `names`, in that order; the message names a
+    /// missing one.
+    pub fn columns<const N: usize>(&self, names: [&str; N]) -> Result<[&[f64]; N], String> {
+        let mut out: [&[f64]; N] = [&[]; N];
+        for (slot, name) in out.iter_mut().zip(names) {
+            *slot = self
+                .column(name)
+                .ok_or_else(|| format!("no column `{name}`"))?;
+        }
+        Ok(out)
     }
 }
 
@@ -225,25 +183,23 @@ mod tests {
     }
 
     #[test]
-    fn table_reads_columns_by_name() {
-        let t = Table::parse(Path::new("t.csv"), "u,force\n0,1.5\n2, 3e-1\n\n").unwrap();
+    fn a_file_reads_by_column_name() {
+        let t = Columns::parse("t.csv", "u,force\n0,1.5\n\n2, 3e-1\n\n").unwrap();
         assert_eq!(t.len(), 2);
-        assert_eq!(t.column("force").unwrap(), vec![1.5, 0.3]);
-        assert!(t
-            .column("beta")
-            .unwrap_err()
-            .message
-            .contains("no column `beta`"));
-        assert_eq!(t.optional_column("u"), Some(vec![0.0, 2.0]));
-        assert_eq!(t.optional_column("depth"), None);
+        assert_eq!(t.column("force"), Some(&[1.5, 0.3][..]));
+        let [u, force] = t.columns(["u", "force"]).unwrap();
+        assert_eq!((u, force), (&[0.0, 2.0][..], &[1.5, 0.3][..]));
+        assert_eq!(t.columns(["u", "beta"]).unwrap_err(), "no column `beta`");
+        assert_eq!(t.column("depth"), None);
     }
 
     #[test]
-    fn table_rejects_ragged_or_bad_rows() {
-        let e = Table::parse(Path::new("t.csv"), "u,force\n0\n").unwrap_err();
+    fn ragged_or_bad_rows_are_refused_at_their_line() {
+        let e = Columns::parse("t.csv", "u,force\n0\n").unwrap_err();
         assert_eq!(e.message, "line 2: 1 values for 2 columns");
-        let e = Table::parse(Path::new("t.csv"), "u,force\n0,x\n").unwrap_err();
-        assert!(e.message.starts_with("line 2:"), "{}", e.message);
-        assert!(Table::parse(Path::new("t.csv"), "").is_err());
+        let e = Columns::parse("t.csv", "u,force\n\n0,x\n").unwrap_err();
+        assert!(e.message.starts_with("line 3:"), "{}", e.message);
+        let e = Columns::parse("t.csv", "").unwrap_err();
+        assert_eq!(e.message, "empty file: expected a header line");
     }
 }

@@ -2,7 +2,7 @@
 //! `soilcut compare`), and `frames.csv`, the surfaces captured during a run.
 
 use crate::case_file::read_case;
-use crate::columns::{Columns, Table};
+use crate::columns::Columns;
 use crate::error::RunFilesError;
 use soilcut_model::{Case, ProfilePoint};
 use std::path::{Path, PathBuf};
@@ -65,11 +65,11 @@ pub struct FinishedRun {
     /// The case, from `case.resolved.toml`.
     pub case: Case,
     /// `history.csv`, one row per increment.
-    pub history: Table,
+    pub history: Columns,
     /// `profile.csv`, the final surface.
-    pub profile: Table,
+    pub profile: Columns,
     /// `frames.csv`, if the run wrote it (`None` for older runs).
-    pub frames: Option<Table>,
+    pub frames: Option<Columns>,
 }
 
 /// Reads the files of the run in `dir`.
@@ -83,15 +83,15 @@ pub fn read_finished_run(dir: &Path) -> Result<FinishedRun, RunFilesError> {
         .case;
     let frames_path = dir.join("frames.csv");
     let frames = if frames_path.exists() {
-        Some(Table::read(&frames_path)?)
+        Some(Columns::read(&frames_path)?)
     } else {
         None
     };
     Ok(FinishedRun {
         dir: dir.to_path_buf(),
         case,
-        history: Table::read(&dir.join("history.csv"))?,
-        profile: Table::read(&dir.join("profile.csv"))?,
+        history: Columns::read(&dir.join("history.csv"))?,
+        profile: Columns::read(&dir.join("profile.csv"))?,
         frames,
     })
 }
@@ -140,7 +140,7 @@ mod tests {
         let rows: Vec<&str> = text.lines().skip(1).collect();
         assert!(rows.len() <= FRAME_ROWS, "{}", rows.len());
         assert_eq!(rows[0], "0,3,0,0,0.5,0");
-        let t = Table::parse(Path::new("f.csv"), &text).unwrap();
+        let t = Columns::parse("f.csv", &text).unwrap();
         let last_x = *t.column("x").unwrap().last().unwrap();
         assert!(
             (19.9..=20.0).contains(&last_x),

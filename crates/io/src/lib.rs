@@ -45,7 +45,7 @@ pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,
     unknown_key, LoadedCase,
 };
-pub use columns::{Columns, Table};
+pub use columns::Columns;
 pub use error::{visible, InputError, OutputError, RunFilesError};
 pub use finished::{
     frames_columns, frames_csv, read_finished_run, FinishedRun, SurfaceFrame, FRAMES_HEADER,
