@@ -126,13 +126,14 @@ impl Columns {
         for record in reader.records() {
             let record = record
                 .map_err(|e| fail(e.position().map_or(0, |p| line_at(p.byte())), e.to_string()))?;
-            let line = record.position().map_or(0, |p| line_at(p.byte()));
+            // Counted only for an error: a scan of the text before it.
+            let line = || record.position().map_or(0, |p| line_at(p.byte()));
             if record.len() != out.names.len() {
                 let message = format!("{} values for {} columns", record.len(), out.names.len());
-                return Err(fail(line, message));
+                return Err(fail(line(), message));
             }
             for (column, field) in out.values.iter_mut().zip(&record) {
-                column.push(field.parse().map_err(|e| fail(line, format!("{e}")))?);
+                column.push(field.parse().map_err(|e| fail(line(), format!("{e}")))?);
             }
         }
         Ok(out)
