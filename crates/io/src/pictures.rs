@@ -171,6 +171,29 @@ fn columns<'a, const N: usize>(
         .map_err(|message| RunFilesError::new(&run.dir.join(name), message))
 }
 
+/// The surfaces of `frames.csv`, one frame per run of equal `frame`.
+fn frames(run: &FinishedRun, table: &Columns) -> Result<Vec<Frame>, RunFilesError> {
+    let [id, step, u, x, y, shear] = columns(
+        run,
+        "frames.csv",
+        table,
+        ["frame", "step", "u", "x", "y", "accumulated_shear"],
+    )?;
+    let mut frames = Vec::new();
+    let mut start = 0;
+    for end in 1..=id.len() {
+        if end == id.len() || id[end] != id[start] {
+            frames.push(Frame {
+                step: step[start] as usize,
+                u: u[start],
+                surface: surface(&x[start..end], &y[start..end], &shear[start..end]),
+            });
+            start = end;
+        }
+    }
+    Ok(frames)
+}
+
 /// What the pictures need of a finished run.
 pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
     let [step, u, force, beta, xe, ye] = columns(
@@ -209,26 +232,10 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
         &run.profile,
         ["x", "y", "accumulated_shear"],
     )?;
-    let mut frames: Vec<Frame> = Vec::new();
-    if let Some(table) = &run.frames {
-        let [id, step, u, x, y, shear] = columns(
-            run,
-            "frames.csv",
-            table,
-            ["frame", "step", "u", "x", "y", "accumulated_shear"],
-        )?;
-        let mut start = 0;
-        for end in 1..=id.len() {
-            if end == id.len() || id[end] != id[start] {
-                frames.push(Frame {
-                    step: step[start] as usize,
-                    u: u[start],
-                    surface: surface(&x[start..end], &y[start..end], &shear[start..end]),
-                });
-                start = end;
-            }
-        }
-    }
+    let frames = match &run.frames {
+        Some(table) => frames(run, table)?,
+        None => Vec::new(),
+    };
     // Runs from before finite widths have no side heaps.
     let ridges = match run.profile.column("ridge_height") {
         Some(h) if h.iter().any(|&v| v > 0.0) => x.iter().copied().zip(h.iter().copied()).collect(),
