@@ -15,11 +15,22 @@ import numpy as np
 from ._case import Case
 
 __version__: str
+FIT_EVALUATIONS: int
+"""Default runs of a fit's global search (``soilcut fit --evaluations``)."""
+FIT_POLISH_ITERATIONS: int
+"""Default Nelder-Mead iterations of a fit's polish (``--polish``)."""
+FIT_PROFILE_GRID: int
+"""Default grid of a fit's profiles (``--profile-points``)."""
 
 class Step:
     """One increment (a row of ``history.csv``): forces per unit width
     (γ·length², force per unit width), or per blade with ``blade.width``
-    (γ·length³), lengths in the case's unit, angles in degrees."""
+    (γ·length³), lengths in the case's unit, angles in degrees. Its
+    attributes are the columns of ``history.csv`` (:attr:`fields`), served
+    by ``__getattr__`` from the one list of them (soilcut-io's ``HISTORY``)."""
+
+    fields: tuple[str, ...]
+    """The names of the record's values, ``history.csv``'s columns in order."""
 
     @property
     def step(self) -> int:
@@ -27,6 +38,9 @@ class Step:
     @property
     def u(self) -> float:
         """Blade displacement u at which the mechanism was evaluated (length)."""
+    @property
+    def u_over_d(self) -> float:
+        """u / d, d = blade.depth."""
     @property
     def force(self) -> float:
         """Resultant blade force P per unit width (γ·length², force per unit width)."""
@@ -71,6 +85,8 @@ class Step:
     def mass_spilled(self) -> float:
         """Weight of the soil spilled around the blade's edges so far (0 in
         plane strain; units of ``mass``)."""
+    def __getattr__(self, name: str) -> Any: ...
+    def __dir__(self) -> list[str]: ...
     def __repr__(self) -> str: ...
 
 class Simulation:
@@ -221,14 +237,13 @@ def analytic(case: CaseLike) -> dict[str, dict[str, Any] | None]: ...
 def sweep_points(
     case: CaseLike, varies: list[tuple[str, Any]], sample: str, seed: int
 ) -> tuple[list[str], list[list[Any]]]: ...
-def sweep_csv(
+def sweep_run(
     case: CaseLike, varies: list[tuple[str, Any]], sample: str, seed: int, jobs: int
-) -> tuple[str, str]: ...
+) -> dict[str, Any]: ...
 def sweep_check(case: CaseLike, keys: list[str], values: list[Any]) -> None: ...
-def sweep_header(keys: list[str]) -> str: ...
 def sweep_row(
     case: CaseLike, keys: list[str], values: list[Any], run: int, total: int
-) -> tuple[str, float]: ...
+) -> tuple[dict[str, Any], float]: ...
 def fit(
     case: CaseLike,
     measured: list[tuple[float, float]],

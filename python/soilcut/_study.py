@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import concurrent.futures
-import io
 import os
 from collections.abc import Mapping, Sequence
 from typing import Any, NamedTuple, Union
@@ -17,15 +16,26 @@ from ._run import pandas
 Spec = Union[str, tuple[float, float], tuple[float, float, int], Sequence[Any]]
 
 
-def _read_csv(text: str):
+def _frame(tables: list[dict[str, Any]]):
+    """The DataFrame of ``sweep.csv`` from its columns (the extension's
+    tables: whole numbers, values, text and float64 arrays), one table per
+    run or one for all."""
     pd = pandas("soilcut.sweep (a DataFrame)")
-    # The numbers must be the CSV's exactly: pandas < 3 rounds by default.
-    exact = {} if int(pd.__version__.split(".")[0]) >= 3 else {"float_precision": "round_trip"}
-    return pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=[""], **exact)
+
+    # The tables' columns joined before the frame is made (arrays as
+    # arrays), so that each column's type is inferred as for one table.
+    def joined(name: str):
+        parts = [t[name] for t in tables]
+        if isinstance(parts[0], np.ndarray):
+            return np.concatenate(parts)
+        return [v for part in parts for v in part]
+
+    return pd.DataFrame({name: joined(name) for name in tables[0]})
 
 
-def _sweep_row(case: Case, keys: list[str], values: list[Any], run: int, total: int) -> str:
-    """One run of a sweep (on a worker of an executor): its ``sweep.csv`` line."""
+def _sweep_row(case: Case, keys: list[str], values: list[Any], run: int, total: int):
+    """One run of a sweep (on a worker of an executor): its row of
+    ``sweep.csv`` as columns of one value."""
     return _soilcut.sweep_row(native_of(case), keys, values, run, total)[0]
 
 
@@ -44,7 +54,8 @@ def sweep(
     ``status`` (``ok`` or ``failed``), ``error``, then the figures of each run
     (``initial_force_norm``, ``max_force_norm``, ``u_over_d_at_max``,
     ``final_force_norm``, ``peaks``, ``mean_force_norm_last_half``,
-    ``mass_drift_rel``, ``band_jumps``, ``steps``; forces as P/(γ0 d²)). A
+    ``mass_drift_rel``, ``band_jumps``, ``steps``; forces as P/(γ0 d²)), the
+    figures as float64 (the numbers themselves, NaN where a run failed). A
     run that fails is a row with its error, not an exception. A key that
     is not part of the case raises :class:`soilcut.CaseError` naming it and
     the nearest keys, and a missing pandas an ``ImportError``, both before
@@ -85,10 +96,8 @@ def sweep(
     else:
         varies = list(vary.items())
         if executor is None:
-            csv, _timing = _soilcut.sweep_csv(native, varies, sample, seed, jobs)
-            return _read_csv(csv)
+            return _frame([_soilcut.sweep_run(native, varies, sample, seed, jobs)])
         keys, points = _soilcut.sweep_points(native, varies, sample, seed)
-    header = _soilcut.sweep_header(keys)
     total = len(points)
     own = executor is None
     if own:
@@ -98,11 +107,11 @@ def sweep(
             executor.submit(_sweep_row, case, keys, values, i + 1, total)
             for i, values in enumerate(points)
         ]
-        lines = [f.result() for f in futures]
+        rows = [f.result() for f in futures]
     finally:
         if own:
             executor.shutdown()
-    return _read_csv(header + "".join(lines))
+    return _frame(rows)
 
 
 class FitResult:
@@ -164,10 +173,10 @@ def fit(
     width: float | None = None,
     objective: str = "raw",
     method: str = "de",
-    evaluations: int = 1200,
+    evaluations: int = _soilcut.FIT_EVALUATIONS,
     population: int = 0,
-    polish: int = 60,
-    profile_points: int = 9,
+    polish: int = _soilcut.FIT_POLISH_ITERATIONS,
+    profile_points: int = _soilcut.FIT_PROFILE_GRID,
     seed: int = 0,
     jobs: int = 0,
 ) -> FitResult:

@@ -81,8 +81,10 @@ def test_a_sweep_row_is_numbered_from_one(original):
     native = original._native
     with pytest.raises(ValueError, match="from 1 to total"):
         _soilcut.sweep_row(native, ["soil.friction.peak"], [35.0], 0, 1)
-    header = _soilcut.sweep_header(["soil.friction.peak"])
-    assert header.startswith("run,soil.friction.peak,status,error,")
+    short = original.set("run.travel", 1)._native
+    row, _ = _soilcut.sweep_row(short, ["soil.friction.peak"], [35.0], 1, 1)
+    assert list(row)[:4] == ["run", "soil.friction.peak", "status", "error"]
+    assert row["run"] == [1]
 
 
 def test_landscape_at_is_checked_as_the_command_line_checks_it(original, cli):

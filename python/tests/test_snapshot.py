@@ -14,7 +14,7 @@ from conftest import case_path
 
 import soilcut
 
-FIELDS = [name for name in dir(soilcut.Step) if not name.startswith("_")]
+FIELDS = soilcut.Step.fields
 
 
 def row(step: soilcut.Step) -> tuple:

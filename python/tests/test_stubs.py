@@ -60,21 +60,33 @@ def test_functions_take_the_stubbed_parameters():
             assert runtime_parameters(getattr(_soilcut, name)) == parameters(node), name
 
 
+def is_property(node: ast.FunctionDef) -> bool:
+    return any(isinstance(d, ast.Name) and d.id == "property" for d in node.decorator_list)
+
+
 def test_classes_have_the_stubbed_methods_and_parameters():
     for name, node in stub_tree().items():
         if not isinstance(node, ast.ClassDef):
             continue
         cls = getattr(_soilcut, name)
         stubbed = {m.name: m for m in node.body if isinstance(m, ast.FunctionDef)}
-        assert own_members(cls) == set(stubbed) - {"__init__"}, name
+        attributes = {a.target.id for a in node.body if isinstance(a, ast.AnnAssign)}
+        properties = {method for method, m in stubbed.items() if is_property(m)}
+        own = own_members(cls)
+        # PyO3 installs a class's __getattr__ as its __getattribute__ slot.
+        if "__getattribute__" in own:
+            own = own - {"__getattribute__"} | {"__getattr__"}
+        # A class with __getattr__ serves its `fields` (Step: history.csv's
+        # columns, listed once in Rust): the stubs type each of them.
+        served = set(cls.fields) if "__getattr__" in own else set()
+        assert served <= properties, f"{name}: {served - properties} not stubbed"
+        assert own == (set(stubbed) - {"__init__"} - served) | attributes, name
         for method, m in stubbed.items():
-            is_property = any(
-                isinstance(d, ast.Name) and d.id == "property" for d in m.decorator_list
-            )
-            if is_property:
+            if is_property(m):
                 continue
             expected = parameters(m)
             # The constructor's signature is the class's (PyO3's __new__).
-            got = runtime_parameters(cls if method == "__init__" else getattr(cls, method))
+            runtime = "__getattribute__" if method == "__getattr__" else method
+            got = runtime_parameters(cls if method == "__init__" else getattr(cls, runtime))
             if got is not None:
                 assert got == expected, f"{name}.{method}"

@@ -25,7 +25,11 @@ def short(refined):
 
 
 def read(path):
-    return soilcut._study._read_csv(open(path, encoding="utf-8").read())
+    """sweep.csv as the command line wrote it, its figures as float64 (as
+    the Python sweep hands them out, from the numbers themselves)."""
+    header = open(path, encoding="utf-8").readline().strip().split(",")
+    figures = dict.fromkeys(header[header.index("error") + 1 :], "float64")
+    return pd.read_csv(path, keep_default_na=False, na_values=[""], dtype=figures)
 
 
 def test_sweep_is_the_cli_sweep(cli, tmp_path, refined):
@@ -95,7 +99,7 @@ def test_without_pandas_a_sweep_fails_before_its_runs(refined, monkeypatch):
     def no_run(*args):
         raise AssertionError("a run was started")
 
-    monkeypatch.setattr(soilcut._study._soilcut, "sweep_csv", no_run)
+    monkeypatch.setattr(soilcut._study._soilcut, "sweep_run", no_run)
     monkeypatch.setitem(__import__("sys").modules, "pandas", None)
     with pytest.raises(ImportError, match=r"soilcut\[pandas\]"):
         soilcut.sweep(short(refined), {"soil.friction.peak": [33]})
@@ -224,11 +228,16 @@ def test_analytic_baselines_are_the_closed_forms(original, cli):
     assert float(row.split()[-5]) == round(b["coulomb"]["force"], 6)
 
 
-def test_sweep_rows_travel_as_text(refined):
-    # What a worker sends back is the row of sweep.csv itself.
-    frame = soilcut.sweep(short(refined), {"soil.friction.peak": [35]}, jobs=1)
-    again = soilcut._study._read_csv(frame.to_csv(index=False))
-    pd.testing.assert_frame_equal(again, frame)
+def test_sweep_rows_travel_as_columns(refined):
+    # What a worker sends back is the row of sweep.csv as columns of one
+    # value: the frame of the rows is the frame of the whole sweep.
+    case = short(refined)
+    frame = soilcut.sweep(case, {"soil.friction.peak": [35, 36]}, jobs=1)
+    rows = [
+        soilcut._study._sweep_row(case, ["soil.friction.peak"], [v], i + 1, 2)
+        for i, v in enumerate([35, 36])
+    ]
+    pd.testing.assert_frame_equal(soilcut._study._frame(rows), frame)
 
 
 def test_landscape_is_the_cli_landscape(cli, tmp_path, refined):

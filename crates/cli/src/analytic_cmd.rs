@@ -1,7 +1,7 @@
 //! `soilcut analytic`: the analytical baselines of a case's initial flat
 //! ground, as a table on stdout.
 
-use soilcut_model::analytic::{Baseline, Wedge};
+use soilcut_io::{baselines, Baselines, NormalisedBaseline};
 use soilcut_model::Case;
 
 pub const EXAMPLES: &str = "\
@@ -12,8 +12,7 @@ Examples:
 
 /// The table `soilcut analytic` prints.
 pub fn report(case: &Case) -> String {
-    let wedge = Wedge::of_case(case);
-    let norm = case.force_scale();
+    let all = baselines(case);
     let mut out = format!(
         "Analytic baselines for the initial flat ground of {} (forces per unit width)\n\
          d = {}, γ0 = {}, φ = {}° (at zero shear), φw = {}°, α = {}°, c = {}, a = {}, q = {}\n\n\
@@ -34,30 +33,24 @@ pub fn report(case: &Case) -> String {
         "vertical",
         "β* (°)",
     );
-    let mut row = |name: &str, b: Option<Baseline>| match b {
+    let mut row = |name: &str, b: Option<NormalisedBaseline>| match b {
         Some(b) => out.push_str(&format!(
             "{:<32} {:>12.6} {:>12.6} {:>12.6} {:>12.6} {:>10.3}\n",
-            name,
-            b.force,
-            b.force / norm,
-            b.force_h,
-            b.force_v,
-            b.failure_angle.to_degrees()
+            name, b.force, b.force_norm, b.force_h, b.force_v, b.failure_angle_deg
         )),
         None => out.push_str(&format!("{name:<32} no admissible wedge\n")),
     };
-    row("Rankine (smooth vertical wall)", Some(wedge.rankine()));
-    row("Coulomb (trial wedge, c=a=q=0)", wedge.coulomb());
-    let fee = wedge.fee();
-    row("FEE (Reece; McKyes' factors)", fee);
-    if let Some(f) = fee.and_then(|b| b.factors) {
+    row("Rankine (smooth vertical wall)", Some(all.rankine));
+    row("Coulomb (trial wedge, c=a=q=0)", all.coulomb);
+    row("FEE (Reece; McKyes' factors)", all.fee);
+    if let Some(f) = all.fee.and_then(|b| b.factors) {
         out.push_str(&format!(
             "\nFEE factors at β*: Nγ = {:.6}, Nc = {:.6}, Na = {:.6}, Nq = {:.6}\n",
             f.n_gamma, f.n_c, f.n_a, f.n_q
         ));
     }
     if let Some(w) = case.blade.width {
-        out.push_str(&narrow_report(&wedge, w, norm));
+        out.push_str(&narrow_report(&all, w, case.blade.depth));
     }
     out.push_str(
         "\nvertical: the soil's force on the blade, positive upward; Rankine ignores φw, α and a.\n",
@@ -67,8 +60,8 @@ pub fn report(case: &Case) -> String {
 
 /// McKyes & Ali's blade of width w (M46), per blade, beside plane strain
 /// times w.
-fn narrow_report(wedge: &Wedge, w: f64, norm: f64) -> String {
-    let Some(n) = wedge.mckyes_ali(w) else {
+fn narrow_report(all: &Baselines, w: f64, depth: f64) -> String {
+    let Some(n) = all.mckyes_ali else {
         return format!("\nMcKyes-Ali (w = {w}): no admissible wedge\n");
     };
     let b = n.baseline;
@@ -76,7 +69,7 @@ fn narrow_report(wedge: &Wedge, w: f64, norm: f64) -> String {
         "\nBlade of width w = {w} (w/d = {:.4}), forces per blade:\n\
          {:<32} {:>12} {:>12} {:>12} {:>12} {:>10}\n\
          {:<32} {:>12.6} {:>12.6} {:>12.6} {:>12.6} {:>10.3}\n",
-        w / wedge.depth,
+        w / depth,
         "method",
         "P",
         "P/(γ0 d² w)",
@@ -85,24 +78,24 @@ fn narrow_report(wedge: &Wedge, w: f64, norm: f64) -> String {
         "β* (°)",
         "McKyes-Ali (centre + crescents)",
         b.force,
-        b.force / (norm * w),
+        b.force_norm,
         b.force_h,
         b.force_v,
-        b.failure_angle.to_degrees()
+        b.failure_angle_deg
     );
-    if let Some(plane) = wedge.fee() {
+    if let Some(plane) = all.fee {
         out.push_str(&format!(
             "{:<32} {:>12.6} {:>12.6}\n",
             "FEE × w (plane strain)",
             plane.force * w,
-            plane.force / norm
+            plane.force_norm
         ));
     }
     out.push_str(&format!(
         "rupture distance r = {:.6} ({:.4} d), crescent half-angle ρ = {:.3}°\n",
         n.rupture,
-        n.rupture / wedge.depth,
-        n.crescent_angle.to_degrees()
+        n.rupture / depth,
+        n.crescent_angle_deg
     ));
     if let Some(f) = b.factors {
         out.push_str(&format!(
@@ -110,7 +103,7 @@ fn narrow_report(wedge: &Wedge, w: f64, norm: f64) -> String {
             f.n_gamma, f.n_c, f.n_a, f.n_q
         ));
     }
-    if w < wedge.depth * soilcut_model::crescent::NARROWEST {
+    if w < depth * soilcut_model::crescent::NARROWEST {
         out.push_str("w/d < 1/6: below the critical depth the soil fails sideways, which this wedge does not describe (docs/model.md §16.4)\n");
     }
     out

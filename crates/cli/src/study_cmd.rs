@@ -313,12 +313,13 @@ pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
 /// A measured curve as a test of `base`, its forces divided by `w`.
 fn test_of(name: &Path, base: BaseCase, w: f64) -> Result<soilcut_study::fit::Test, Failure> {
     let curve = read_measured_curve(name).map_err(|e| Failure::input(name, e))?;
-    Ok(soilcut_study::fit::Test {
-        name: name.display().to_string(),
+    Ok(soilcut_study::fit::Test::per_width(
+        name.display().to_string(),
         base,
-        measured: curve.points.iter().map(|&(u, p)| (u, p / w)).collect(),
-        weights: curve.weights,
-    })
+        &curve.points,
+        curve.weights,
+        w,
+    ))
 }
 
 pub fn fit(args: FitArgs) -> Result<(), Failure> {
@@ -363,15 +364,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
     let mut summary = String::new();
     write_study(&out, c.target.force, |dir| {
         let r = fit.run(&c.progress("runs"))?;
-        let mut files = vec![
-            ("fit.md".to_string(), r.markdown(&title)),
-            ("fit.csv".to_string(), r.csv()),
-            ("curves.csv".to_string(), r.curves_csv()),
-            ("profiles.csv".to_string(), r.profiles_csv()),
-            ("search.csv".to_string(), r.search_csv()),
-        ];
-        files.extend(r.best_tomls());
-        text_files(dir, &files)?;
+        text_files(dir, &r.files(&title))?;
         r.draw(dir)?;
         let best: Vec<String> = r
             .params

@@ -506,7 +506,7 @@ pub unsafe extern "C" fn soilcut_step(
             let r = state.sim.step().map_err(|e| step_failure(&e))?;
             state.last = Some(r);
             if !record.is_null() {
-                put(record, SoilcutStep::new(&r, state.sim.case().blade.depth));
+                put(record, SoilcutStep::new(&r));
             }
             Ok(())
         })
@@ -537,7 +537,7 @@ pub unsafe extern "C" fn soilcut_last_step(
                 .last
                 .as_ref()
                 .ok_or_else(|| Failure::new(SOILCUT_ERR_STATE, "no increment has been made yet"))?;
-            put(record, SoilcutStep::new(r, state.sim.case().blade.depth));
+            put(record, SoilcutStep::new(r));
             Ok(())
         })
     }
@@ -750,7 +750,6 @@ fn advance(
     (x, depth): (f64, Option<f64>),
     mut on_step: impl FnMut(&SoilcutStep),
 ) -> Result<(), Failure> {
-    let d = state.sim.case().blade.depth;
     let State {
         sim, loaded, last, ..
     } = state;
@@ -759,7 +758,7 @@ fn advance(
         let busy = InStep {
             handle,
             state: SoilcutState::new(now),
-            record: SoilcutStep::new(record, d),
+            record: SoilcutStep::new(record),
         };
         let record = busy.record;
         calling_back(busy, || on_step(&record));

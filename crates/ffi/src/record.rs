@@ -1,6 +1,9 @@
 //! The plain C structs the entry points fill: one increment's record (the
 //! `history.csv` columns) and the simulation's state.
 
+use serde::de::value::MapDeserializer;
+use serde::{Deserialize, Deserializer};
+use soilcut_io::HISTORY;
 use soilcut_model::{Simulation, StepRecord};
 use std::os::raw::c_int;
 
@@ -10,9 +13,11 @@ use std::os::raw::c_int;
 /// γ·length²; with `blade.width` forces and masses are per blade
 /// (γ·length³).
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SoilcutStep {
     /// Increment number, from 1.
+    #[serde(deserialize_with = "whole")]
     pub step: u64,
     /// Blade displacement at which the increment's mechanism is evaluated
     /// (length; 0 for step 1).
@@ -59,53 +64,38 @@ pub struct SoilcutStep {
 }
 
 impl SoilcutStep {
-    /// The record as `history.csv` writes it; `depth` is `blade.depth`.
-    pub(crate) fn new(r: &StepRecord, depth: f64) -> Self {
-        SoilcutStep {
-            step: r.step as u64,
-            u: r.u,
-            // As history.csv computes it, so that the numbers are its own.
-            u_over_d: r.u / depth,
-            force: r.force,
-            force_norm: r.force_norm,
-            force_h: r.force_h,
-            force_v: r.force_v,
-            beta_deg: r.beta_deg,
-            x_emergence: r.x_emergence,
-            mass: r.mass,
-            y_emergence: r.y_emergence,
-            friction_deg: r.friction_deg,
-            slip: r.slip,
-            dilation_deg: r.dilation_deg,
-            dilation_area: r.dilation_area,
-            depth: r.depth,
-            mass_spilled: r.mass_spilled,
-        }
+    /// The record as `history.csv` writes it: each field the value of the
+    /// column of its name in soilcut-io's `HISTORY` (a field without a
+    /// column, or a column without a field, fails here, in every test
+    /// that steps).
+    pub(crate) fn new(r: &StepRecord) -> Self {
+        let columns = HISTORY.iter().map(|&(name, value)| (name, value(r)));
+        let fields: MapDeserializer<'_, _, serde::de::value::Error> = MapDeserializer::new(columns);
+        SoilcutStep::deserialize(fields)
+            .expect("a field of SoilcutStep for every column of history.csv")
     }
 
-    /// The numbers of the record after `step`, in the order of its
-    /// fields (`history.csv`'s columns), for Rust callers that compare or
-    /// check them all.
-    pub fn values(&self) -> [f64; 16] {
-        [
-            self.u,
-            self.u_over_d,
-            self.force,
-            self.force_norm,
-            self.force_h,
-            self.force_v,
-            self.beta_deg,
-            self.x_emergence,
-            self.mass,
-            self.y_emergence,
-            self.friction_deg,
-            self.slip,
-            self.dilation_deg,
-            self.dilation_area,
-            self.depth,
-            self.mass_spilled,
-        ]
+    /// The numbers of the record after `step`, in the order of its fields
+    /// (`history.csv`'s columns), for Rust callers that compare or check
+    /// them all.
+    pub fn values(&self) -> [f64; HISTORY.len() - 1] {
+        /// The record's layout read as its numbers.
+        #[repr(C)]
+        struct Numbers {
+            _step: u64,
+            values: [f64; HISTORY.len() - 1],
+        }
+        // SAFETY: both are repr(C) and of one size (transmute checks it at
+        // compile time): a u64, then one f64 per further column; every bit
+        // pattern is a valid f64.
+        let numbers: Numbers = unsafe { std::mem::transmute(*self) };
+        numbers.values
     }
+}
+
+/// The increment number, a whole number in the record's column of numbers.
+fn whole<'de, D: Deserializer<'de>>(value: D) -> Result<u64, D::Error> {
+    f64::deserialize(value).map(|step| step as u64)
 }
 
 /// Where a simulation is now.

@@ -3,7 +3,7 @@
 //! the model's; handles work on several threads.
 
 use soilcut_ffi::*;
-use soilcut_io::{parse_case, HISTORY_HEADER};
+use soilcut_io::{parse_case, HISTORY, HISTORY_HEADER};
 use soilcut_model::Simulation;
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::ptr::{null, null_mut};
@@ -14,7 +14,7 @@ const ORIGINAL: &str = include_str!("../../../cases/paper/original.toml");
 fn short(steps: usize) -> String {
     ORIGINAL.replace(
         "travel = 100.0",
-        &format!("travel = {}", steps as f64 * 0.04),
+        &format!("travel = {}\nincrement = 0.04", steps as f64 * 0.04),
     )
 }
 
@@ -99,6 +99,11 @@ fn records_are_the_models_bit_for_bit() {
         assert_eq!(got.force_v.to_bits(), want.force_v.to_bits());
         assert_eq!(got.mass.to_bits(), want.mass.to_bits());
         assert_eq!(got.u_over_d.to_bits(), (want.u / 20.0).to_bits());
+        // Every field, in history.csv's order.
+        let got = bits(got);
+        for (i, (name, value)) in HISTORY.iter().enumerate().skip(1) {
+            assert_eq!(got[i], value(want).to_bits(), "{name}");
+        }
     }
     let mut last = SoilcutStep::default();
     assert_eq!(unsafe { soilcut_last_step(sim, &mut last) }, SOILCUT_OK);
@@ -192,7 +197,7 @@ fn a_bad_case_file_names_the_path_and_the_key() {
         message.starts_with(path.to_str().unwrap()) && message.contains(": blade.rake: "),
         "{message}"
     );
-    let travel = CString::new("run.travel=0.08").unwrap();
+    let travel = CString::new("run.travel=0.04").unwrap();
     let sets = [travel.as_ptr()];
     let code = unsafe { soilcut_new_from_file(path.as_ptr(), sets.as_ptr(), 1, &mut sim) };
     assert_eq!(code, SOILCUT_OK);

@@ -15,7 +15,7 @@ use soilcut_model::Simulation;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const SETS: [&str; 1] = ["run.travel=2"];
+const SETS: [&str; 2] = ["run.travel=2", "run.increment=0.04"];
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -508,56 +508,28 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
     Ok((initial, dilation, peak_shear, band_width))
 }
 
+/// The case a case file describes, its defaults written into `file` (the
+/// resolved file), validated.
 fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     check_name(&file.name)?;
     let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
     let rake = *file.blade.rake.get_or_insert(90.0);
     let adhesion = *file.blade.adhesion.get_or_insert(0.0);
-    let soil = &mut file.soil;
-    let repose = *soil.repose.get_or_insert(soil.friction.residual);
-    let cohesion = *soil.cohesion.get_or_insert(0.0);
-    let surcharge = *soil.surcharge.get_or_insert(0.0);
+    let depth = file.blade.depth;
     let increment = *file
         .run
         .increment
-        .get_or_insert(file.blade.depth / DEFAULT_INCREMENTS_PER_DEPTH);
+        .get_or_insert(depth / DEFAULT_INCREMENTS_PER_DEPTH);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
     };
-    let (initial, dilation, peak_shear, band_width) = match model {
-        Model::Original => {
-            refined_only(soil.friction.initial.is_some(), "soil.friction.initial")?;
-            refined_only(soil.dilation.is_some(), "soil.dilation")?;
-            refined_only(soil.peak_shear.is_some(), "soil.peak_shear")?;
-            refined_only(soil.d50.is_some(), "soil.d50")?;
-            refined_only(soil.band_width.is_some(), "soil.band_width")?;
-            refined_only(soil.band_width_d50.is_some(), "soil.band_width_d50")?;
-            (soil.friction.peak, AngleLaw::constant(0.0), 0.0, 0.0)
-        }
-        Model::Refined => resolve_refined(soil)?,
-    };
+    let soil = resolve_soil(&mut file.soil, model)?;
     let choices_file = file.choices.get_or_insert_with(ChoicesFile::default);
     let choices = match model {
         Model::Original => choices_file.original()?,
         Model::Refined => choices_file.refined(),
     };
-    let soil = Soil {
-        unit_weight: soil.unit_weight,
-        friction: AngleLaw {
-            initial,
-            peak: soil.friction.peak,
-            residual: soil.friction.residual,
-        },
-        dilation,
-        peak_shear,
-        residual_shear: soil.residual_shear,
-        repose,
-        band_width,
-        cohesion,
-        surcharge,
-    };
-    let depth = file.blade.depth;
     let node_spacing = *file
         .run
         .node_spacing
@@ -571,7 +543,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         title,
         model,
         blade: Blade {
-            depth: file.blade.depth,
+            depth,
             wall_friction: file.blade.wall_friction,
             rake,
             adhesion,
@@ -594,6 +566,42 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     Ok(LoadedCase {
         case,
         resolved: file,
+    })
+}
+
+/// The soil of a case file, its defaults written into `soil`: the repose
+/// angle the residual friction, no cohesion or surcharge; the original
+/// model's initial friction its peak, without dilation or a band.
+fn resolve_soil(soil: &mut SoilFile, model: Model) -> Result<Soil, InputError> {
+    let repose = *soil.repose.get_or_insert(soil.friction.residual);
+    let cohesion = *soil.cohesion.get_or_insert(0.0);
+    let surcharge = *soil.surcharge.get_or_insert(0.0);
+    let (initial, dilation, peak_shear, band_width) = match model {
+        Model::Original => {
+            refined_only(soil.friction.initial.is_some(), "soil.friction.initial")?;
+            refined_only(soil.dilation.is_some(), "soil.dilation")?;
+            refined_only(soil.peak_shear.is_some(), "soil.peak_shear")?;
+            refined_only(soil.d50.is_some(), "soil.d50")?;
+            refined_only(soil.band_width.is_some(), "soil.band_width")?;
+            refined_only(soil.band_width_d50.is_some(), "soil.band_width_d50")?;
+            (soil.friction.peak, AngleLaw::constant(0.0), 0.0, 0.0)
+        }
+        Model::Refined => resolve_refined(soil)?,
+    };
+    Ok(Soil {
+        unit_weight: soil.unit_weight,
+        friction: AngleLaw {
+            initial,
+            peak: soil.friction.peak,
+            residual: soil.friction.residual,
+        },
+        dilation,
+        peak_shear,
+        residual_shear: soil.residual_shear,
+        repose,
+        band_width,
+        cohesion,
+        surcharge,
     })
 }
 

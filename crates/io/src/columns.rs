@@ -5,7 +5,7 @@
 //! the text being parsed back.
 
 use crate::csv_text::CsvText;
-use crate::finished::{RunFilesError, Table};
+use crate::error::RunFilesError;
 use std::path::Path;
 
 /// Named columns of numbers, every column as long as the others.
@@ -83,13 +83,70 @@ impl Columns {
         out.finish()
     }
 
-    /// The columns of a CSV text of numbers (`name` names it in errors):
-    /// what [`Columns::csv`] wrote reads back to the same columns.
-    pub fn parse(name: &str, text: &str) -> Result<Columns, RunFilesError> {
-        let table = Table::parse(Path::new(name), text)?;
-        let mut out = Columns::named(table.header().to_vec());
-        for (slot, name) in out.values.iter_mut().zip(table.header()) {
-            *slot = table.column(name)?;
+    /// Reads the CSV file of numbers at `path` (as [`Columns::parse`]).
+    pub fn read(path: &Path) -> Result<Columns, RunFilesError> {
+        let text = std::fs::read_to_string(path).map_err(|e| RunFilesError::new(path, e))?;
+        Columns::parse(path, &text)
+    }
+
+    /// The columns of a CSV text of numbers with a header line (`path`
+    /// names it in errors), read with the `csv` crate: blank lines are
+    /// skipped and fields trimmed. What [`Columns::csv`] wrote reads back
+    /// to the same columns.
+    pub fn parse(path: impl AsRef<Path>, text: &str) -> Result<Columns, RunFilesError> {
+        let path = path.as_ref();
+        // The line of the record that starts at `byte` (the csv crate's
+        // count skips blank lines, and its position is before them).
+        let line_at = |byte: u64| {
+            let (before, after) = text.as_bytes().split_at(byte as usize);
+            let breaks = |bytes: &[u8]| bytes.iter().filter(|&&b| b == b'\n').count();
+            let blank = after.iter().take_while(|b| b.is_ascii_whitespace()).count();
+            breaks(before) + breaks(&after[..blank]) + 1
+        };
+        let fail = |line: usize, message: String| {
+            RunFilesError::new(path, format!("line {line}: {message}"))
+        };
+        let mut reader = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .flexible(true)
+            .from_reader(text.as_bytes());
+        let names: Vec<String> = reader
+            .headers()
+            .map_err(|e| fail(1, e.to_string()))?
+            .iter()
+            .map(str::to_string)
+            .collect();
+        if names.is_empty() {
+            return Err(RunFilesError::new(
+                path,
+                "empty file: expected a header line",
+            ));
+        }
+        let mut out = Columns::named(names);
+        for record in reader.records() {
+            let record = record
+                .map_err(|e| fail(e.position().map_or(0, |p| line_at(p.byte())), e.to_string()))?;
+            // Counted only for an error: a scan of the text before it.
+            let line = || record.position().map_or(0, |p| line_at(p.byte()));
+            if record.len() != out.names.len() {
+                let message = format!("{} values for {} columns", record.len(), out.names.len());
+                return Err(fail(line(), message));
+            }
+            for (column, field) in out.values.iter_mut().zip(&record) {
+                column.push(field.parse().map_err(|e| fail(line(), format!("{e}")))?);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The columns named in `names`, in that order; the message names a
+    /// missing one.
+    pub fn columns<const N: usize>(&self, names: [&str; N]) -> Result<[&[f64]; N], String> {
+        let mut out: [&[f64]; N] = [&[]; N];
+        for (slot, name) in out.iter_mut().zip(names) {
+            *slot = self
+                .column(name)
+                .ok_or_else(|| format!("no column `{name}`"))?;
         }
         Ok(out)
     }
@@ -124,5 +181,26 @@ mod tests {
     #[should_panic(expected = "one value per column")]
     fn a_short_row_is_a_bug() {
         Columns::new("a,b").push(&[1.0]);
+    }
+
+    #[test]
+    fn a_file_reads_by_column_name() {
+        let t = Columns::parse("t.csv", "u,force\n0,1.5\n\n2, 3e-1\n\n").unwrap();
+        assert_eq!(t.len(), 2);
+        assert_eq!(t.column("force"), Some(&[1.5, 0.3][..]));
+        let [u, force] = t.columns(["u", "force"]).unwrap();
+        assert_eq!((u, force), (&[0.0, 2.0][..], &[1.5, 0.3][..]));
+        assert_eq!(t.columns(["u", "beta"]).unwrap_err(), "no column `beta`");
+        assert_eq!(t.column("depth"), None);
+    }
+
+    #[test]
+    fn ragged_or_bad_rows_are_refused_at_their_line() {
+        let e = Columns::parse("t.csv", "u,force\n0\n").unwrap_err();
+        assert_eq!(e.message, "line 2: 1 values for 2 columns");
+        let e = Columns::parse("t.csv", "u,force\n\n0,x\n").unwrap_err();
+        assert!(e.message.starts_with("line 3:"), "{}", e.message);
+        let e = Columns::parse("t.csv", "").unwrap_err();
+        assert_eq!(e.message, "empty file: expected a header line");
     }
 }

@@ -1,8 +1,9 @@
-//! Errors of reading a case and of writing outputs. Every message is one line.
+//! Errors of reading a case, of writing outputs and of reading a run's
+//! files back. Every message is one line.
 
 use soilcut_model::CaseError;
 use std::fmt;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Why a case could not be read: always the user's input, never a bug.
 #[derive(Debug)]
@@ -106,6 +107,32 @@ impl fmt::Display for OutputError {
 }
 
 impl std::error::Error for OutputError {}
+
+/// Why the files of a run could not be read.
+#[derive(Debug)]
+pub struct RunFilesError {
+    /// The file that could not be read.
+    pub path: PathBuf,
+    /// What is wrong with it.
+    pub message: String,
+}
+
+impl RunFilesError {
+    pub(crate) fn new(path: &Path, message: impl ToString) -> Self {
+        RunFilesError {
+            path: path.to_path_buf(),
+            message: one_line(&message.to_string()),
+        }
+    }
+}
+
+impl fmt::Display for RunFilesError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.message)
+    }
+}
+
+impl std::error::Error for RunFilesError {}
 
 /// Text the user gave (a `--set` argument, a key), with its control
 /// characters escaped (`\n`, `\t`, `\u{1b}`): the message stays one line

@@ -21,12 +21,14 @@
 
 #![warn(missing_docs)]
 
+mod baselines;
 mod bounds;
 mod case_file;
 mod columns;
 mod csv_text;
 mod error;
 mod finished;
+mod history;
 mod landscape;
 mod measured;
 mod output;
@@ -35,6 +37,7 @@ mod overrides;
 mod pictures;
 mod record;
 
+pub use baselines::{baselines, BaselineFactors, Baselines, NarrowBaseline, NormalisedBaseline};
 pub use bounds::{
     bounds_columns, bounds_json, bounds_options, floor_name, strength_name, BOUNDS_HEADER,
 };
@@ -43,11 +46,12 @@ pub use case_file::{
     unknown_key, LoadedCase,
 };
 pub use columns::Columns;
-pub use error::{visible, InputError, OutputError};
+pub use error::{visible, InputError, OutputError, RunFilesError};
 pub use finished::{
-    frames_columns, frames_csv, read_finished_run, FinishedRun, RunFilesError, SurfaceFrame, Table,
-    FRAMES_HEADER, FRAME_ROWS,
+    frames_columns, frames_csv, read_finished_run, FinishedRun, SurfaceFrame, FRAMES_HEADER,
+    FRAME_ROWS,
 };
+pub use history::{history_columns, history_value, HistoryColumn, HISTORY, HISTORY_HEADER};
 pub use landscape::{
     check_landscape_at, check_landscape_every, landscape_at, landscape_columns, landscape_csv,
     landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
@@ -57,10 +61,10 @@ pub use measured::{
     MeasuredCurve,
 };
 pub use output::{
-    check_output_dir, history_columns, peak_prominence_rule, profile_columns, write_output_dir,
-    write_output_dir_then, RunOutput, HISTORY_HEADER, PROFILE_HEADER,
+    check_output_dir, peak_prominence_rule, profile_columns, write_output_dir,
+    write_output_dir_then, RunOutput, RunTables, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
 #[cfg(feature = "pictures")]
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
-pub use record::{record_files, record_run, RecordedRun, RunTables, ANIMATION_FRAMES};
+pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};

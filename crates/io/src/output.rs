@@ -3,21 +3,18 @@
 //! Floats are written with Rust's `{}` (shortest round-trip), so the same
 //! case gives bit-identical `history.csv` and `profile.csv`.
 
+use crate::baselines::{baselines, Baselines};
 use crate::case_file::LoadedCase;
 use crate::columns::Columns;
-use crate::error::OutputError;
-use crate::record::RunTables;
+use crate::error::{OutputError, RunFilesError};
+use crate::history::history_columns;
 use serde::Serialize;
-use soilcut_model::analytic::{Baseline, Wedge};
 use soilcut_model::summary::{
     sheared_fraction, JUMP_DEPTHS, PEAK_PROMINENCE, SHEARED_REACH_DEPTHS, SHEARED_THRESHOLD,
 };
 use soilcut_model::{ProfilePoint, StepRecord, Summary};
 use std::fs;
 use std::path::{Path, PathBuf};
-
-/// Columns of `history.csv`, in order.
-pub const HISTORY_HEADER: &str = "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth,mass_spilled";
 
 /// Columns of `profile.csv`, in order.
 pub const PROFILE_HEADER: &str = "x,y,accumulated_shear,unit_weight,ridge_height";
@@ -41,7 +38,7 @@ pub struct RunOutput<'a> {
 impl RunOutput<'_> {
     /// (file name, contents) of every output file.
     pub fn files(&self) -> Vec<(&'static str, String)> {
-        let history = history_columns(self.history, self.loaded.case.blade.depth);
+        let history = history_columns(self.history);
         self.files_of(
             &history,
             &profile_columns(self.profile),
@@ -54,7 +51,7 @@ impl RunOutput<'_> {
     /// once: [`RunOutput::files`], then `frames.csv`.
     pub fn tables_and_files(&self, frames: Columns) -> (RunTables, Vec<(&'static str, String)>) {
         let doc = self.summary_doc();
-        let history = history_columns(self.history, self.loaded.case.blade.depth);
+        let history = history_columns(self.history);
         let profile = profile_columns(self.profile);
         let mut files = self.files_of(&history, &profile, &doc);
         files.push(("frames.csv", frames.csv()));
@@ -111,7 +108,7 @@ impl RunOutput<'_> {
             sheared_fraction_rule: sheared_fraction_rule(),
             dilation_area: s.dilation_area,
             simulated_initial_force: self.history.first().map_or(f64::NAN, |r| r.force),
-            baselines: BaselinesJson::of(case),
+            baselines: baselines(case),
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
@@ -119,32 +116,44 @@ impl RunOutput<'_> {
     }
 }
 
-/// The numbers of `history.csv` (columns [`HISTORY_HEADER`]): one row
-/// per increment; `depth` is the case's d (for u/d).
-pub fn history_columns(history: &[StepRecord], depth: f64) -> Columns {
-    let mut out = Columns::new(HISTORY_HEADER);
-    for r in history {
-        out.push(&[
-            r.step as f64,
-            r.u,
-            r.u / depth,
-            r.force,
-            r.force_norm,
-            r.force_h,
-            r.force_v,
-            r.beta_deg,
-            r.x_emergence,
-            r.mass,
-            r.y_emergence,
-            r.friction_deg,
-            r.slip,
-            r.dilation_deg,
-            r.dilation_area,
-            r.depth,
-            r.mass_spilled,
-        ]);
+/// The numbers of a run's files, for front ends that hand out values
+/// rather than text: each file is written from these, so they are the
+/// file's numbers exactly.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunTables {
+    /// `history.csv`.
+    pub history: Columns,
+    /// `profile.csv`.
+    pub profile: Columns,
+    /// `frames.csv`.
+    pub frames: Columns,
+    /// `summary.json` (objects' keys sorted; numbers that are not finite
+    /// are `null`, as in the file).
+    pub summary: serde_json::Value,
+}
+
+impl RunTables {
+    /// The numbers of a run's files read back from their text (`files`:
+    /// (name, contents), as [`RecordedRun::files`](crate::RecordedRun::files)): the same values the
+    /// run wrote them from.
+    pub fn from_files<S: AsRef<str>>(files: &[(S, String)]) -> Result<RunTables, RunFilesError> {
+        let text = |name: &str| {
+            files
+                .iter()
+                .find(|(n, _)| n.as_ref() == name)
+                .map(|(_, t)| t.as_str())
+                .ok_or_else(|| RunFilesError::new(Path::new(name), "the file is missing"))
+        };
+        // float_roundtrip (Cargo.toml): the parse gives back the bits written.
+        let summary = serde_json::from_str(text("summary.json")?)
+            .map_err(|e| RunFilesError::new(Path::new("summary.json"), e))?;
+        Ok(RunTables {
+            history: Columns::parse("history.csv", text("history.csv")?)?,
+            profile: Columns::parse("profile.csv", text("profile.csv")?)?,
+            frames: Columns::parse("frames.csv", text("frames.csv")?)?,
+            summary,
+        })
     }
-    out
 }
 
 /// The numbers of `profile.csv` (columns [`PROFILE_HEADER`]): one row per
@@ -197,85 +206,10 @@ struct SummaryJson<'a> {
     sheared_fraction_rule: String,
     dilation_area: f64,
     simulated_initial_force: f64,
-    baselines: BaselinesJson,
+    baselines: Baselines,
     steps: usize,
     candidate_evaluations: u64,
     wall_time_s: f64,
-}
-
-/// The analytical baselines of the case's initial flat ground, beside the
-/// simulated first-increment force.
-#[derive(Serialize)]
-struct BaselinesJson {
-    rankine: BaselineJson,
-    coulomb: Option<BaselineJson>,
-    fee: Option<BaselineJson>,
-    /// McKyes & Ali for a blade of finite width (per blade).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mckyes_ali: Option<NarrowJson>,
-}
-
-/// McKyes & Ali's least force per blade (M46), normalised by γ0 d² w.
-#[derive(Serialize)]
-struct NarrowJson {
-    #[serde(flatten)]
-    baseline: BaselineJson,
-    rupture: f64,
-    crescent_angle_deg: f64,
-}
-
-#[derive(Serialize)]
-struct BaselineJson {
-    force: f64,
-    force_norm: f64,
-    force_h: f64,
-    force_v: f64,
-    failure_angle_deg: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    factors: Option<FactorsJson>,
-}
-
-#[derive(Serialize)]
-struct FactorsJson {
-    n_gamma: f64,
-    n_c: f64,
-    n_a: f64,
-    n_q: f64,
-}
-
-impl BaselinesJson {
-    fn of(case: &soilcut_model::Case) -> Self {
-        let wedge = Wedge::of_case(case);
-        let norm = case.force_scale();
-        let normalised = |b: Baseline, norm: f64| BaselineJson {
-            force: b.force,
-            force_norm: b.force / norm,
-            force_h: b.force_h,
-            force_v: b.force_v,
-            failure_angle_deg: b.failure_angle.to_degrees(),
-            factors: b.factors.map(|f| FactorsJson {
-                n_gamma: f.n_gamma,
-                n_c: f.n_c,
-                n_a: f.n_a,
-                n_q: f.n_q,
-            }),
-        };
-        let json = |b: Baseline| normalised(b, norm);
-        let narrow = case.blade.width.and_then(|w| {
-            let n = wedge.mckyes_ali(w)?;
-            Some(NarrowJson {
-                baseline: normalised(n.baseline, norm * w),
-                rupture: n.rupture,
-                crescent_angle_deg: n.crescent_angle.to_degrees(),
-            })
-        });
-        BaselinesJson {
-            rankine: json(wedge.rankine()),
-            coulomb: wedge.coulomb().map(json),
-            fee: wedge.fee().map(json),
-            mckyes_ali: narrow,
-        }
-    }
 }
 
 #[derive(Serialize)]

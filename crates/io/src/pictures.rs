@@ -2,8 +2,9 @@
 //! `soilcut-plot`. Every front end writes a run's folder through
 //! [`write_run_dir`], so the folders are identical.
 
-use crate::error::OutputError;
-use crate::finished::{read_finished_run, FinishedRun, RunFilesError};
+use crate::columns::Columns;
+use crate::error::{OutputError, RunFilesError};
+use crate::finished::{read_finished_run, FinishedRun};
 use crate::output::write_output_dir_then;
 use soilcut_plot::{Frame, Increment, Measured, PlotError, RunData, SurfacePoint};
 use std::path::{Path, PathBuf};
@@ -158,20 +159,60 @@ fn surface(x: &[f64], y: &[f64], shear: &[f64]) -> Vec<SurfacePoint> {
         .collect()
 }
 
+/// The columns `names` of a finished run's file `name`, or an error
+/// naming the file and the missing column.
+fn columns<'a, const N: usize>(
+    run: &FinishedRun,
+    name: &str,
+    file: &'a Columns,
+    names: [&str; N],
+) -> Result<[&'a [f64]; N], RunFilesError> {
+    file.columns(names)
+        .map_err(|message| RunFilesError::new(&run.dir.join(name), message))
+}
+
+/// The surfaces of `frames.csv`, one frame per run of equal `frame`.
+fn frames(run: &FinishedRun, table: &Columns) -> Result<Vec<Frame>, RunFilesError> {
+    let [id, step, u, x, y, shear] = columns(
+        run,
+        "frames.csv",
+        table,
+        ["frame", "step", "u", "x", "y", "accumulated_shear"],
+    )?;
+    let mut frames = Vec::new();
+    let mut start = 0;
+    for end in 1..=id.len() {
+        if end == id.len() || id[end] != id[start] {
+            frames.push(Frame {
+                step: step[start] as usize,
+                u: u[start],
+                surface: surface(&x[start..end], &y[start..end], &shear[start..end]),
+            });
+            start = end;
+        }
+    }
+    Ok(frames)
+}
+
 /// What the pictures need of a finished run.
 pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
-    let [step, u, force, beta, xe, ye] = run.history.columns([
-        "step",
-        "u",
-        "force_norm",
-        "beta_deg",
-        "x_emergence",
-        "y_emergence",
-    ])?;
+    let [step, u, force, beta, xe, ye] = columns(
+        run,
+        "history.csv",
+        &run.history,
+        [
+            "step",
+            "u",
+            "force_norm",
+            "beta_deg",
+            "x_emergence",
+            "y_emergence",
+        ],
+    )?;
     // Runs from before depth paths have no `depth` column: the tip was at
     // blade.depth throughout.
-    let depth = match run.history.optional_column("depth") {
-        Some(depth) => depth,
+    let depth = match run.history.column("depth") {
+        Some(depth) => depth.to_vec(),
         None => vec![run.case.blade.depth; step.len()],
     };
     let history = (0..step.len())
@@ -185,26 +226,19 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
             depth: depth[i],
         })
         .collect();
-    let [x, y, shear] = run.profile.columns(["x", "y", "accumulated_shear"])?;
-    let mut frames: Vec<Frame> = Vec::new();
-    if let Some(table) = &run.frames {
-        let [id, step, u, x, y, shear] =
-            table.columns(["frame", "step", "u", "x", "y", "accumulated_shear"])?;
-        let mut start = 0;
-        for end in 1..=id.len() {
-            if end == id.len() || id[end] != id[start] {
-                frames.push(Frame {
-                    step: step[start] as usize,
-                    u: u[start],
-                    surface: surface(&x[start..end], &y[start..end], &shear[start..end]),
-                });
-                start = end;
-            }
-        }
-    }
+    let [x, y, shear] = columns(
+        run,
+        "profile.csv",
+        &run.profile,
+        ["x", "y", "accumulated_shear"],
+    )?;
+    let frames = match &run.frames {
+        Some(table) => frames(run, table)?,
+        None => Vec::new(),
+    };
     // Runs from before finite widths have no side heaps.
-    let ridges = match run.profile.optional_column("ridge_height") {
-        Some(h) if h.iter().any(|&v| v > 0.0) => x.iter().copied().zip(h).collect(),
+    let ridges = match run.profile.column("ridge_height") {
+        Some(h) if h.iter().any(|&v| v > 0.0) => x.iter().copied().zip(h.iter().copied()).collect(),
         _ => Vec::new(),
     };
     let case = &run.case;
@@ -215,7 +249,7 @@ pub fn run_data(run: &FinishedRun) -> Result<RunData, RunFilesError> {
         unit_weight: case.soil.unit_weight,
         band_width: case.soil.band_width,
         history,
-        profile: surface(&x, &y, &shear),
+        profile: surface(x, y, shear),
         frames,
         ridges,
     })

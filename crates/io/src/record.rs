@@ -2,11 +2,9 @@
 //! and evenly spaced surfaces for `frames.csv` and the animation.
 
 use crate::case_file::LoadedCase;
-use crate::columns::Columns;
-use crate::finished::{frames_columns, RunFilesError, SurfaceFrame};
-use crate::output::RunOutput;
+use crate::finished::{frames_columns, SurfaceFrame};
+use crate::output::{RunOutput, RunTables};
 use soilcut_model::{Simulation, StepError, StepRecord, Summary};
-use std::path::Path;
 use std::time::Instant;
 
 /// Surfaces captured during a run for the animation (evenly spaced).
@@ -57,46 +55,6 @@ pub struct RecordedRun {
     pub wall_time_s: f64,
     /// The numbers the files were written from.
     pub tables: RunTables,
-}
-
-/// The numbers of a run's files, for front ends that hand out values
-/// rather than text: each file is written from these, so they are the
-/// file's numbers exactly.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RunTables {
-    /// `history.csv`.
-    pub history: Columns,
-    /// `profile.csv`.
-    pub profile: Columns,
-    /// `frames.csv`.
-    pub frames: Columns,
-    /// `summary.json` (objects' keys sorted; numbers that are not finite
-    /// are `null`, as in the file).
-    pub summary: serde_json::Value,
-}
-
-impl RunTables {
-    /// The numbers of a run's files read back from their text (`files`:
-    /// (name, contents), as [`RecordedRun::files`]): the same values the
-    /// run wrote them from.
-    pub fn from_files<S: AsRef<str>>(files: &[(S, String)]) -> Result<RunTables, RunFilesError> {
-        let text = |name: &str| {
-            files
-                .iter()
-                .find(|(n, _)| n.as_ref() == name)
-                .map(|(_, t)| t.as_str())
-                .ok_or_else(|| RunFilesError::new(Path::new(name), "the file is missing"))
-        };
-        // float_roundtrip (Cargo.toml): the parse gives back the bits written.
-        let summary = serde_json::from_str(text("summary.json")?)
-            .map_err(|e| RunFilesError::new(Path::new("summary.json"), e))?;
-        Ok(RunTables {
-            history: Columns::parse("history.csv", text("history.csv")?)?,
-            profile: Columns::parse("profile.csv", text("profile.csv")?)?,
-            frames: Columns::parse("frames.csv", text("frames.csv")?)?,
-            summary,
-        })
-    }
 }
 
 /// Runs the remaining increments of `sim` (set up from `loaded`) with

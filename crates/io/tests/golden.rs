@@ -33,7 +33,7 @@ fn history_csv(face_friction: &str) -> String {
     let loaded = read_case(&root.join("../../cases/paper/table1-hs.toml"), &set).unwrap();
     let mut sim = Simulation::new(&loaded.case).unwrap();
     let history = sim.run_to_end(|_| {}).unwrap();
-    history_columns(&history, loaded.case.blade.depth).csv()
+    history_columns(&history).csv()
 }
 
 /// The file's rows as maps from the header's column names to values.

@@ -41,13 +41,17 @@ const GROW_DEPTHS: f64 = 4.0;
 const MAX_REACH_DEPTHS: f64 = 1000.0;
 
 /// What one increment produced. Forces and masses are per unit width, or
-/// per blade for a blade of finite width (`blade.width`).
+/// per blade for a blade of finite width (`blade.width`). The fields are
+/// the columns of `history.csv`, in its order (soilcut-io's `HISTORY`
+/// names them once for the files and the front ends).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepRecord {
     /// Increment number, from 1.
     pub step: usize,
     /// Blade displacement at which the mechanism is evaluated (0 for step 1).
     pub u: f64,
+    /// u / d, d the reference depth `blade.depth`.
+    pub u_over_d: f64,
     /// P*: resultant blade force.
     pub force: f64,
     /// P* / (γ0 d²), d the reference depth `blade.depth` (P* / (γ0 d² w)
@@ -59,23 +63,23 @@ pub struct StepRecord {
     pub force_v: f64,
     /// β*, degrees.
     pub beta_deg: f64,
-    /// Friction angle of the chosen mechanism, degrees.
-    pub friction_deg: f64,
     /// Emergence point of the slip line (lower band boundary).
     pub x_emergence: f64,
-    /// y of the emergence point.
-    pub y_emergence: f64,
-    /// Depth of the blade tip during the increment.
-    pub depth: f64,
-    /// Band dilation angle ψ of the chosen mechanism, degrees.
-    pub dilation_deg: f64,
-    /// Δut of the band (slip line) in this increment.
-    pub slip: f64,
-    /// Area added by the band's dilation in this increment (Δuv A0 / dB).
-    pub dilation_area: f64,
     /// Weight of soil ahead of the blade after the increment (ground that
     /// existed at the start).
     pub mass: f64,
+    /// y of the emergence point.
+    pub y_emergence: f64,
+    /// Friction angle of the chosen mechanism, degrees.
+    pub friction_deg: f64,
+    /// Δut of the band (slip line) in this increment.
+    pub slip: f64,
+    /// Band dilation angle ψ of the chosen mechanism, degrees.
+    pub dilation_deg: f64,
+    /// Area added by the band's dilation in this increment (Δuv A0 / dB).
+    pub dilation_area: f64,
+    /// Depth of the blade tip during the increment.
+    pub depth: f64,
     /// Weight of soil that has spilled around the blade's edges into the
     /// side heaps (0 in plane strain): `mass + mass_spilled` is conserved.
     pub mass_spilled: f64,
@@ -442,6 +446,7 @@ impl Simulation {
         Ok(StepRecord {
             step: self.done,
             u,
+            u_over_d: u / self.case.blade.depth,
             force,
             force_norm: self.normalised(choice.force),
             // The reaction is at ω = m φw + α − 90° from the horizontal,

@@ -1,11 +1,13 @@
 //! The cutting process as an animated GIF.
 
+use crate::axes::{axes, round_up, title_height, titled, top};
 use crate::curves::{Quantity, U_DESC};
 use crate::deformation::{draw_band, draw_ground, draw_outline, evenly, X_DESC, Y_DESC};
-use crate::render::{rgb, text, DrawResult, Picture};
-use crate::style::{
-    self, axes, curve, font, round_up, title_height, titled, top, Extent, GroundPanel, SMALL,
-};
+use crate::error::{text, DrawResult};
+use crate::ground::{Extent, GroundPanel};
+use crate::lines::curve;
+use crate::render::{rgb, Picture};
+use crate::theme::{self, font, SMALL};
 use crate::{Frame, PlotError, RunData};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -103,7 +105,7 @@ impl Picture for Scene<'_> {
                 ext.x.1,
                 d,
                 run.band_width,
-                style::SERIES[3],
+                theme::SERIES[3],
                 SMALL.line,
             )?;
         }
@@ -126,13 +128,13 @@ impl Picture for Scene<'_> {
         axes(&mut chart, U_DESC, Quantity::Force.desc(), SMALL)?;
         let points = done.iter().map(|h| (h.u / d, h.force_norm));
         let points: Vec<(f64, f64)> = points.collect();
-        curve(&mut chart, &points, style::CURVE, SMALL.line)?;
+        curve(&mut chart, &points, theme::CURVE, SMALL.line)?;
         chart
             .draw_series(
                 points
                     .last()
                     .copied()
-                    .map(|p| Circle::new(p, 5, style::SERIES[3].filled())),
+                    .map(|p| Circle::new(p, 5, theme::SERIES[3].filled())),
             )
             .map_err(text)?;
         Ok(())

@@ -5,7 +5,7 @@
 //! follows a depth path). The soil in front lies above the face line, the
 //! trench floor behind the tip where the tip went: y = −t(x).
 
-use crate::style::Extent;
+use crate::ground::Extent;
 use crate::{Increment, RunData};
 
 /// Whether `rake` (degrees) is the vertical blade, drawn exactly as before

@@ -2,8 +2,10 @@
 //! bound's mechanism shears (beside soilcut's band) and how much of the
 //! soil's strength the lower bound's stress field mobilises.
 
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{self, axes, titled, PAPER};
+use crate::axes::{axes, titled};
+use crate::error::{text, DrawResult};
+use crate::render::{save, Picture};
+use crate::theme::{self, PAPER};
 use crate::PlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -93,11 +95,11 @@ impl BoundsFields {
         chart
             .draw_series(LineSeries::new(
                 self.surface.iter().copied(),
-                style::GROUND_EDGE.stroke_width(2),
+                theme::GROUND_EDGE.stroke_width(2),
             ))
             .map_err(text)?;
         chart
-            .draw_series(LineSeries::new(self.face, style::BLADE.stroke_width(6)))
+            .draw_series(LineSeries::new(self.face, theme::BLADE.stroke_width(6)))
             .map_err(text)?;
         if band {
             chart

@@ -1,8 +1,12 @@
 //! Curves against u/d: the force (paper Fig. 5a), β* (Fig. 5b) and the
 //! comparison of several runs (Fig. 7).
 
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{self, axes, curve, dots, round_up, titled, top, Legend, Mark, Sizes, PAPER};
+use crate::axes::{axes, round_up, title_height, titled, top, Chart};
+use crate::error::{text, DrawResult};
+use crate::legend::{Legend, Mark};
+use crate::lines::{curve, dots};
+use crate::render::{save, Picture};
+use crate::theme::{self, Sizes, PAPER};
 use crate::{Increment, Measured, PlotError, RunData};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -98,7 +102,7 @@ pub(crate) fn curve_chart<'a, DB: DrawingBackend>(
     y: (f64, f64),
     y_desc: &str,
     sizes: Sizes,
-) -> Result<style::Chart<'a, DB>, String> {
+) -> Result<Chart<'a, DB>, String> {
     let mut chart = ChartBuilder::on(area)
         .margin(20)
         .margin_right(45)
@@ -121,7 +125,7 @@ fn points(run: &RunData, q: Quantity) -> Vec<(f64, f64)> {
 /// alternate between two bands from one increment to the next, which a
 /// line would smear into a solid block.
 fn draw_quantity<'a, DB: DrawingBackend + 'a>(
-    chart: &mut style::Chart<'a, DB>,
+    chart: &mut Chart<'a, DB>,
     q: Quantity,
     points: &[(f64, f64)],
     (color, width): (RGBColor, u32),
@@ -147,7 +151,7 @@ impl Picture for Single<'_> {
         let area = titled(root, &self.run.title, PAPER.title)?;
         let y = value_range(self.run.history.iter().map(|h| self.q.of(h)));
         let mut chart = curve_chart(&area, u_range(&[self.run]), y, self.q.desc(), PAPER)?;
-        let look = (style::CURVE, PAPER.line);
+        let look = (theme::CURVE, PAPER.line);
         draw_quantity(&mut chart, self.q, &points(self.run, self.q), look)
     }
 }
@@ -200,12 +204,12 @@ impl Compare<'_> {
 }
 
 fn series_color(i: usize) -> RGBColor {
-    style::SERIES[i % style::SERIES.len()]
+    theme::SERIES[i % theme::SERIES.len()]
 }
 
 impl Picture for Compare<'_> {
     fn size(&self) -> (u32, u32) {
-        let title = style::title_height(PAPER.title);
+        let title = title_height(PAPER.title);
         (WIDTH, title + self.legend().height() + 2 * PANEL)
     }
 

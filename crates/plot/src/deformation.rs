@@ -1,14 +1,16 @@
 //! The pattern of deformation (paper Figs. 4 and 6): ground, blade and the
 //! slip lines or shear bands of the run, with the accumulated shear below.
 
+use crate::axes::{axes, round_up, tick, title_height, titled, top, Chart};
 use crate::blade::{
     blade_outline, ground_outline, height_at, is_level, is_vertical, slip_start, trench_floor,
 };
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{
-    self, axes, curve, font, round_up, thin, title_height, titled, top, viridis, Chart, Extent,
-    GroundPanel, Legend, Mark, Sizes, PAPER,
-};
+use crate::error::{text, DrawResult};
+use crate::ground::{Extent, GroundPanel};
+use crate::legend::{Legend, Mark};
+use crate::lines::{curve, thin};
+use crate::render::{save, Picture};
+use crate::theme::{self, font, viridis, Sizes, PAPER};
 use crate::{Increment, PlotError, RunData, SurfacePoint};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -198,7 +200,7 @@ impl Picture for Deformation<'_> {
         axes(&mut chart, X_DESC, "uₜ/d (–)", PAPER)?;
         chart
             .draw_series(stems(&chart, &shear).into_iter().map(|(x, top)| {
-                PathElement::new(vec![(x, 0.0), (x, top)], style::SHEAR.stroke_width(2))
+                PathElement::new(vec![(x, 0.0), (x, top)], theme::SHEAR.stroke_width(2))
             }))
             .map_err(text)?;
         Ok(())
@@ -238,18 +240,18 @@ impl Deformation<'_> {
         };
         let mut entries = vec![
             ("initial ground".to_string(), Mark::Dashed(BLACK)),
-            ("ground surface".to_string(), Mark::Line(style::GROUND_EDGE)),
-            ("blade".to_string(), Mark::Block(style::BLADE)),
+            ("ground surface".to_string(), Mark::Line(theme::GROUND_EDGE)),
+            ("blade".to_string(), Mark::Block(theme::BLADE)),
             (what.to_string(), Mark::Line(viridis(0.5))),
             (
                 "shear accumulated along the surface".to_string(),
-                Mark::Line(style::SHEAR),
+                Mark::Line(theme::SHEAR),
             ),
         ];
         if !self.run.ridges.is_empty() {
             entries.push((
                 "side heaps' crest beside the blade".to_string(),
-                Mark::Dashed(style::RIDGE),
+                Mark::Dashed(theme::RIDGE),
             ));
         }
         Legend::new(entries, WIDTH - 60, PAPER)
@@ -278,7 +280,7 @@ fn draw_ridges<'a, DB: DrawingBackend + 'a>(
             thin(chart, &crest),
             10,
             6,
-            style::RIDGE.stroke_width(PAPER.line),
+            theme::RIDGE.stroke_width(PAPER.line),
         ))
         .map_err(text)?;
     Ok(())
@@ -322,21 +324,21 @@ pub(crate) fn draw_ground<'a, DB: DrawingBackend + 'a>(
         chart
             .draw_series(std::iter::once(Rectangle::new(
                 [(ext.x.0, floor), tip],
-                style::GROUND.filled(),
+                theme::GROUND.filled(),
             )))
             .map_err(text)?;
     } else {
         let mut below = thin(chart, &trench);
         below.extend([(tip.0, floor), (ext.x.0, floor)]);
         chart
-            .draw_series(std::iter::once(Polygon::new(below, style::GROUND.filled())))
+            .draw_series(std::iter::once(Polygon::new(below, theme::GROUND.filled())))
             .map_err(text)?;
     }
     let outline = ground_outline(&visible(surface, d, ext), tip, run.rake, ext);
     chart
         .draw_series(std::iter::once(Polygon::new(
             outline,
-            style::GROUND.filled(),
+            theme::GROUND.filled(),
         )))
         .map_err(text)?;
     chart
@@ -363,11 +365,11 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
     sizes: Sizes,
 ) -> DrawResult {
     let d = run.depth;
-    let edge = style::GROUND_EDGE.stroke_width(sizes.line);
+    let edge = theme::GROUND_EDGE.stroke_width(sizes.line);
     curve(
         chart,
         &visible(surface, d, ext),
-        style::GROUND_EDGE,
+        theme::GROUND_EDGE,
         sizes.line,
     )?;
     let trench = trench_floor(run, u, ext.x.0);
@@ -377,7 +379,7 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
             .draw_series(LineSeries::new([trench[0], tip], edge))
             .map_err(text)?;
     } else {
-        curve(chart, &trench, style::GROUND_EDGE, sizes.line)?;
+        curve(chart, &trench, theme::GROUND_EDGE, sizes.line)?;
     }
     let face = tip.0;
     let thickness = 0.06 * ext.height().min(ext.width()).max(1.0) / 1.5;
@@ -385,7 +387,7 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
         chart
             .draw_series(std::iter::once(Rectangle::new(
                 [(face - thickness, tip.1), (face, ext.y.1)],
-                style::BLADE.filled(),
+                theme::BLADE.filled(),
             )))
             .map_err(text)?;
     } else if is_vertical(run.rake) {
@@ -398,12 +400,12 @@ pub(crate) fn draw_outline<'a, DB: DrawingBackend + 'a>(
             (back, ext.y.1),
         ];
         chart
-            .draw_series(std::iter::once(Polygon::new(plate, style::BLADE.filled())))
+            .draw_series(std::iter::once(Polygon::new(plate, theme::BLADE.filled())))
             .map_err(text)?;
     } else {
         let plate = blade_outline(tip, run.rake, thickness, ext.y.1, ext.x.0);
         chart
-            .draw_series(std::iter::once(Polygon::new(plate, style::BLADE.filled())))
+            .draw_series(std::iter::once(Polygon::new(plate, theme::BLADE.filled())))
             .map_err(text)?;
     }
     Ok(())
@@ -480,7 +482,7 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
         .disable_mesh()
         .disable_x_axis()
         .y_labels(6)
-        .y_label_formatter(&style::tick)
+        .y_label_formatter(&tick)
         .label_style(font(sizes.tick))
         .draw()
         .map_err(text)?;

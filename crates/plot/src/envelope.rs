@@ -5,9 +5,13 @@
 //! line's width on the force's scale, so a second panel below draws each
 //! member's and the band's deviation from the mean on a scale of their own.
 
+use crate::axes::{round_up, title_height, titled, top, Chart};
 use crate::curves::curve_chart;
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{self, curve, round_up, titled, top, Legend, Mark, PAPER};
+use crate::error::{text, DrawResult};
+use crate::legend::{Legend, Mark};
+use crate::lines::curve;
+use crate::render::{save, Picture};
+use crate::theme::{self, PAPER};
 use crate::PlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -50,7 +54,7 @@ impl Envelope {
                 format!("{} members", self.members.len()),
                 Mark::Line(MEMBER),
             ),
-            ("ensemble mean".to_string(), Mark::Line(style::CURVE)),
+            ("ensemble mean".to_string(), Mark::Line(theme::CURVE)),
             (
                 "mean ± 1 standard deviation".to_string(),
                 Mark::Block(SHADE),
@@ -63,7 +67,7 @@ impl Envelope {
 
 impl Picture for Envelope {
     fn size(&self) -> (u32, u32) {
-        let title = style::title_height(PAPER.title);
+        let title = title_height(PAPER.title);
         (WIDTH, title + self.legend().height() + CHART + DEVIATION)
     }
 
@@ -119,7 +123,7 @@ impl Envelope {
     /// The band shaded, the members over it, the mean over them.
     fn draw_curves<'a, DB: DrawingBackend + 'a>(
         &self,
-        chart: &mut style::Chart<'a, DB>,
+        chart: &mut Chart<'a, DB>,
         members: &[Curve],
         mean: &[(f64, f64)],
         band: &[(f64, f64, f64)],
@@ -135,7 +139,7 @@ impl Envelope {
         for member in members {
             curve(chart, member, MEMBER, 1)?;
         }
-        curve(chart, mean, style::CURVE, PAPER.line - 1)
+        curve(chart, mean, theme::CURVE, PAPER.line - 1)
     }
 
     /// Each member's and the band's deviation from the mean, increment by

@@ -1,8 +1,12 @@
 //! The landscape of minimum effort: the force of every candidate band of
 //! one increment against how far ahead of the blade it emerges.
 
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{self, axes, dots, round_up, titled, Legend, Mark, PAPER};
+use crate::axes::{axes, round_up, titled};
+use crate::error::{text, DrawResult};
+use crate::legend::{Legend, Mark};
+use crate::lines::dots;
+use crate::render::{save, Picture};
+use crate::theme::{self, PAPER};
 use crate::PlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -55,7 +59,7 @@ impl Picture for Landscape {
         let area = titled(root, &self.title, PAPER.title)?;
         let legend = Legend::new(
             vec![
-                ("candidate".into(), Mark::Dot(style::CURVE)),
+                ("candidate".into(), Mark::Dot(theme::CURVE)),
                 ("least force (chosen)".into(), Mark::Dot(RED)),
                 ("1 % above the least".into(), Mark::Dashed(BLACK)),
             ],
@@ -86,7 +90,7 @@ impl Picture for Landscape {
             "P/(γ₀d²) (–)",
             PAPER,
         )?;
-        dots(&mut chart, &shown, style::CURVE, 2)?;
+        dots(&mut chart, &shown, theme::CURVE, 2)?;
         let level = least.1 * (1.0 + NEAR);
         chart
             .draw_series(DashedLineSeries::new(
@@ -134,7 +138,7 @@ pub fn draw_landscape_map(map: &LandscapeMap, path: &Path) -> Result<(), PlotErr
 }
 
 fn level_colour(k: usize) -> RGBColor {
-    style::viridis(k as f64 / LEVELS.len() as f64)
+    theme::viridis(k as f64 / LEVELS.len() as f64)
 }
 
 impl Picture for LandscapeMap {
@@ -149,7 +153,7 @@ impl Picture for LandscapeMap {
         for (k, (_, label)) in LEVELS.iter().enumerate() {
             entries.push((label.to_string(), Mark::Block(level_colour(k))));
         }
-        entries.push(("beyond".into(), Mark::Block(style::GRID)));
+        entries.push(("beyond".into(), Mark::Block(theme::GRID)));
         let legend = Legend::new(entries, 1120, PAPER);
         let (legend_area, plot_area) = area.split_vertically(legend.height());
         legend.draw(&legend_area)?;
@@ -178,7 +182,7 @@ impl Picture for LandscapeMap {
                     LEVELS
                         .iter()
                         .position(|l| ratio - 1.0 <= l.0)
-                        .map_or(style::GRID, level_colour)
+                        .map_or(theme::GRID, level_colour)
                 };
                 Rectangle::new(
                     [(*u, start), (u + width, start + self.bin)],

@@ -26,15 +26,20 @@
 #![warn(missing_docs)]
 
 mod animation;
+mod axes;
 mod blade;
 mod bounds;
 mod curves;
 mod deformation;
 mod envelope;
+mod error;
+mod ground;
 mod landscape;
+mod legend;
+mod lines;
 mod panels;
 mod render;
-mod style;
+mod theme;
 mod typeset;
 
 pub use animation::draw_animation;
@@ -42,9 +47,10 @@ pub use bounds::{draw_bounds, BoundsFields};
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;
 pub use envelope::{draw_envelope, Envelope};
+pub use error::PlotError;
 pub use landscape::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap};
 pub use panels::{draw_panels, Panel, Series, SeriesMark};
-pub use render::{Format, PlotError};
+pub use render::Format;
 
 use std::path::{Path, PathBuf};
 

@@ -2,8 +2,9 @@
 //! parameter studies (sweep, fit, convergence), which plot any quantity
 //! against any other.
 
-use crate::render::{save, text, DrawResult, Picture};
-use crate::style::{FAMILY, SERIES};
+use crate::error::{text, DrawResult};
+use crate::render::{save, Picture};
+use crate::theme::{FAMILY, SERIES};
 use crate::PlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -1,44 +1,14 @@
-//! Pictures to files: PNG (150 dpi), SVG, and the errors of both.
+//! Pictures to files: PNG (150 dpi) and SVG.
 
-use crate::style;
+use crate::error::{text, DrawResult, PlotError};
+use crate::theme;
 use crate::typeset::Typeset;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Resolution written into PNG files: 150 dots per inch.
 pub const PNG_DPI: u32 = 150;
-
-/// Why a picture could not be drawn or written.
-#[derive(Debug)]
-pub struct PlotError {
-    /// The file that could not be drawn or written.
-    pub path: PathBuf,
-    /// What went wrong, on one line.
-    pub message: String,
-}
-
-impl PlotError {
-    pub(crate) fn new(path: &Path, message: impl ToString) -> Self {
-        PlotError {
-            path: path.to_path_buf(),
-            message: message
-                .to_string()
-                .split_whitespace()
-                .collect::<Vec<_>>()
-                .join(" "),
-        }
-    }
-}
-
-impl fmt::Display for PlotError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.path.display(), self.message)
-    }
-}
-
-impl std::error::Error for PlotError {}
 
 /// A picture file format, chosen by the file's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,14 +41,6 @@ impl Format {
     }
 }
 
-/// Errors of drawing, as text (plotters' errors depend on the backend).
-pub(crate) type DrawResult = Result<(), String>;
-
-/// Converts any drawing error into the message of a [`DrawResult`].
-pub(crate) fn text<E: fmt::Display>(e: E) -> String {
-    e.to_string()
-}
-
 /// A picture that can be drawn on any plotters backend.
 pub(crate) trait Picture {
     /// Width and height in pixels.
@@ -99,7 +61,7 @@ pub(crate) fn save(picture: &impl Picture, path: &Path) -> Result<(), PlotError>
 
 /// The picture as RGB pixels, row by row.
 pub(crate) fn rgb(picture: &impl Picture) -> Result<Vec<u8>, String> {
-    style::register_font();
+    theme::register_font();
     let (w, h) = picture.size();
     let mut buffer = vec![255u8; (w * h * 3) as usize];
     {
@@ -112,7 +74,7 @@ pub(crate) fn rgb(picture: &impl Picture) -> Result<Vec<u8>, String> {
 }
 
 fn svg(picture: &impl Picture) -> Result<String, String> {
-    style::register_font();
+    theme::register_font();
     let mut out = String::new();
     {
         let root = SVGBackend::with_string(&mut out, picture.size()).into_drawing_area();
@@ -140,4 +102,81 @@ fn png_bytes((w, h): (u32, u32), rgb: &[u8]) -> Result<Vec<u8>, String> {
     writer.write_image_data(rgb).map_err(fail)?;
     writer.finish().map_err(fail)?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{rgb, Picture};
+    use crate::error::{text, DrawResult};
+    use crate::theme::{font, FONT};
+    use ab_glyph::{Font, FontRef, ScaleFont};
+    use plotters::coord::Shift;
+    use plotters::prelude::*;
+
+    /// One line of black text on white, 40 px high.
+    struct Line(&'static str);
+
+    impl Picture for Line {
+        fn size(&self) -> (u32, u32) {
+            (200, 60)
+        }
+
+        fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
+            root.fill(&WHITE).map_err(text)?;
+            root.draw(&Text::new(self.0, (10, 10), font(40)))
+                .map_err(text)
+        }
+    }
+
+    /// The runs of columns that hold ink, as (first, last) pixel columns.
+    fn inked_runs(text: &'static str) -> Vec<(usize, usize)> {
+        let picture = Line(text);
+        let (w, h) = picture.size();
+        let pixels = rgb(&picture).unwrap();
+        let inked = |x: usize| (0..h as usize).any(|y| pixels[(y * w as usize + x) * 3] < 128);
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        for x in 0..w as usize {
+            if !inked(x) {
+                continue;
+            }
+            match runs.last_mut() {
+                Some(run) if run.1 + 1 == x => run.1 = x,
+                _ => runs.push((x, x)),
+            }
+        }
+        runs
+    }
+
+    /// Where the font puts each glyph's ink: the pen (advances and
+    /// kerning) plus the glyph's left side bearing, from the font's metrics.
+    fn ink_starts(text: &str, x: f32, size: f32) -> Vec<f32> {
+        let font = FontRef::try_from_slice(FONT).unwrap();
+        let font = font.as_scaled(size);
+        let (mut pen, mut previous, mut starts) = (x, None, Vec::new());
+        for c in text.chars() {
+            let id = font.glyph_id(c);
+            if let Some(p) = previous {
+                pen += font.kern(p, id);
+            }
+            starts.push(pen + font.h_side_bearing(id));
+            pen += font.h_advance(id);
+            previous = Some(id);
+        }
+        starts
+    }
+
+    /// "(Jin" as the font sets it: each glyph's ink starts at the pen plus
+    /// its bearing, so the J stands nearer the parenthesis than the i.
+    /// Drawn from the pen without bearings (plotters), the J lay against
+    /// the i and a gap opened after the parenthesis: "( Jin".
+    #[test]
+    fn glyphs_stand_where_the_font_puts_them() {
+        let runs = inked_runs("(Jin");
+        assert_eq!(runs.len(), 4, "{runs:?}");
+        for (run, start) in runs.iter().zip(ink_starts("(Jin", 10.0, 40.0)) {
+            assert!((run.0 as f32 - start).abs() <= 1.0, "{runs:?}: {start}");
+        }
+        let gap = |i: usize| runs[i + 1].0 - runs[i].1 - 1;
+        assert!(gap(0) < gap(1), "\"( Jin\": {runs:?}");
+    }
 }

@@ -5,7 +5,7 @@
 //! "(Jin" came out as "( Jin" with the J over the i. [`Typeset`] wraps a
 //! pixel backend and draws text itself; everything else passes through.
 
-use crate::style::FONT;
+use crate::theme::FONT;
 use ab_glyph::{point, Font, FontRef, ScaleFont};
 use plotters::prelude::DrawingBackend;
 use plotters_backend::text_anchor::{HPos, VPos};
@@ -164,82 +164,5 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
                 Ok(())
             }
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::FONT;
-    use crate::render::{rgb, DrawResult, Picture};
-    use crate::style::font;
-    use ab_glyph::{Font, FontRef, ScaleFont};
-    use plotters::coord::Shift;
-    use plotters::prelude::*;
-
-    /// One line of black text on white, 40 px high.
-    struct Line(&'static str);
-
-    impl Picture for Line {
-        fn size(&self) -> (u32, u32) {
-            (200, 60)
-        }
-
-        fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
-            root.fill(&WHITE).map_err(crate::render::text)?;
-            root.draw(&Text::new(self.0, (10, 10), font(40)))
-                .map_err(crate::render::text)
-        }
-    }
-
-    /// The runs of columns that hold ink, as (first, last) pixel columns.
-    fn inked_runs(text: &'static str) -> Vec<(usize, usize)> {
-        let picture = Line(text);
-        let (w, h) = picture.size();
-        let pixels = rgb(&picture).unwrap();
-        let inked = |x: usize| (0..h as usize).any(|y| pixels[(y * w as usize + x) * 3] < 128);
-        let mut runs: Vec<(usize, usize)> = Vec::new();
-        for x in 0..w as usize {
-            if !inked(x) {
-                continue;
-            }
-            match runs.last_mut() {
-                Some(run) if run.1 + 1 == x => run.1 = x,
-                _ => runs.push((x, x)),
-            }
-        }
-        runs
-    }
-
-    /// Where the font puts each glyph's ink: the pen (advances and
-    /// kerning) plus the glyph's left side bearing, from the font's metrics.
-    fn ink_starts(text: &str, x: f32, size: f32) -> Vec<f32> {
-        let font = FontRef::try_from_slice(FONT).unwrap();
-        let font = font.as_scaled(size);
-        let (mut pen, mut previous, mut starts) = (x, None, Vec::new());
-        for c in text.chars() {
-            let id = font.glyph_id(c);
-            if let Some(p) = previous {
-                pen += font.kern(p, id);
-            }
-            starts.push(pen + font.h_side_bearing(id));
-            pen += font.h_advance(id);
-            previous = Some(id);
-        }
-        starts
-    }
-
-    /// "(Jin" as the font sets it: each glyph's ink starts at the pen plus
-    /// its bearing, so the J stands nearer the parenthesis than the i.
-    /// Drawn from the pen without bearings (plotters), the J lay against
-    /// the i and a gap opened after the parenthesis: "( Jin".
-    #[test]
-    fn glyphs_stand_where_the_font_puts_them() {
-        let runs = inked_runs("(Jin");
-        assert_eq!(runs.len(), 4, "{runs:?}");
-        for (run, start) in runs.iter().zip(ink_starts("(Jin", 10.0, 40.0)) {
-            assert!((run.0 as f32 - start).abs() <= 1.0, "{runs:?}: {start}");
-        }
-        let gap = |i: usize| runs[i + 1].0 - runs[i].1 - 1;
-        assert!(gap(0) < gap(1), "\"( Jin\": {runs:?}");
     }
 }

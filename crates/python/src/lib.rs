@@ -19,15 +19,21 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // The fit's default budgets, the library's (as `soilcut fit`'s).
+    m.add("FIT_EVALUATIONS", soilcut_study::fit::EVALUATIONS)?;
+    m.add(
+        "FIT_POLISH_ITERATIONS",
+        soilcut_study::fit::POLISH_ITERATIONS,
+    )?;
+    m.add("FIT_PROFILE_GRID", soilcut_study::fit::PROFILE_GRID)?;
     m.add_class::<case::Case>()?;
     m.add_class::<run::RunRecords>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(run::csv_columns, m)?)?;
     m.add_function(wrap_pyfunction!(study::analytic, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_points, m)?)?;
-    m.add_function(wrap_pyfunction!(study::sweep_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(study::sweep_run, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_check, m)?)?;
-    m.add_function(wrap_pyfunction!(study::sweep_header, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;

@@ -6,8 +6,8 @@ use crate::errors::{case_error, case_message, detached};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
-use soilcut_io::{check_landscape_at, landscape_at, landscape_columns};
-use soilcut_model::analytic::{Baseline, Wedge};
+use pyo3::IntoPyObjectExt;
+use soilcut_io::{baselines, check_landscape_at, landscape_at, landscape_columns};
 use soilcut_model::Simulation;
 use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
 use soilcut_study::sample::{Sample, Vary};
@@ -109,22 +109,57 @@ pub fn sweep_points<'py>(
     Ok((keys, points))
 }
 
-/// `sweep.csv` of a whole sweep run on `jobs` threads (0: one per core),
-/// and `timing.csv`.
+/// The table of `sweep.csv` as columns, in its order: `run` (whole
+/// numbers), the varied keys' values, `status`, `error` (NaN where a run
+/// did not fail, as pandas reads an empty field), then the figures as
+/// float64 arrays ([`SweepResult::figure_columns`], NaN where a run
+/// failed).
+fn sweep_table<'py>(py: Python<'py>, result: &SweepResult) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let rows = &result.rows;
+    out.set_item("run", rows.iter().map(|r| r.run).collect::<Vec<_>>())?;
+    for (k, key) in result.keys.iter().enumerate() {
+        let values = rows
+            .iter()
+            .map(|r| from_toml(py, &r.values[k]))
+            .collect::<PyResult<Vec<_>>>()?;
+        out.set_item(key, values)?;
+    }
+    let status: Vec<&str> = rows
+        .iter()
+        .map(|r| if r.outcome.is_ok() { "ok" } else { "failed" })
+        .collect();
+    out.set_item("status", status)?;
+    let errors = rows
+        .iter()
+        .map(|r| match &r.outcome {
+            Ok(_) => f64::NAN.into_py_any(py),
+            Err(e) => e.into_py_any(py),
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    out.set_item("error", errors)?;
+    for (name, values) in arrays(py, &result.figure_columns())?.iter() {
+        out.set_item(name, values)?;
+    }
+    Ok(out)
+}
+
+/// A whole sweep run on `jobs` threads (0: one per core), as the columns
+/// of `sweep.csv` (see `sweep_table`).
 #[pyfunction]
-pub fn sweep_csv(
-    py: Python<'_>,
-    case: &Bound<'_, PyAny>,
-    varies: Vec<(String, Bound<'_, PyAny>)>,
+pub fn sweep_run<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
+    varies: Vec<(String, Bound<'py, PyAny>)>,
     sample: &str,
     seed: u64,
     jobs: usize,
-) -> PyResult<(String, String)> {
+) -> PyResult<Bound<'py, PyDict>> {
     let sweep = sweep_of(py, case, varies, sample, seed, jobs)?;
     let result = py
         .detach(|| sweep.run(&no_progress))
         .map_err(|e| study_error(py, e))?;
-    Ok((result.csv(), result.timing_csv()))
+    sweep_table(py, &result)
 }
 
 /// One run's values of `keys` as TOML values.
@@ -150,23 +185,18 @@ pub fn sweep_check(
     check_keys(&base, &keys, &values).map_err(|e| study_error(py, e))
 }
 
-/// The header line of `sweep.csv` for a sweep over `keys`.
+/// Run `run` (from 1) of `total` of a sweep over `keys`: its row of
+/// `sweep.csv` as columns of one value (see `sweep_table`) and its wall
+/// time.
 #[pyfunction]
-pub fn sweep_header(keys: Vec<String>) -> String {
-    SweepResult { keys, rows: vec![] }.csv()
-}
-
-/// Run `run` (from 1) of `total` of a sweep over `keys`: its line of
-/// `sweep.csv` (without the header) and its wall time.
-#[pyfunction]
-pub fn sweep_row(
-    py: Python<'_>,
-    case: &Bound<'_, PyAny>,
+pub fn sweep_row<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
     keys: Vec<String>,
-    values: Vec<Bound<'_, PyAny>>,
+    values: Vec<Bound<'py, PyAny>>,
     run: usize,
     total: usize,
-) -> PyResult<(String, f64)> {
+) -> PyResult<(Bound<'py, PyDict>, f64)> {
     if run == 0 || run > total {
         return Err(PyValueError::new_err(format!(
             "run {run}: runs are numbered from 1 to total = {total}"
@@ -188,9 +218,7 @@ pub fn sweep_row(
         keys,
         rows: vec![row],
     };
-    let csv = result.csv();
-    let line = csv.split_once('\n').map_or("", |(_, rows)| rows);
-    Ok((line.to_string(), wall_time_s))
+    Ok((sweep_table(py, &result)?, wall_time_s))
 }
 
 /// A calibration as `soilcut fit` makes it: the best values, their
@@ -216,7 +244,6 @@ pub fn fit<'py>(
     let case = case.get();
     let title = case.loaded.case.title.clone();
     let w = measured_width(width, &case.loaded.case, "width").map_err(|e| study_error(py, e))?;
-    let measured: Vec<(f64, f64)> = measured.iter().map(|&(u, p)| (u, p / w)).collect();
     let compare: Compare = objective
         .parse()
         .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
@@ -226,12 +253,13 @@ pub fn fit<'py>(
     let (evaluations, population, polish_iterations, profile_grid) = budget;
     let weights = vec![1.0; measured.len()];
     let fit = Fit {
-        tests: vec![Test {
-            name: "measured".to_string(),
-            base: case.base(py)?,
-            measured,
+        tests: vec![Test::per_width(
+            "measured",
+            case.base(py)?,
+            &measured,
             weights,
-        }],
+            w,
+        )],
         free,
         bounds,
         compare,
@@ -259,59 +287,30 @@ pub fn fit<'py>(
     out.set_item("best_rms", r.best.rms)?;
     out.set_item("start_rms", r.start.rms)?;
     let files = PyDict::new(py);
-    files.set_item("fit.md", r.markdown(&title))?;
-    files.set_item("fit.csv", r.csv())?;
-    files.set_item("curves.csv", r.curves_csv())?;
-    files.set_item("profiles.csv", r.profiles_csv())?;
-    files.set_item("search.csv", r.search_csv())?;
-    for (name, toml) in r.best_tomls() {
-        files.set_item(name, toml)?;
+    for (name, text) in r.files(&title) {
+        files.set_item(name, text)?;
     }
     out.set_item("files", files)?;
     Ok(out)
 }
 
-fn baseline<'py>(py: Python<'py>, b: Option<Baseline>, norm: f64) -> PyResult<Bound<'py, PyAny>> {
-    let Some(b) = b else {
-        return Ok(py.None().into_bound(py));
-    };
-    let d = PyDict::new(py);
-    d.set_item("force", b.force)?;
-    d.set_item("force_norm", b.force / norm)?;
-    d.set_item("force_h", b.force_h)?;
-    d.set_item("force_v", b.force_v)?;
-    d.set_item("failure_angle_deg", b.failure_angle.to_degrees())?;
-    if let Some(f) = b.factors {
-        let factors = PyDict::new(py);
-        factors.set_item("n_gamma", f.n_gamma)?;
-        factors.set_item("n_c", f.n_c)?;
-        factors.set_item("n_a", f.n_a)?;
-        factors.set_item("n_q", f.n_q)?;
-        d.set_item("factors", factors)?;
-    }
-    Ok(d.into_any())
-}
-
 /// The analytical baselines of the case's initial flat ground, as
-/// `soilcut analytic` prints them: `rankine`, `coulomb` and `fee`, each a
-/// dict (or None where no wedge is admissible).
+/// `soilcut analytic` prints them and `summary.json` holds them
+/// (`soilcut_io::baselines`): `rankine`, `coulomb` and `fee`, each a dict
+/// (or None where no wedge is admissible), in the library's order.
 #[pyfunction]
 pub fn analytic<'py>(py: Python<'py>, case: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
     let case = Case::extract(case)?.get().loaded.case.clone();
-    let wedge = Wedge::of_case(&case);
-    let norm = case.force_scale();
-    let out = PyDict::new(py);
-    out.set_item("rankine", baseline(py, Some(wedge.rankine()), norm)?)?;
-    out.set_item("coulomb", baseline(py, wedge.coulomb(), norm)?)?;
-    out.set_item("fee", baseline(py, wedge.fee(), norm)?)?;
-    if let Some(w) = case.blade.width {
-        let narrow = wedge.mckyes_ali(w);
-        let d = baseline(py, narrow.map(|n| n.baseline), norm * w)?;
-        if let (Some(n), Ok(dict)) = (narrow, d.cast::<PyDict>()) {
-            dict.set_item("rupture", n.rupture)?;
-            dict.set_item("crescent_angle_deg", n.crescent_angle.to_degrees())?;
-        }
-        out.set_item("mckyes_ali", d)?;
+    let text = serde_json::to_string(&baselines(&case)).expect("baselines serialise");
+    // Python's json keeps the fields' order and reads every float back
+    // exactly (serde_json writes the shortest round-trip form).
+    let out = PyModule::import(py, "json")?
+        .call_method1("loads", (text,))?
+        .cast_into::<PyDict>()?;
+    if case.blade.width.is_some() && !out.contains("mckyes_ali")? {
+        // summary.json leaves out a blade's baseline without an admissible
+        // wedge; Python has said None there.
+        out.set_item("mckyes_ali", py.None())?;
     }
     Ok(out)
 }

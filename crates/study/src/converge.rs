@@ -431,13 +431,6 @@ impl ConvergeResult {
     pub fn markdown(&self) -> String {
         let mut s = String::new();
         let w = &mut s;
-        let f = |x: f64| {
-            if x.is_nan() {
-                "–".to_string()
-            } else {
-                format!("{x:.4}")
-            }
-        };
         let _ = writeln!(w, "# Convergence with the resolution: {}\n", self.title);
         let _ = writeln!(
             w,
@@ -445,6 +438,16 @@ impl ConvergeResult {
             self.refine.describe(),
             self.tolerance * 100.0
         );
+        self.levels_markdown(w);
+        self.windows_markdown(w);
+        let (names, changes) = (Self::change_names(), self.changes());
+        self.changes_markdown(w, &names, &changes);
+        self.verdicts_markdown(w, &names, &changes);
+        s
+    }
+
+    /// `converge.md`'s table of each level's resolution and quantities.
+    fn levels_markdown(&self, w: &mut String) {
         let _ = writeln!(w, "## Per level\n");
         let _ = writeln!(
             w,
@@ -457,7 +460,7 @@ impl ConvergeResult {
                 .iter()
                 .map(|q| match is_count(q) {
                     true => format!("{}", q.1(l)),
-                    false => f(q.1(l)),
+                    false => cell(q.1(l)),
                 })
                 .collect();
             let _ = writeln!(
@@ -471,6 +474,10 @@ impl ConvergeResult {
                 values.join(" | ")
             );
         }
+    }
+
+    /// `converge.md`'s tables of the window means and the envelope.
+    fn windows_markdown(&self, w: &mut String) {
         let tables: [(&str, PerWindow); 2] = [
             ("Mean force P/(γ0 d²)", |l| &l.window_mean),
             ("Force envelope (largest P/(γ0 d²))", |l| &l.window_max),
@@ -486,11 +493,14 @@ impl ConvergeResult {
                 "---|".repeat(windows + 1)
             );
             for l in &self.levels {
-                let v: Vec<String> = values(l).iter().map(|&x| f(x)).collect();
+                let v: Vec<String> = values(l).iter().map(|&x| cell(x)).collect();
                 let _ = writeln!(w, "| {} | {} |", l.level, v.join(" | "));
             }
         }
-        let names = Self::change_names();
+    }
+
+    /// `converge.md`'s table of the relative changes between levels.
+    fn changes_markdown(&self, w: &mut String, names: &[&str], changes: &[Vec<f64>]) {
         let _ = writeln!(w, "\n## Relative change from the previous level\n");
         let _ = writeln!(
             w,
@@ -501,15 +511,18 @@ impl ConvergeResult {
                 .join(" | ")
         );
         let _ = writeln!(w, "|{}", "---|".repeat(self.levels.len()));
-        let changes = self.changes();
         for (i, name) in names.iter().enumerate() {
-            let v: Vec<String> = changes.iter().map(|row| f(row[i])).collect();
+            let v: Vec<String> = changes.iter().map(|row| cell(row[i])).collect();
             let _ = writeln!(w, "| {name} | {} |", v.join(" | "));
         }
         let _ = writeln!(
             w,
             "\nThe profile row is the RMS difference between the two levels' final surfaces over {PROFILE_REACH_DEPTHS} d ahead of the blade, relative to the finer level's pile height (the per-level table gives each level against the finest). Window rows give the largest change over the windows.\n"
         );
+    }
+
+    /// `converge.md`'s verdicts, one line per quantity.
+    fn verdicts_markdown(&self, w: &mut String, names: &[&str], changes: &[Vec<f64>]) {
         let _ = writeln!(w, "## Verdict\n");
         for (i, (name, verdict)) in names.iter().zip(self.converged()).enumerate() {
             let text = match verdict {
@@ -534,7 +547,6 @@ impl ConvergeResult {
             };
             let _ = writeln!(w, "- {name}: {text}{last}{shrinking}");
         }
-        s
     }
 
     /// `converge.png`: window means and envelope against u/d, the final
@@ -614,5 +626,13 @@ impl ConvergeResult {
             path,
         )?;
         Ok(())
+    }
+}
+/// A number of `converge.md`'s tables: four decimals, a dash for none.
+fn cell(x: f64) -> String {
+    if x.is_nan() {
+        "–".to_string()
+    } else {
+        format!("{x:.4}")
     }
 }

@@ -12,6 +12,7 @@ use crate::run::{override_of, BaseCase};
 use crate::sample::{points, Sample, Vary};
 use crate::Progress;
 use rayon::prelude::*;
+use soilcut_io::Columns;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -162,6 +163,20 @@ impl SweepResult {
                 }
             }
             out.push_str(&csv::line(&fields));
+        }
+        out
+    }
+
+    /// The figures of every run ([`NAMES`]), row by row; NaN for a run
+    /// that failed: the numbers of `sweep.csv`, for front ends that hand
+    /// out arrays.
+    pub fn figure_columns(&self) -> Columns {
+        let mut out = Columns::named(NAMES.iter().map(|n| n.to_string()).collect());
+        for row in &self.rows {
+            match &row.outcome {
+                Ok(figures) => out.push(&figures.values()),
+                Err(_) => out.push(&[f64::NAN; NAMES.len()]),
+            }
         }
         out
     }

@@ -235,8 +235,11 @@ pub struct RecordedSpread {
 impl RecordedSpread {
     /// Reads `dir/ensemble.csv` and `dir/summary.json`.
     pub fn read(dir: &Path) -> Result<RecordedSpread, soilcut_io::RunFilesError> {
-        let table = soilcut_io::Table::read(&dir.join("ensemble.csv"))?;
-        let [n, mean, std, min, max] = table.columns(["members", "mean", "std", "min", "max"])?;
+        let csv = dir.join("ensemble.csv");
+        let table = Columns::read(&csv)?;
+        let [n, mean, std, min, max] = table
+            .columns(["members", "mean", "std", "min", "max"])
+            .map_err(|message| soilcut_io::RunFilesError { path: csv, message })?;
         let windows = (0..table.len())
             .map(|i| Spread {
                 n: n[i] as usize,

@@ -116,6 +116,24 @@ pub struct Test {
 }
 
 impl Test {
+    /// A measured curve of (u, force) as a test of `base`, the forces
+    /// divided by `width` (from [`measured_width`]: 1 for forces per unit
+    /// width) and the weights as given (one per point).
+    pub fn per_width(
+        name: impl Into<String>,
+        base: BaseCase,
+        points: &[(f64, f64)],
+        weights: Vec<f64>,
+        width: f64,
+    ) -> Self {
+        Test {
+            name: name.into(),
+            base,
+            measured: points.iter().map(|&(u, p)| (u, p / width)).collect(),
+            weights,
+        }
+    }
+
     /// Checks the curve against the case: weights, u within the travel.
     pub fn check(&self) -> Result<(), StudyError> {
         let spec = |m: String| Err(StudyError::Spec(format!("{}: {m}", self.name)));

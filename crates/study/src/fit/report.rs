@@ -48,6 +48,21 @@ impl FitResult {
         }
     }
 
+    /// The text files of `soilcut fit` (name, contents): `fit.md` (titled
+    /// `title`), `fit.csv`, `curves.csv`, `profiles.csv`, `search.csv` and
+    /// the [`best_tomls`](Self::best_tomls).
+    pub fn files(&self, title: &str) -> Vec<(String, String)> {
+        let mut files = vec![
+            ("fit.md".to_string(), self.markdown(title)),
+            ("fit.csv".to_string(), self.csv()),
+            ("curves.csv".to_string(), self.curves_csv()),
+            ("profiles.csv".to_string(), self.profiles_csv()),
+            ("search.csv".to_string(), self.search_csv()),
+        ];
+        files.extend(self.best_tomls());
+        files
+    }
+
     /// The files named `best.toml` (the first test's case at the best
     /// values) and `best-<k>.toml` for test k ≥ 2, resolved.
     pub fn best_tomls(&self) -> Vec<(String, String)> {
