@@ -4,8 +4,8 @@
 #   1. the landscape of Table 1 HS at u/d = 4, d/500 (README, "The landscape
 #      of minimum effort"), and the rows of docs/performance.md's table
 #      ("the minimum is flat") at d/200, d/500, d/1000 and u/d = 2, 4, 4.5;
-#   2. the landscape maps of Table 1 HS and Table 1 S with --every 0.05
-#      (README: "in how many landscapes ...");
+#   2. the landscape maps of Table 1 HS and Table 1 S with --every 0.05 at
+#      d/500, as the README's command (README: "in how many landscapes ...");
 #   3. examples/mpc.py's full run: its wall time and printed figures
 #      (README, "Planning and reinforcement learning"), with the Python of
 #      $SOILCUT_VENV (default .venv) if the package is installed there.
@@ -36,7 +36,8 @@ echo
 echo "landscape maps, --every 0.05 at d/500:"
 for name in table1-hs table1-s; do
     printf '%s: ' "$name"
-    "$soilcut" landscape "cases/paper/$name.toml" --every 0.05 --force --out "$out/map-$name"
+    "$soilcut" landscape "cases/paper/$name.toml" --every 0.05 --set run.increment=0.04 \
+        --force --out "$out/map-$name"
 done
 
 venv="${SOILCUT_VENV:-.venv}"
