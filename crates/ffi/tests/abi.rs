@@ -198,8 +198,9 @@ fn a_bad_case_file_names_the_path_and_the_key() {
         "{message}"
     );
     let travel = CString::new("run.travel=0.04").unwrap();
-    let sets = [travel.as_ptr()];
-    let code = unsafe { soilcut_new_from_file(path.as_ptr(), sets.as_ptr(), 1, &mut sim) };
+    let increment = CString::new("run.increment=0.02").unwrap();
+    let sets = [travel.as_ptr(), increment.as_ptr()];
+    let code = unsafe { soilcut_new_from_file(path.as_ptr(), sets.as_ptr(), 2, &mut sim) };
     assert_eq!(code, SOILCUT_OK);
     assert_eq!(state(sim).steps_total, 2);
     unsafe { soilcut_free(sim) };
