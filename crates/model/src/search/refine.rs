@@ -6,7 +6,7 @@
 //! emergence node or a V whose tip lies where the footprint meets an edge
 //! of the soil's state (a softened zone): its least value then lies within
 //! a stride of a sample that is a local minimum, and at most the V's slope
-//! times half a stride below it (docs/model.md §2.8).
+//! times half a stride below it (docs/model.md §2.8, (M47)).
 
 use super::block::Block;
 use super::input::SearchInput;
