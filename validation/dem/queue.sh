@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Runs DEM jobs one after another on one core, each line of a job list a
 # script and its options (e.g. "cut.py vertical --seed 15"), logs in logs/,
-# skipping jobs whose log ends with a finished run. Two queues may run side
-# by side (one core each) if their beds are made before their cuts.
+# skipping jobs whose log ends with a finished run, niced (nice -n 10), each
+# log appended to (a cut with --checkpoint T --resume continues from its last
+# checkpoint when the queue is started again). Two queues may run side by
+# side (one core each) if their beds are made before their cuts.
 #   bash validation/dem/queue.sh JOBS_FILE
 set -uo pipefail
 cd "$(dirname "$0")"
@@ -13,6 +15,6 @@ while read -r script args; do
   log="logs/${script%.py}_$(echo "$args" | tr -s ' -' '_' | sed 's/^_//').log"
   if [ -f "$log" ] && grep -q '"wall_time_s"' "$log"; then continue; fi
   echo "$(date +%T) start $script $args" >> logs/queue.log
-  yade -n -j1 -x "$script" $args > "$log" 2>&1
+  nice -n 10 yade -n -j1 -x "$script" $args >> "$log" 2>&1
   echo "$(date +%T) end $script $args rc=$?" >> logs/queue.log
 done < "$1"
