@@ -184,7 +184,7 @@ class Recorder:
         print(f"u/d = {s:.2f}  iter {O.iter}  wall {self.elapsed():.0f} s", flush=True)
 
     def write(self):
-        base = g.path("results", g.OUT, self.run)
+        base = g.path("results", g.OUT or "cuts", self.run)
         if g.ENERGY:
             g.write_csv(
                 base + "_energy.csv",
@@ -388,7 +388,7 @@ def main():
                 "command": "yade -n -j1 -x cut.py " + " ".join(sys.argv[1:]),
             }
         )
-    with open(g.path("results", g.OUT, run + ".json"), "w") as f:
+    with open(g.path("results", g.OUT or "cuts", run + ".json"), "w") as f:
         json.dump(meta, f, indent=1)
     print(json.dumps(meta), flush=True)
 

@@ -30,7 +30,8 @@ every earlier run, and a run's name records each one that differs):
     --dt-factor F     the time step over Yade's P-wave time step (default 0.5)
     --energy          track the energy budget (cut.py: the blade's work, the
                       damping's and friction's dissipation; bookkeeping only)
-    --out DIR         results/DIR instead of results/cuts (cut.py)
+    --out DIR         results/DIR instead of results/cuts (cut.py) or
+                      results/element (biaxial.py)
     --checkpoint T    save the state every T d of travel (cut.py; 0: never)
     --resume          continue a cut from its last checkpoint (cut.py)
 
@@ -63,7 +64,7 @@ DAMPING = 0.2  # Cundall's non-viscous damping
 DAMP_GRAVITY = True  # gravity is damped with the contact forces (Yade's default)
 DT_FACTOR = 0.5  # time step over the P-wave time step
 ENERGY = False  # track the energy budget (cut.py)
-OUT = "cuts"  # results/OUT (cut.py)
+OUT = None  # results/OUT instead of the script's own folder (cut.py: cuts)
 CHECKPOINT = 0.0  # checkpoint interval in d (cut.py; 0: none)
 RESUME = False  # continue from the last checkpoint (cut.py)
 GRAVITY = 9.81

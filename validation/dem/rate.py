@@ -67,6 +67,9 @@ def run_row(meta, folder):
     out["half_0"] = mean_in(rows, 0.0, 0.5)
     out["window_0"] = mean_in(rows, 0.0, 1.0)
     out["window_1"] = mean_in(rows, 1.0, 2.0)
+    # the share of the blade's draft over [0, 0.5) d that is not the face's (its bottom, back)
+    face = mean_in(rows, 0.0, 0.5, "force_h_N_per_m")
+    out["bottom_share"] = 1 - face / mean_in(rows, 0.0, 0.5, "force_h_all_N_per_m")
     out["wall_time_s"] = meta["wall_time_s"]
     out["folder"] = folder.name
     energy = folder / (meta["run"] + "_energy.csv")
@@ -74,6 +77,11 @@ def run_row(meta, folder):
         last = read_rows(energy)[-1]
         work = last["blade_work_J_per_m"]
         out["damping_share"] = last["nonviscDamp_J_per_m"] / work
+        # the blade's work and that work less the damping's, per unit travel, over gamma d^2:
+        # the mean draft of every contact of the blade and the part of it the damping leaves
+        norm = meta["unit_weight_N_per_m3"] * (meta["depth_mm"] * 1e-3) ** 2 * last["u_mm"] * 1e-3
+        out["work_draft"] = work / norm
+        out["work_draft_undamped"] = (work - last["nonviscDamp_J_per_m"]) / norm
         out["friction_share"] = (last["plastDissip_J_per_m"] + last["shearDissip_J_per_m"]) / work
         # Yade's gravWork: -g.v m dt summed, the rise of the grains' potential energy
         out["potential_share"] = last["gravWork_J_per_m"] / work
@@ -175,15 +183,20 @@ def main():
         "blade's work on the grains at the end of the run (damping: Cundall's non-viscous",
         "damping; friction: sliding at the contacts; potential: the grains' rise;",
         "kinetic: what they still carry; rest: what Yade does not count, the elastic",
-        "energy stored and the rolling resistance's dissipation).",
+        "energy stored and the rolling resistance's dissipation). W: the blade's work on",
+        "the grains (every contact, the bottom's too) over the travel and gamma d^2, the",
+        "mean draft it implies; W − damping: the same less the damping's work. bottom:",
+        "the share of the blade's draft over [0, 0.5) d that is not the face's.",
         "",
         "| settings | speed (mm/s) | seed | travel (d) | [0,0.5) d | [0,1) d | [1,2) d "
-        "| damping | friction | potential | kinetic | rest | wall time (s) | folder |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| bottom | W | W − damping | damping | friction | potential | kinetic | rest "
+        "| wall time (s) | folder |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in runs:
         cells = [r["settings"], f"{r['speed_mm_s']:g}", str(r["seed"]), f"{r['travel_d']:g}"]
         cells += [fmt(r[k]) for k in ("half_0", "window_0", "window_1")]
+        cells += [fmt(r.get(k)) for k in ("bottom_share", "work_draft", "work_draft_undamped")]
         cells += [fmt(r.get(k + "_share")) for k in SHARES]
         cells += [f"{r['wall_time_s']:.0f}", r["folder"]]
         lines.append("| " + " | ".join(cells) + " |")
