@@ -5,7 +5,9 @@
 Usage: python3 validation/dem/rate.py
 
 Reads results/rate/RUN.json, RUN_forces.csv and RUN_energy.csv (cut.py
---out rate --energy) and the earlier speed series of the vertical cut in the
+--out rate --energy: the short runs of jobs-rate.txt), the same in
+results/damp0/ (jobs-damp0.txt: the runs of 2 d without damping) and the
+earlier speed series of the vertical cut in the
 bed of seed 14 (results/cuts/vertical_r10_s14{,_v20,_v10}), and writes
 results/rate/summary.md and results/rate/summary.json:
 
@@ -60,7 +62,8 @@ def read_rows(path):
 
 def run_row(meta, folder):
     rows = read_rows(folder / (meta["run"] + "_forces.csv"))
-    out = {"run": meta["run"], "seed": meta["seed"], "speed_mm_s": meta["speed_m_per_s"] * 1e3}
+    out = {"run": meta["run"], "cut": meta["name"], "seed": meta["seed"]}
+    out["speed_mm_s"] = meta["speed_m_per_s"] * 1e3
     for key, default in DEFAULTS.items():
         out[key] = meta.get(key, default)
     out["travel_d"] = meta["travel_mm"] / meta["depth_mm"]
@@ -158,14 +161,16 @@ def main():
         meta = json.loads((HERE / "cuts" / (name + ".json")).read_text())
         row = run_row(meta, HERE / "cuts")
         runs.append(row)
-    for path in sorted(RATE.glob("*.json")):
-        if path.name == "summary.json":
-            continue
-        runs.append(run_row(json.loads(path.read_text()), RATE))
+    for folder in (RATE, HERE / "damp0"):
+        for path in sorted(folder.glob("*.json")):
+            if path.name != "summary.json":
+                runs.append(run_row(json.loads(path.read_text()), folder))
     for r in runs:
         r["settings"] = settings_label(r)
     runs.sort(
         key=lambda r: (
+            r["cut"] != "vertical",
+            r["cut"],
             r["settings"] != "reference",
             r["settings"],
             -r["speed_mm_s"],
@@ -188,13 +193,19 @@ def main():
         "mean draft it implies; W − damping: the same less the damping's work. bottom:",
         "the share of the blade's draft over [0, 0.5) d that is not the face's.",
         "",
-        "| settings | speed (mm/s) | seed | travel (d) | [0,0.5) d | [0,1) d | [1,2) d "
+        "| cut | settings | speed (mm/s) | seed | travel (d) | [0,0.5) d | [0,1) d | [1,2) d "
         "| bottom | W | W − damping | damping | friction | potential | kinetic | rest "
         "| wall time (s) | folder |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in runs:
-        cells = [r["settings"], f"{r['speed_mm_s']:g}", str(r["seed"]), f"{r['travel_d']:g}"]
+        cells = [
+            r["cut"],
+            r["settings"],
+            f"{r['speed_mm_s']:g}",
+            str(r["seed"]),
+            f"{r['travel_d']:g}",
+        ]
         cells += [fmt(r[k]) for k in ("half_0", "window_0", "window_1")]
         cells += [fmt(r.get(k)) for k in ("bottom_share", "work_draft", "work_draft_undamped")]
         cells += [fmt(r.get(k + "_share")) for k in SHARES]
@@ -202,8 +213,8 @@ def main():
         lines.append("| " + " | ".join(cells) + " |")
     groups = {}
     for r in runs:
-        if r["folder"] == "rate" and r["window_0"] is not None:
-            groups.setdefault((r["settings"], r["speed_mm_s"]), []).append(r)
+        if r["folder"] != "cuts" and r["window_0"] is not None:
+            groups.setdefault((r["cut"], r["settings"], r["speed_mm_s"]), []).append(r)
     multi = {k: v for k, v in groups.items() if len(v) >= 2}
     table = []
     if multi:
@@ -211,11 +222,12 @@ def main():
             "",
             "Over seeds (runs of at least 1 d; mean ± sample standard deviation):",
             "",
-            "| settings | speed (mm/s) | seeds | [0,1) d | [1,2) d |",
-            "|---|---|---|---|---|",
+            "| cut | settings | speed (mm/s) | seeds | [0,1) d | [1,2) d |",
+            "|---|---|---|---|---|---|",
         ]
-        for (label, v), rs in sorted(multi.items(), key=lambda kv: (kv[0][0], -kv[0][1])):
-            row = {"settings": label, "speed_mm_s": v, "seeds": sorted(r["seed"] for r in rs)}
+        for (cut, label, v), rs in sorted(multi.items(), key=lambda kv: kv[0][:2] + (-kv[0][2],)):
+            row = {"cut": cut, "settings": label, "speed_mm_s": v}
+            row["seeds"] = sorted(r["seed"] for r in rs)
             cells = []
             for w in ("window_0", "window_1"):
                 vals = [r[w] for r in rs if r[w] is not None]
@@ -229,13 +241,13 @@ def main():
                 else:
                     cells.append("–")
             table.append(row)
-            lines.append(f"| {label} | {v:g} | {len(rs)} | {cells[0]} | {cells[1]} |")
+            lines.append(f"| {cut} | {label} | {v:g} | {len(rs)} | {cells[0]} | {cells[1]} |")
         checks = []
         for row in table:
             slower = [
                 t
                 for t in table
-                if t["settings"] == row["settings"]
+                if (t["cut"], t["settings"]) == (row["cut"], row["settings"])
                 and abs(t["speed_mm_s"] - row["speed_mm_s"] / 2) < 1e-9
             ]
             for t in slower:
@@ -245,6 +257,7 @@ def main():
                         sd = max(row[w]["sd"], t[w]["sd"])
                         checks.append(
                             (
+                                row["cut"],
                                 row["settings"],
                                 row["speed_mm_s"],
                                 t["speed_mm_s"],
@@ -260,12 +273,13 @@ def main():
                 "Halving the speed (change of the seeds' mean against the larger",
                 "standard deviation of the two speeds):",
                 "",
-                "| settings | speeds (mm/s) | window | change | sd | within one sd |",
-                "|---|---|---|---|---|---|",
+                "| cut | settings | speeds (mm/s) | window | change | sd | within one sd |",
+                "|---|---|---|---|---|---|---|",
             ]
-            for label, v1, v2, w, change, sd, ok in checks:
+            for cut, label, v1, v2, w, change, sd, ok in checks:
                 lines.append(
-                    "| {} | {:g} → {:g} | {} | {:+.2f} | {:.2f} | {} |".format(
+                    "| {} | {} | {:g} → {:g} | {} | {:+.2f} | {:.2f} | {} |".format(
+                        cut,
                         label,
                         v1,
                         v2,
