@@ -278,16 +278,21 @@ def save_checkpoint(run, argv, rec, it0, steps):
 
 
 def rescale_stiffness(factor):
-    """Multiply the stiffness of the bed's contacts by `factor` (--young), then settle."""
+    """Multiply the stiffness of the bed's contacts by `factor` (--young), then settle
+    with the reference damping 0.2, as the bed was (without damping it would not
+    come to rest)."""
     for i in O.interactions:
         if i.isReal:
             i.phys.kn *= factor
             i.phys.ks *= factor
             i.phys.kr *= factor
             i.phys.ktw *= factor
+    cut_damping, g.DAMPING = g.DAMPING, 0.2
     O.engines = g.engines(O, yade, [])
     O.dt = g.DT_FACTOR * utils.PWaveTimeStep()
-    return g.settle(O, utils, 0.005)
+    steps = g.settle(O, utils, 0.005)
+    g.DAMPING = cut_damping
+    return steps
 
 
 def main():
