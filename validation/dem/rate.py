@@ -31,7 +31,9 @@ results/rate/summary.md and results/rate/summary.json:
   increase added to the element tests' peak friction (tan phi_p,
   phi_p = 42.3 deg) and turned into a force with Coulomb's passive
   coefficient for a vertical wall with wall friction 20 deg and level
-  ground: the force ratio mu(I) predicts between two speeds.
+  ground: the force ratio mu(I) predicts between two speeds; beside it the
+  momentum the blade gives the soil it moves, (gamma / g) d v^2 per unit
+  width, over gamma d^2.
 """
 
 import csv
@@ -144,6 +146,9 @@ def expectation(speeds):
                 "mu_increase": extra,
                 "phi_deg": phi,
                 "force_over_quasi_static": k / base,
+                # the momentum the blade gives the soil it moves, (gamma / g) d v^2 per unit
+                # width, over gamma d^2: the pile's momentum as a force
+                "momentum_norm": (v * 1e-3) ** 2 / (9.81 * 0.020),
             }
         )
     return {"band_thickness_mm": thickness * 1e3, "p_Pa": p, "rows": out}
@@ -367,17 +372,19 @@ def main():
         ),
         "p = gamma d / 2 = {:.0f} Pa):".format(exp["p_Pa"]),
         "",
-        "| speed (mm/s) | I | mu increase | phi (°) | force / quasi-static |",
-        "|---|---|---|---|---|",
+        "| speed (mm/s) | I | mu increase | phi (°) | force / quasi-static "
+        "| momentum flux / (gamma d^2) |",
+        "|---|---|---|---|---|---|",
     ]
     for e in exp["rows"]:
         lines.append(
-            "| {:g} | {:.1e} | {:.4f} | {:.2f} | {:.3f} |".format(
+            "| {:g} | {:.1e} | {:.4f} | {:.2f} | {:.3f} | {:.1e} |".format(
                 e["speed_mm_s"],
                 e["inertial_number"],
                 e["mu_increase"],
                 e["phi_deg"],
                 e["force_over_quasi_static"],
+                e["momentum_norm"],
             )
         )
     (RATE / "summary.md").write_text("\n".join(lines) + "\n")
