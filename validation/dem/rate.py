@@ -22,7 +22,8 @@ results/rate/summary.md and results/rate/summary.json:
 - per configuration (settings and speed) with runs of several seeds: the
   mean and sample standard deviation of the [0, 1) d and [1, 2) d means over
   the seeds, and for each halving of the speed whether the means change by
-  less than one standard deviation (the larger of the two speeds');
+  less than one standard deviation (the larger of the two speeds'), and
+  the change over its standard error, sqrt(sd1^2 / n1 + sd2^2 / n2);
 - the expectation from the inertial number: I = (v / t) D / sqrt(p / rho_s),
   t the band thickness of the vertical cut at 40 mm/s (results/summary.json,
   the mean over u = 0.5 to 1 d), D = 2 mm, p = gamma d / 2, and the mu(I)
@@ -260,6 +261,10 @@ def main():
                     if w in row and w in t:
                         change = t[w]["mean"] - row[w]["mean"]
                         sd = max(row[w]["sd"], t[w]["sd"])
+                        # the change over its standard error (n seeds at each speed)
+                        error = math.sqrt(
+                            row[w]["sd"] ** 2 / row[w]["n"] + t[w]["sd"] ** 2 / t[w]["n"]
+                        )
                         checks.append(
                             (
                                 row["cut"],
@@ -270,6 +275,7 @@ def main():
                                 change,
                                 sd,
                                 abs(change) < sd,
+                                change / error,
                             )
                         )
         if checks:
@@ -278,12 +284,13 @@ def main():
                 "Halving the speed (change of the seeds' mean against the larger",
                 "standard deviation of the two speeds):",
                 "",
-                "| cut | settings | speeds (mm/s) | window | change | sd | within one sd |",
-                "|---|---|---|---|---|---|---|",
+                "| cut | settings | speeds (mm/s) | window | change | sd | within one sd "
+                "| change / its standard error |",
+                "|---|---|---|---|---|---|---|---|",
             ]
-            for cut, label, v1, v2, w, change, sd, ok in checks:
+            for cut, label, v1, v2, w, change, sd, ok, z in checks:
                 lines.append(
-                    "| {} | {} | {:g} → {:g} | {} | {:+.2f} | {:.2f} | {} |".format(
+                    "| {} | {} | {:g} → {:g} | {} | {:+.2f} | {:.2f} | {} | {:+.1f} |".format(
                         cut,
                         label,
                         v1,
@@ -292,6 +299,7 @@ def main():
                         change,
                         sd,
                         "yes" if ok else "no",
+                        z,
                     )
                 )
     # the pivot docs/validation.md quotes: the [0,0.5) d means of the 0.5 d runs
