@@ -34,13 +34,17 @@ results/rate/summary.md and results/rate/summary.json:
   coefficient for a vertical wall with wall friction 20 deg and level
   ground: the force ratio mu(I) predicts between two speeds; beside it the
   momentum the blade gives the soil it moves, (gamma / g) d v^2 per unit
-  width, over gamma d^2.
+  width, over gamma d^2;
+- the element tests of results/element_DIR (biaxial.py --damping C --out
+  element_DIR) reduced by parameters.py's rule (its function `test`), beside
+  the reference tests at the same confining stresses.
 """
 
 import csv
 import json
 import math
 import statistics
+import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent / "results"
@@ -153,6 +157,25 @@ def expectation(speeds):
             }
         )
     return {"band_thickness_mm": thickness * 1e3, "p_Pa": p, "rows": out}
+
+
+def element_tests():
+    """parameters.py's reduction of every biaxial test in results/element and in the
+    results/element_* folders of the rate study, for the tests run in the latter."""
+    sys.path.insert(0, str(HERE.parent))
+    import parameters
+
+    out = []
+    folders = sorted(p for p in HERE.glob("element_*") if p.is_dir())
+    done = {float(p.stem.split("_")[1]) for f in folders for p in f.glob("biaxial_*.csv")}
+    for folder in [HERE / "element"] + folders:
+        for path in sorted(folder.glob("biaxial_*.csv"), key=lambda p: float(p.stem[8:])):
+            sigma = float(path.stem.split("_")[1])
+            if sigma in done:
+                t = parameters.test(path)
+                keys = ("phi_p", "phi_r", "noise_deg")
+                out.append({"folder": folder.name, "sigma_Pa": sigma, **{k: t[k] for k in keys}})
+    return out
 
 
 def fmt(x, digits=2):
@@ -395,8 +418,31 @@ def main():
                 e["momentum_norm"],
             )
         )
+    element = element_tests()
+    if element:
+        lines += [
+            "",
+            "The element tests with the damping of the shear changed (results/element_DIR,",
+            "biaxial.py --damping), reduced by parameters.py's rule beside the reference's",
+            "(results/element): peak and critical-state friction angles (°):",
+            "",
+            "| tests | σ3 (Pa) | φp | φr (noise) |",
+            "|---|---|---|---|",
+        ]
+        for e in element:
+            lines.append(
+                f"| {e['folder']} | {e['sigma_Pa']:g} | {e['phi_p']:.1f} "
+                f"| {e['phi_r']:.1f} (± {e['noise_deg']:.1f}) |"
+            )
     (RATE / "summary.md").write_text("\n".join(lines) + "\n")
-    out = {"runs": runs, "seeds": table, "noise": noise, "ratios": ratios, "expectation": exp}
+    out = {
+        "runs": runs,
+        "seeds": table,
+        "noise": noise,
+        "ratios": ratios,
+        "expectation": exp,
+        "element": element,
+    }
     (RATE / "summary.json").write_text(json.dumps(out, indent=1) + "\n")
     print("\n".join(lines))
 
