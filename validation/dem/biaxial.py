@@ -1,6 +1,7 @@
 """Plane-strain biaxial test on the bed's grains (periodic cell, one layer).
 
-Run: yade -n -j1 -x biaxial.py SIGMA [--seed S]   (SIGMA: the confining stress in Pa)
+Run: yade -n -j1 -x biaxial.py SIGMA [--seed S] [--damping C] [--dt-factor F] [--out DIR]
+(SIGMA: the confining stress in Pa)
 
 The grains are compacted isotropically to SIGMA0 with the bed's raining
 friction (about the bed's density), given their working
@@ -9,6 +10,12 @@ SIGMA0 and z does not strain. Writes results/element/biaxial_SIGMA.csv (strains
 and stresses, compression positive, every 0.2 % of axial strain, raw) and
 results/element/biaxial_SIGMA.json (the run's figures); parameters.py turns the
 curves into soilcut's parameters.
+
+Issue 31's settings (grains.py): --damping sets the damping of the shear
+only (the packing is compacted with the reference damping 0.2, as the beds
+are rained with it), --dt-factor the time step; --out DIR writes to
+results/DIR instead of results/element (parameters.py reads
+results/element only).
 """
 
 import json
@@ -24,9 +31,11 @@ from yade import O, pack, utils  # noqa: E402
 
 SIGMA0 = 300.0  # confining stress (Pa), set from the command line
 SIDE = 0.098  # cell side (m) of the loose cloud (NUM grains)
-DEPTH_Z = 2.6 * 2 * g.RADIUS * (1 + g.FUZZ)  # cell thickness (m): the periodic collider needs > 2.1 largest bounding boxes
+# cell thickness (m): the periodic collider needs > 2.1 largest bounding boxes
+DEPTH_Z = 2.6 * 2 * g.RADIUS * (1 + g.FUZZ)
 COMPACT_STRESS = 300.0  # isotropic stress (Pa) of the compaction, the same for every test
-RATE_300 = 0.2  # axial strain rate (1/s) at 300 Pa: inertial number ~ 1e-3; scaled as sqrt(SIGMA0) to keep it
+# axial strain rate (1/s) at 300 Pa: inertial number ~ 1e-3; scaled as sqrt(SIGMA0) to keep it
+RATE_300 = 0.2
 NUM = 1200  # grains: the noise of phi at the critical state falls as 1 / sqrt(NUM)
 STRAIN = 0.50  # final axial strain: long enough for a steady critical state
 # Contact friction while compacting: the bed's raining friction, which gives
@@ -50,16 +59,26 @@ def main():
     O.cell.setBox(SIDE, SIDE, DEPTH_Z)
     g.materials(O, yade.CohFrictMat)
     sp = pack.SpherePack()
-    sp.makeCloud((0, 0, DEPTH_Z / 2), (SIDE, SIDE, DEPTH_Z / 2), rMean=g.RADIUS, rRelFuzz=g.FUZZ,
-                 num=NUM, periodic=True, seed=g.SEED)
+    sp.makeCloud(
+        (0, 0, DEPTH_Z / 2),
+        (SIDE, SIDE, DEPTH_Z / 2),
+        rMean=g.RADIUS,
+        rRelFuzz=g.FUZZ,
+        num=NUM,
+        periodic=True,
+        seed=g.SEED,
+    )
     for c, r in sp:
-        O.bodies.append(utils.sphere(c, r, material=O.materials['grain']))
+        O.bodies.append(utils.sphere(c, r, material=O.materials["grain"]))
     g.flatten(O)
     servo = Servo(yade_stress(COMPACT_STRESS))
-    globals()['servo'] = servo
-    O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command='servo.act()')],
-                          gravity=False)
-    O.dt = 0.5 * utils.PWaveTimeStep()
+    globals()["servo"] = servo
+    shear_damping = g.DAMPING
+    g.DAMPING = 0.2  # compaction with the reference damping (the beds are rained with it)
+    O.engines = g.engines(
+        O, yade, [yade.PyRunner(iterPeriod=10, command="servo.act()")], gravity=False
+    )
+    O.dt = g.DT_FACTOR * utils.PWaveTimeStep()
     g.set_friction(O, COMPACT_FRICTION)
     servo.compact(COMPACT_FRICTION)
     g.set_friction(O, g.FRICTION)
@@ -69,16 +88,45 @@ def main():
     servo.retarget(yade_stress(SIGMA0))
     servo.compact(g.FRICTION)
     dense = solid_fraction()
+    g.DAMPING = shear_damping
+    O.engines[-1].damping = shear_damping
     rows = servo.shear()
-    g.write_csv(g.path('results', 'element', 'biaxial_%g.csv' % SIGMA0),
-                ['eps_axial', 'eps_lateral', 'eps_vol', 'sigma_axial_Pa', 'sigma_lateral_Pa',
-                 'mobilised_friction_deg'], rows)
-    summary = dict({'wall_time_s': time.time() - START, 'yade_version': yade.config.version,
-                    'seed': g.SEED, 'sigma0_Pa': SIGMA0, 'grains': len(sp),
-                    'solid_fraction_before_shear': dense,
-                    'solid_fraction_after_shear': solid_fraction(), 'strain_rate_per_s': rate()})
+    out = g.OUT or "element"
+    g.write_csv(
+        g.path("results", out, f"biaxial_{SIGMA0:g}.csv"),
+        [
+            "eps_axial",
+            "eps_lateral",
+            "eps_vol",
+            "sigma_axial_Pa",
+            "sigma_lateral_Pa",
+            "mobilised_friction_deg",
+        ],
+        rows,
+    )
+    summary = dict(
+        {
+            "wall_time_s": time.time() - START,
+            "yade_version": yade.config.version,
+            "seed": g.SEED,
+            "sigma0_Pa": SIGMA0,
+            "grains": len(sp),
+            "solid_fraction_before_shear": dense,
+            "solid_fraction_after_shear": solid_fraction(),
+            "strain_rate_per_s": rate(),
+        }
+    )
+    if g.DAMPING != 0.2 or g.DT_FACTOR != 0.5:
+        summary.update(
+            {
+                "shear_damping": g.DAMPING,
+                "dt_factor": g.DT_FACTOR,
+                "dt_s": O.dt,
+                "command": "yade -n -j1 -x biaxial.py " + " ".join(sys.argv[1:]),
+            }
+        )
     # The friction and dilation angles: parameters.py.
-    with open(g.path('results', 'element', 'biaxial_%g.json' % SIGMA0), 'w') as f:
+    with open(g.path("results", out, f"biaxial_{SIGMA0:g}.json"), "w") as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary))
 
@@ -90,7 +138,7 @@ def rate():
 
 def solid_fraction():
     h = O.cell.hSize
-    return sum(math.pi * b.shape.radius ** 2 for b in O.bodies) / (h[0, 0] * h[1, 1])
+    return sum(math.pi * b.shape.radius**2 for b in O.bodies) / (h[0, 0] * h[1, 1])
 
 
 class Servo:
@@ -127,9 +175,12 @@ class Servo:
             err = max(abs(-st[0, 0] - self.target), abs(-st[1, 1] - self.target)) / self.target
             if utils.unbalancedForce() < 0.02 and err < 0.03:
                 return
-        print('compaction at friction %g to %.0f Pa: unbalanced %.3g, stress error %.3g'
-              % (friction, self.target * g.THICKNESS / DEPTH_Z, utils.unbalancedForce(), err),
-              flush=True)
+        stress = self.target * g.THICKNESS / DEPTH_Z
+        print(
+            f"compaction at friction {friction:g} to {stress:.0f} Pa: "
+            f"unbalanced {utils.unbalancedForce():.3g}, stress error {err:.3g}",
+            flush=True,
+        )
 
     def shear(self):
         """Axial compression in y at RATE, sigma_x held; rows every 0.2 % of strain."""
@@ -150,7 +201,7 @@ class Servo:
             phi = math.degrees(math.asin(max(-1.0, min(1.0, ratio))))
             rows.append((e1, e3, e1 + e3, s1, s3, phi))
             if len(rows) % 25 == 0:
-                print('eps1 %.3f  s1 %.1f  s3 %.1f  phi %.1f' % (e1, s1, s3, phi), flush=True)
+                print(f"eps1 {e1:.3f}  s1 {s1:.1f}  s3 {s3:.1f}  phi {phi:.1f}", flush=True)
             if e1 >= STRAIN:
                 return rows
 

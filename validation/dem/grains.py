@@ -18,6 +18,23 @@ Every script takes the same options after its name (`configure`):
                   tip of a 20 mm cut), for the costly beds (d/D = 15, the
                   slab) and 1 d of travel
 
+The numerical settings (issue 31's rate study; the defaults are those of
+every earlier run, and a run's name records each one that differs):
+
+    --damping C       Cundall's non-viscous damping (default 0.2)
+    --undamped-gravity  exclude gravity from the damping (Yade's
+                      NewtonIntegrator.dampGravity = False; default: damped)
+    --young E         the contact modulus in Pa (default 5e5); cut.py
+                      rescales the stiffness of the bed's contacts to it and
+                      settles the bed again before the cut
+    --dt-factor F     the time step over Yade's P-wave time step (default 0.5)
+    --energy          track the energy budget (cut.py: the blade's work, the
+                      damping's and friction's dissipation; bookkeeping only)
+    --out DIR         results/DIR instead of results/cuts (cut.py) or
+                      results/element (biaxial.py)
+    --checkpoint T    save the state every T d of travel (cut.py; 0: never)
+    --resume          continue a cut from its last checkpoint (cut.py)
+
 Forces per unit width and the in-plane unit weight use the same slab
 thickness (`THICKNESS`), so P / (gamma d^2) does not depend on it.
 """
@@ -44,6 +61,12 @@ ETA_ROLL = 0.3  # rolling resistance: rolling moment <= ETA_ROLL * r * Fn
 DEPOSIT_FRICTION = 5.0  # contact friction while raining the bed (denser packing)
 BLADE_FRICTION = 20.0  # blade-grain contact friction (degrees), set
 DAMPING = 0.2  # Cundall's non-viscous damping
+DAMP_GRAVITY = True  # gravity is damped with the contact forces (Yade's default)
+DT_FACTOR = 0.5  # time step over the P-wave time step
+ENERGY = False  # track the energy budget (cut.py)
+OUT = None  # results/OUT instead of the script's own folder (cut.py: cuts)
+CHECKPOINT = 0.0  # checkpoint interval in d (cut.py; 0: none)
+RESUME = False  # continue from the last checkpoint (cut.py)
 GRAVITY = 9.81
 PITCH = 2.6  # lattice pitch of the rained cloud in mean radii (no overlaps at FUZZ)
 THICKNESS = 2.0 * RADIUS  # slab thickness that turns forces into forces per unit width
@@ -52,30 +75,60 @@ THICKNESS = 2.0 * RADIUS  # slab thickness that turns forces into forces per uni
 def configure(argv):
     """Reads the options of the module docstring from argv; returns the positional words."""
     global SEED, RATIO, SLAB, SPEED, TRAVEL, SHORT, RADIUS, THICKNESS
+    global DAMPING, DAMP_GRAVITY, YOUNG, DT_FACTOR, ENERGY, OUT, CHECKPOINT, RESUME
     words, i = [], 0
+    flags = ("--short", "--undamped-gravity", "--energy", "--resume")
     while i < len(argv):
         a = argv[i]
-        if a in ('--seed', '--ratio', '--slab', '--speed', '--travel'):
+        if a in (
+            "--seed",
+            "--ratio",
+            "--slab",
+            "--speed",
+            "--travel",
+            "--damping",
+            "--young",
+            "--dt-factor",
+            "--out",
+            "--checkpoint",
+        ):
             v = argv[i + 1]
-            if a == '--seed':
+            if a == "--seed":
                 SEED = int(v)
-            elif a == '--ratio':
+            elif a == "--ratio":
                 RATIO = float(v)
-            elif a == '--slab':
+            elif a == "--slab":
                 SLAB = int(v)
-            elif a == '--travel':
+            elif a == "--travel":
                 TRAVEL = float(v)
+            elif a == "--damping":
+                DAMPING = float(v)
+            elif a == "--young":
+                YOUNG = float(v)
+            elif a == "--dt-factor":
+                DT_FACTOR = float(v)
+            elif a == "--out":
+                OUT = v
+            elif a == "--checkpoint":
+                CHECKPOINT = float(v)
             else:
                 SPEED = float(v)
             i += 2
-        elif a == '--short':
-            SHORT = True
+        elif a in flags:
+            if a == "--short":
+                SHORT = True
+            elif a == "--undamped-gravity":
+                DAMP_GRAVITY = False
+            elif a == "--energy":
+                ENERGY = True
+            else:
+                RESUME = True
             i += 1
         else:
             words.append(a)
             i += 1
     if 0 < SLAB < 3:
-        raise SystemExit('--slab must be 0 (monolayer) or >= 3 layers')
+        raise SystemExit("--slab must be 0 (monolayer) or >= 3 layers")
     RADIUS = DEPTH_REF / RATIO / 2
     THICKNESS = 2.0 * RADIUS if SLAB == 0 else SLAB * PITCH * RADIUS
     return words
@@ -83,7 +136,24 @@ def configure(argv):
 
 def tag():
     """The name of a bed: r<ratio>_s<seed>[_slab<N>][_short]."""
-    return 'r%g_s%d%s%s' % (RATIO, SEED, '_slab%d' % SLAB if SLAB else '', '_short' if SHORT else '')
+    slab = f"_slab{SLAB}" if SLAB else ""
+    short = "_short" if SHORT else ""
+    return f"r{RATIO:g}_s{SEED}{slab}{short}"
+
+
+def settings():
+    """The numerical settings that differ from the defaults, as a run-name suffix
+    (empty for the defaults, so earlier runs keep their names)."""
+    out = ""
+    if DAMPING != 0.2:
+        out += f"_damp{DAMPING:g}"
+    if not DAMP_GRAVITY:
+        out += "_undampedg"
+    if YOUNG != 5.0e5:
+        out += f"_E{YOUNG:g}"
+    if DT_FACTOR != 0.5:
+        out += f"_dt{DT_FACTOR:g}"
+    return out
 
 
 def path(*parts):
@@ -92,17 +162,36 @@ def path(*parts):
     return p
 
 
-def materials(O, CohFrictMat):
+def materials(omega, CohFrictMat):
     """Append the grain, blade and frictionless wall materials; returns their ids."""
-    common = dict(young=YOUNG, poisson=POISSON, density=DENSITY, normalCohesion=0.0,
-                  shearCohesion=0.0, isCohesive=False)
-    grain = O.materials.append(CohFrictMat(frictionAngle=math.radians(FRICTION),
-                                           momentRotationLaw=True, etaRoll=ETA_ROLL,
-                                           label='grain', **common))
-    blade = O.materials.append(CohFrictMat(frictionAngle=math.radians(BLADE_FRICTION),
-                                           momentRotationLaw=False, label='blade', **common))
-    wall = O.materials.append(CohFrictMat(frictionAngle=0.0, momentRotationLaw=False,
-                                          label='wall', **common))
+    common = dict(
+        young=YOUNG,
+        poisson=POISSON,
+        density=DENSITY,
+        normalCohesion=0.0,
+        shearCohesion=0.0,
+        isCohesive=False,
+    )
+    grain = omega.materials.append(
+        CohFrictMat(
+            frictionAngle=math.radians(FRICTION),
+            momentRotationLaw=True,
+            etaRoll=ETA_ROLL,
+            label="grain",
+            **common,
+        )
+    )
+    blade = omega.materials.append(
+        CohFrictMat(
+            frictionAngle=math.radians(BLADE_FRICTION),
+            momentRotationLaw=False,
+            label="blade",
+            **common,
+        )
+    )
+    wall = omega.materials.append(
+        CohFrictMat(frictionAngle=0.0, momentRotationLaw=False, label="wall", **common)
+    )
     return grain, blade, wall
 
 
@@ -111,65 +200,72 @@ def half_z():
     return 5 * RADIUS if SLAB == 0 else THICKNESS / 2 + 3 * RADIUS
 
 
-def side_walls(O, utils, x0, x1, height, wall):
+def side_walls(omega, utils, x0, x1, height, wall):
     """The slab's two frictionless side walls (nothing for a monolayer)."""
     if SLAB == 0:
         return []
     out = []
     for side in (-1, 1):
         z = side * (THICKNESS / 2 + RADIUS)
-        out.append(O.bodies.append(utils.box(((x0 + x1) / 2, height / 2, z),
-                                             ((x1 - x0) / 2 + 4 * RADIUS, height / 2, RADIUS),
-                                             fixed=True, material=wall)))
+        out.append(
+            omega.bodies.append(
+                utils.box(
+                    ((x0 + x1) / 2, height / 2, z),
+                    ((x1 - x0) / 2 + 4 * RADIUS, height / 2, RADIUS),
+                    fixed=True,
+                    material=wall,
+                )
+            )
+        )
     return out
 
 
-def flatten(O):
+def flatten(omega):
     """Constrain every dynamic sphere to the plane z = 0 (monolayer only)."""
-    for b in O.bodies:
+    for b in omega.bodies:
         if b.dynamic:
             if SLAB == 0:
-                b.state.blockedDOFs = 'zXY'
+                b.state.blockedDOFs = "zXY"
             b.state.vel = b.state.vel * 0
 
 
-def set_friction(O, degrees):
+def set_friction(omega, degrees):
     """Set the grain contact friction on the material and on every existing contact."""
     t = math.tan(math.radians(degrees))
-    O.materials['grain'].frictionAngle = math.radians(degrees)
-    for i in O.interactions:
+    omega.materials["grain"].frictionAngle = math.radians(degrees)
+    for i in omega.interactions:
         if not i.isReal:
             continue
-        m1 = O.bodies[i.id1].material
-        m2 = O.bodies[i.id2].material
-        if m1.label == 'grain' and m2.label == 'grain':
+        m1 = omega.bodies[i.id1].material
+        m2 = omega.bodies[i.id2].material
+        if m1.label == "grain" and m2.label == "grain":
             i.phys.tangensOfFrictionAngle = t
 
 
-def area_weight(O, x0, x1, y0, y1):
+def area_weight(omega, x0, x1, y0, y1):
     """In-plane unit weight (N/m^3 of the slab) of the grains whose centres lie
     in the window; returns (gamma, solid fraction of disks or spheres)."""
     mass = 0.0
     solid = 0.0
-    for b in O.bodies:
+    for b in omega.bodies:
         if not b.dynamic:
             continue
         p = b.state.pos
         if x0 <= p[0] < x1 and y0 <= p[1] < y1:
             mass += b.state.mass
             r = b.shape.radius
-            solid += math.pi * r ** 2 if SLAB == 0 else 4.0 / 3.0 * math.pi * r ** 3
+            solid += math.pi * r**2 if SLAB == 0 else 4.0 / 3.0 * math.pi * r**3
     area = (x1 - x0) * (y1 - y0)
     volume = area if SLAB == 0 else area * THICKNESS
     return mass * GRAVITY / area / THICKNESS, solid / volume
 
 
-def surface(O, x0, x1, width):
+def surface(omega, x0, x1, width):
     """Ground surface: the highest grain top in each column of `width`, as (x, y) pairs
     (columns with no grain are left out)."""
     n = int(round((x1 - x0) / width))
     top = [None] * n
-    for b in O.bodies:
+    for b in omega.bodies:
         if not b.dynamic:
             continue
         p = b.state.pos
@@ -181,30 +277,44 @@ def surface(O, x0, x1, width):
     return [(x0 + (k + 0.5) * width, h) for k, h in enumerate(top) if h is not None]
 
 
-def engines(O, yade, extra, gravity=True):
+def engines(omega, yade, extra, gravity=True):
     """The engine list: collider, sphere/box contacts with rolling resistance, integrator."""
     g = (0.0, -GRAVITY, 0.0) if gravity else (0.0, 0.0, 0.0)
     bounds = [yade.Bo1_Sphere_Aabb(), yade.Bo1_Box_Aabb()]
     geoms = [yade.Ig2_Sphere_Sphere_ScGeom6D(), yade.Ig2_Box_Sphere_ScGeom6D()]
-    return ([yade.ForceResetter(),
-             yade.InsertionSortCollider(bounds, verletDist=0.1 * RADIUS),
-             yade.InteractionLoop(geoms, [yade.Ip2_CohFrictMat_CohFrictMat_CohFrictPhys()],
-                                  [yade.Law2_ScGeom6D_CohFrictPhys_CohesionMoment(
-                                      useIncrementalForm=True, always_use_moment_law=True)])]
-            + extra
-            + [yade.NewtonIntegrator(damping=DAMPING, gravity=g, label='newton')])
+    return (
+        [
+            yade.ForceResetter(),
+            yade.InsertionSortCollider(bounds, verletDist=0.1 * RADIUS),
+            yade.InteractionLoop(
+                geoms,
+                [yade.Ip2_CohFrictMat_CohFrictMat_CohFrictPhys()],
+                [
+                    yade.Law2_ScGeom6D_CohFrictPhys_CohesionMoment(
+                        useIncrementalForm=True, always_use_moment_law=True
+                    )
+                ],
+            ),
+        ]
+        + extra
+        + [
+            yade.NewtonIntegrator(
+                damping=DAMPING, gravity=g, dampGravity=DAMP_GRAVITY, label="newton"
+            )
+        ]
+    )
 
 
 FACE_COS = math.cos(math.radians(45.0))  # a contact is on the face within 45 degrees of its normal
 
 
-def face_force(O, bid, normal):
+def face_force(omega, bid, normal):
     """Force (x, y) of the grains on body `bid` through its face's contacts:
     those whose direction from the body to the grain lies within 45 degrees
     of the face's outward `normal` (x, y), so that the blade's bottom, back
     and edges are left out (the cut scripts' face-only force)."""
     fx = fy = 0.0
-    for i in O.interactions.withBody(bid):
+    for i in omega.interactions.withBody(bid):
         if not i.isReal:
             continue
         f = i.phys.normalForce + i.phys.shearForce  # on id2; -f on id1
@@ -218,26 +328,26 @@ def face_force(O, bid, normal):
     return fx, fy
 
 
-def contact_sum_x(O, bid):
+def contact_sum_x(omega, bid):
     """x force on body `bid` summed over its real contacts (to check against
     O.forces, which also holds what is not a contact)."""
     return sum(
         (1.0 if i.id2 == bid else -1.0) * (i.phys.normalForce + i.phys.shearForce)[0]
-        for i in O.interactions.withBody(bid)
+        for i in omega.interactions.withBody(bid)
         if i.isReal
     )
 
 
 def write_csv(path, header, rows):
-    with open(path, 'w') as f:
-        f.write(','.join(header) + '\n')
+    with open(path, "w") as f:
+        f.write(",".join(header) + "\n")
         for r in rows:
-            f.write(','.join(fmt(v) for v in r) + '\n')
+            f.write(",".join(fmt(v) for v in r) + "\n")
 
 
 def fmt(v):
     if isinstance(v, float):
-        return '%.6g' % v
+        return f"{v:.6g}"
     return str(v)
 
 
@@ -262,11 +372,11 @@ def rain_cloud(x0, x1, y0, rows, seed):
     return out
 
 
-def settle(O, utils, limit, chunk=2000, cap=200000):
+def settle(omega, utils, limit, chunk=2000, cap=200000):
     """Run until the unbalanced force ratio is below `limit` (or `cap` steps)."""
     done = 0
     while done < cap:
-        O.run(chunk, True)
+        omega.run(chunk, True)
         done += chunk
         if utils.unbalancedForce() < limit:
             return done
