@@ -273,7 +273,8 @@ impl Case {
     /// The search's stride: its first stage evaluates every stride-th
     /// candidate from the face, dB / (samples h) nodes apart (at least 1;
     /// 1 for a slip line or with `run.samples_per_band` = 0), its second
-    /// every node within a stride of the best of those (docs/model.md §2.8).
+    /// every node within a stride of their local minima (docs/model.md §2.8,
+    /// (M47)).
     pub fn search_stride(&self) -> usize {
         let samples = self.run.samples_per_band;
         if samples == 0.0 {
