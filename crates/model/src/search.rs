@@ -126,7 +126,7 @@ impl Search {
             input,
             &mut self.block,
             &mut samples,
-            &mut self.windows,
+            (&mut self.windows, &mut self.admissible),
         );
         self.samples = samples;
         found

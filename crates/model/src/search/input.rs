@@ -32,7 +32,7 @@ pub struct SearchInput<'a> {
     /// strain); forces compared are then the blade's per unit width.
     pub crescents: Option<Crescents<'a>>,
     /// The scan evaluates every `stride`-th candidate from the face, then
-    /// every node within a stride of the best of those (`refine`); 1:
+    /// every node within a stride of their local minima (`refine`); 1:
     /// every node.
     pub stride: usize,
 }

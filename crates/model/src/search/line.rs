@@ -125,6 +125,19 @@ pub(super) struct Line {
 }
 
 impl Line {
+    /// The line to node j of a candidate computed on its own, `admitted`
+    /// its grid slope and weight (`Lines::advance`), if its physical angle
+    /// is admissible; its bounds take the weight itself.
+    pub(super) fn alone(j: usize, admitted: (f64, f64), rake: &Rake) -> Option<Self> {
+        let (grid, weight) = admitted;
+        Some(Line {
+            node: j,
+            slope: Slope::on_grid(grid, rake)?,
+            weight,
+            floor: weight,
+        })
+    }
+
     /// P_j: Eq. (1) for the band's angles, with the loads, if admissible
     /// (M4, M6, M8); for a blade of finite width, plus its side crescents
     /// per unit width (M42).

@@ -10,7 +10,7 @@
 
 use super::block::Block;
 use super::input::SearchInput;
-use super::line::{Line, Lines, Slope};
+use super::line::{Line, Lines};
 use super::select::{Best, Choice};
 use crate::surface::Surface;
 use std::ops::Range;
@@ -23,18 +23,18 @@ pub(super) const SLACK: f64 = 0.02;
 /// among the samples, the candidates the sampled scan evaluated
 /// (reordered here), and every node near their local minima. The scan's
 /// `block` holds its prefix sums (extended here) and its running sums at
-/// each sample; `windows` is scratch.
+/// each sample; `windows` and `buffer` (the candidates kept) are scratch.
 pub(super) fn refine(
     surface: &Surface,
     input: &SearchInput,
     block: &mut Block,
     samples: &mut [Choice],
-    windows: &mut Vec<Range<usize>>,
+    (windows, buffer): (&mut Vec<Range<usize>>, &mut Vec<Choice>),
 ) -> Option<Choice> {
     samples.sort_by_key(|c| c.node);
     let least = samples.iter().min_by(|a, b| a.force.total_cmp(&b.force))?;
     near_minima(input, samples, least.force, surface.len() - 1, windows);
-    let mut best = Best::new(Vec::new(), true, None, 0.0);
+    let mut best = Best::new(std::mem::take(buffer), true, None, 0.0);
     // Far-field samples (`far_field`) lie on every node already, and may
     // lie beyond the nodes held: the samples are candidates too.
     for c in samples
@@ -46,7 +46,9 @@ pub(super) fn refine(
     for w in windows.iter() {
         evaluate(surface, input, block, w.clone(), &mut best);
     }
-    best.select()
+    let found = best.select();
+    *buffer = best.into_buffer();
+    found
 }
 
 /// The windows of nodes within a stride of each local minimum of the
@@ -104,19 +106,10 @@ fn evaluate(
         if j < window.start {
             continue;
         }
-        let Some((grid, weight)) = admitted else {
+        let Some(line) = admitted.and_then(|a| Line::alone(j, a, &input.rake)) else {
             continue;
         };
-        let Some(slope) = Slope::on_grid(grid, &input.rake) else {
-            continue;
-        };
-        let line = Line {
-            node: j,
-            slope,
-            weight,
-            floor: weight,
-        };
-        let band = slope.band(&lines, j, input.band_width);
+        let band = line.slope.band(&lines, j, input.band_width);
         let angles =
             input
                 .laws

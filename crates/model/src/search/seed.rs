@@ -4,7 +4,7 @@
 
 use super::angles::footprint_angles;
 use super::input::SearchInput;
-use super::line::{Line, Lines, Slope};
+use super::line::{Line, Lines};
 use crate::laws::BandAngles;
 use crate::surface::Surface;
 
@@ -26,13 +26,7 @@ pub(super) fn seed(
     for i in b + 1..j {
         lines.advance(surface, i);
     }
-    let (grid, weight) = lines.advance(surface, j)?;
-    let line = Line {
-        node: j,
-        slope: Slope::on_grid(grid, &input.rake)?,
-        weight,
-        floor: weight,
-    };
+    let line = Line::alone(j, lines.advance(surface, j)?, &input.rake)?;
     let band = line.slope.band(&lines, j, input.band_width);
     let m = band.footprint(&surface.height);
     let angles = input.laws.band_angles(footprint_angles(surface, j, m));
