@@ -19,6 +19,7 @@ pub mod case;
 pub mod crescent;
 pub mod face_friction;
 pub mod grid;
+pub mod ground;
 pub mod kinematics;
 pub mod landscape;
 mod laws;

@@ -1,0 +1,189 @@
+//! A ground whose points move with the soil (issue 28; the design is in
+//! docs/performance.md, "Issue 28: the vertex ground"): the free surface
+//! as a polyline of vertices (x_k, y_k), x strictly increasing, vertex 0
+//! at the blade face, and the soil's state held per piece, piece k lying
+//! between vertices k and k + 1.
+//!
+//! The vertices are material points: an increment moves them with the soil
+//! (`motion`), so the state a piece carries travels with it and is never
+//! interpolated; a vertex is made only where the face, a band boundary or
+//! the emergence point cuts a piece, and the two halves keep its state.
+//! With vertices every v0 and a band that emerges at a vertex, the block
+//! translates by exactly one piece, as the reference grid's nodes do
+//! (docs/model.md §9).
+//!
+//! The soil of piece k is its columns from the fixed floor y = −d up to
+//! the surface, of unit weight γ_k: the weight of soil in front of the
+//! blade is M = Σ_k γ_k ½ (x_{k+1} − x_k)(y_k + y_{k+1} − 2 y_floor) + M_trench,
+//! exact for a polyline (the trapezoid rule integrates a linear surface
+//! exactly).
+//!
+//! Not yet the simulation's ground: the search, avalanching and the side
+//! spill still run on the node grid of `surface`; this is the first step.
+
+use crate::surface::compensated_sum;
+
+mod avalanche;
+pub mod motion;
+
+/// The free surface as vertices that move with the soil, with the state
+/// of the soil held per piece between them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ground {
+    /// x_k: abscissae of the vertices, strictly increasing; x_0 is the
+    /// blade face (length).
+    pub x: Vec<f64>,
+    /// y_k: heights of the vertices (length).
+    pub y: Vec<f64>,
+    /// ut of piece k, between vertices k and k + 1 (length).
+    pub accumulated_shear: Vec<f64>,
+    /// γ of the columns of piece k (force per volume).
+    pub unit_weight: Vec<f64>,
+    /// y of the floor below which soil never moves (−d).
+    pub floor: f64,
+    /// Weight of the soil left below the tip's path behind the blade.
+    pub trench_mass: f64,
+}
+
+impl Ground {
+    /// Flat ground y = 0 of fresh soil (ut = 0, γ `unit_weight`) from
+    /// x = 0 to `length`, with vertices every `spacing` (the last piece
+    /// ends at `length` exactly), above the floor at −`depth`.
+    pub fn flat(length: f64, spacing: f64, depth: f64, unit_weight: f64) -> Self {
+        let pieces = (length / spacing).ceil().max(1.0) as usize;
+        let mut x: Vec<f64> = (0..pieces).map(|k| k as f64 * spacing).collect();
+        x.push(length);
+        Ground {
+            y: vec![0.0; x.len()],
+            x,
+            accumulated_shear: vec![0.0; pieces],
+            unit_weight: vec![unit_weight; pieces],
+            floor: -depth,
+            trench_mass: 0.0,
+        }
+    }
+
+    /// Number of pieces (one less than the vertices).
+    pub fn pieces(&self) -> usize {
+        self.x.len() - 1
+    }
+
+    /// The piece holding x: the last k with x_k ≤ x, at most the last
+    /// piece (x at or beyond the far end belongs to it).
+    pub fn piece_at(&self, x: f64) -> usize {
+        let k = self.x.partition_point(|&xk| xk <= x);
+        k.saturating_sub(1).min(self.pieces() - 1)
+    }
+
+    /// Height of the surface at x, on the straight piece holding it.
+    pub fn height_at(&self, x: f64) -> f64 {
+        let k = self.piece_at(x);
+        let lambda = (x - self.x[k]) / (self.x[k + 1] - self.x[k]);
+        self.y[k] + lambda * (self.y[k + 1] - self.y[k])
+    }
+
+    /// The vertex at x: an existing one if x is one, else a new vertex on
+    /// the piece holding x, both halves keeping the piece's state (nothing
+    /// is interpolated but the height of a straight piece).
+    pub fn split_at(&mut self, x: f64) -> usize {
+        let k = self.piece_at(x);
+        if self.x[k] == x {
+            return k;
+        }
+        if self.x[k + 1] == x {
+            return k + 1;
+        }
+        let y = self.height_at(x);
+        self.x.insert(k + 1, x);
+        self.y.insert(k + 1, y);
+        self.accumulated_shear
+            .insert(k + 1, self.accumulated_shear[k]);
+        self.unit_weight.insert(k + 1, self.unit_weight[k]);
+        k + 1
+    }
+
+    /// Removes the vertices that end a piece shorter than `min_spacing`
+    /// among vertices `from..to` (never the face's), joining the two pieces
+    /// it bounded: the joined piece holds their weight (its γ the weight
+    /// over its area) and their mass-weighted ut. Returns how many went.
+    pub fn merge_close(&mut self, from: usize, to: usize, min_spacing: f64) -> usize {
+        let mut removed = 0;
+        let mut k = from.max(1);
+        while k < to.min(self.x.len() - 1) - removed {
+            let short_before = self.x[k] - self.x[k - 1] < min_spacing;
+            let short_after = self.x[k + 1] - self.x[k] < min_spacing;
+            if short_before || short_after {
+                self.remove_vertex(k);
+                removed += 1;
+            } else {
+                k += 1;
+            }
+        }
+        removed
+    }
+
+    /// Joins pieces k − 1 and k by removing vertex k (0 < k < last).
+    fn remove_vertex(&mut self, k: usize) {
+        let (a, b) = (self.piece_area(k - 1), self.piece_area(k));
+        let (ga, gb) = (self.unit_weight[k - 1], self.unit_weight[k]);
+        let weight = ga * a + gb * b;
+        let ut =
+            (ga * a * self.accumulated_shear[k - 1] + gb * b * self.accumulated_shear[k]) / weight;
+        self.x.remove(k);
+        self.y.remove(k);
+        self.accumulated_shear.remove(k);
+        self.unit_weight.remove(k);
+        self.accumulated_shear[k - 1] = ut;
+        self.unit_weight[k - 1] = weight / self.piece_area(k - 1);
+    }
+
+    /// Area of the columns of piece k above the floor: the trapezoid
+    /// ½ (x_{k+1} − x_k)(y_k + y_{k+1} − 2 y_floor), exact on a straight piece.
+    pub fn piece_area(&self, k: usize) -> f64 {
+        let depth = |i: usize| self.y[i] - self.floor;
+        0.5 * (self.x[k + 1] - self.x[k]) * (depth(k) + depth(k + 1))
+    }
+
+    /// Area of soil in front of the blade, above the floor.
+    pub fn area(&self) -> f64 {
+        compensated_sum((0..self.pieces()).map(|k| self.piece_area(k)))
+    }
+
+    /// Weight of soil in front of the blade and in the trench behind it:
+    /// M = Σ_k γ_k A_k + M_trench.
+    pub fn mass(&self) -> f64 {
+        let pieces = (0..self.pieces()).map(|k| self.unit_weight[k] * self.piece_area(k));
+        compensated_sum(pieces.chain([self.trench_mass]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn splitting_keeps_the_surface_and_the_mass() {
+        let mut g = Ground::flat(10.0, 0.3, 2.0, 1.5);
+        g.y[5] = 0.4;
+        g.unit_weight[4] = 1.2;
+        g.accumulated_shear[4] = 0.7;
+        let (m0, a0) = (g.mass(), g.area());
+        let x = 0.5 * (g.x[4] + g.x[5]) + 0.01;
+        let k = g.split_at(x);
+        assert_eq!(g.x[k], x);
+        assert_eq!(g.accumulated_shear[k - 1], 0.7);
+        assert_eq!(g.accumulated_shear[k], 0.7);
+        assert!((g.mass() - m0).abs() < 1e-13 * m0);
+        assert!((g.area() - a0).abs() < 1e-13 * a0);
+        assert_eq!(g.split_at(x), k, "an existing vertex is not split");
+    }
+
+    #[test]
+    fn flat_ground_holds_its_columns() {
+        let g = Ground::flat(10.0, 0.3, 2.0, 1.5);
+        assert_eq!(*g.x.last().unwrap(), 10.0);
+        assert!((g.mass() - 1.5 * 2.0 * 10.0).abs() < 1e-12);
+        assert_eq!(g.piece_at(10.0), g.pieces() - 1);
+        assert_eq!(g.piece_at(0.0), 0);
+    }
+}

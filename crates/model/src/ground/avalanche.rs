@@ -1,0 +1,158 @@
+//! Avalanching on the vertex ground (docs/model.md §6 on the node grid):
+//! no piece may be steeper than the angle of repose θr.
+//!
+//! With s = tan θr, the downslope constraint y_{k+1} ≥ y_k − s (x_{k+1} − x_k)
+//! says g_k = y_k + s x_k is non-decreasing, the upslope one that
+//! −y_k + s x_k is. Each is restored by one pass of the pool-adjacent-
+//! violators algorithm weighted by the vertices' trapezoid weights
+//! w_k = ½ (x_{k+1} − x_{k−1}) (half a piece at the ends), under which the
+//! area is Σ w_k y_k: a pooled run becomes a line at exactly the angle of
+//! repose holding the same area. The two passes alternate until neither
+//! pools anything.
+//!
+//! The vertices stay where they are (only their heights change), so each
+//! piece keeps its place; the soil a piece loses from its top is mixed
+//! (mass-weighted) and deposited on the pieces that gain, whose γ and ut
+//! become the mass-weighted mean of their soil and the deposit: mass is
+//! conserved exactly.
+
+use super::Ground;
+
+/// Violations smaller than this fraction of s times the piece are
+/// round-off, not slopes.
+const SLOPE_TOLERANCE: f64 = 1e-9;
+/// Alternating passes before giving up on the last round-off residue.
+const MAX_PASSES: usize = 64;
+
+/// A pooled run of vertices: the first, the count, Σ w, Σ w g and their
+/// quotient.
+#[derive(Clone, Copy, Debug)]
+struct Pool {
+    start: usize,
+    len: usize,
+    weight: f64,
+    weighted: f64,
+    mean: f64,
+}
+
+impl Ground {
+    /// Relaxes every piece steeper than the angle of repose (`tan_repose`,
+    /// s = tan θr) (M28); returns whether any soil moved.
+    pub fn relax(&mut self, tan_repose: f64) -> bool {
+        let mut moved = false;
+        for _ in 0..MAX_PASSES {
+            let areas: Vec<f64> = (0..self.pieces()).map(|k| self.piece_area(k)).collect();
+            let down = self.pool(tan_repose, 1.0);
+            let up = self.pool(tan_repose, -1.0);
+            if !down && !up {
+                break;
+            }
+            self.deposit(&areas);
+            moved = true;
+        }
+        moved
+    }
+
+    /// Trapezoid weight of vertex k: half of each piece it bounds.
+    fn vertex_weight(&self, k: usize) -> f64 {
+        let left = if k == 0 {
+            0.0
+        } else {
+            self.x[k] - self.x[k - 1]
+        };
+        let right = if k + 1 == self.x.len() {
+            0.0
+        } else {
+            self.x[k + 1] - self.x[k]
+        };
+        0.5 * (left + right)
+    }
+
+    /// One pool-adjacent-violators pass on g_k = σ y_k + s x_k; returns
+    /// whether it levelled anything.
+    fn pool(&mut self, s: f64, sign: f64) -> bool {
+        let mut pools: Vec<Pool> = Vec::new();
+        let mut pooled = false;
+        for k in 0..self.x.len() {
+            let w = self.vertex_weight(k);
+            let g = sign * self.y[k] + s * self.x[k];
+            let mut pool = Pool {
+                start: k,
+                len: 1,
+                weight: w,
+                weighted: w * g,
+                mean: g,
+            };
+            while let Some(last) = pools.last() {
+                let gap = s * (self.x[k] - self.x[last.start + last.len - 1]);
+                if last.mean - pool.mean <= SLOPE_TOLERANCE * gap {
+                    break;
+                }
+                let last = pools.pop().expect("a pool");
+                pool = Pool {
+                    start: last.start,
+                    len: last.len + pool.len,
+                    weight: last.weight + pool.weight,
+                    weighted: last.weighted + pool.weighted,
+                    mean: 0.0,
+                };
+                pool.mean = pool.weighted / pool.weight;
+                pooled = true;
+            }
+            pools.push(pool);
+        }
+        for p in pools.iter().filter(|p| p.len > 1) {
+            for k in p.start..p.start + p.len {
+                self.y[k] = sign * (p.mean - s * self.x[k]);
+            }
+        }
+        pooled
+    }
+
+    /// Moves the soil the pieces lost (their areas were `before`) onto the
+    /// pieces that gained, within each run of changed pieces (one
+    /// avalanche), mixed: each gaining piece's γ and ut become the
+    /// mass-weighted mean of its soil and the deposit.
+    fn deposit(&mut self, before: &[f64]) {
+        let change: Vec<f64> = (0..before.len())
+            .map(|k| self.piece_area(k) - before[k])
+            .collect();
+        let mut k = 0;
+        while k < change.len() {
+            if change[k] == 0.0 {
+                k += 1;
+                continue;
+            }
+            let end = (k..change.len())
+                .find(|&i| change[i] == 0.0)
+                .unwrap_or(change.len());
+            self.deposit_run(k..end, &change, before);
+            k = end;
+        }
+    }
+
+    /// `deposit` over one run of changed pieces.
+    fn deposit_run(&mut self, run: std::ops::Range<usize>, change: &[f64], before: &[f64]) {
+        let (mut mass, mut shear_mass, mut gained) = (0.0, 0.0, 0.0);
+        for k in run.clone() {
+            if change[k] < 0.0 {
+                let lost = -change[k] * self.unit_weight[k];
+                mass += lost;
+                shear_mass += lost * self.accumulated_shear[k];
+            } else {
+                gained += change[k];
+            }
+        }
+        if gained == 0.0 || mass == 0.0 {
+            return;
+        }
+        let (gamma, ut) = (mass / gained, shear_mass / mass);
+        for k in run.filter(|&k| change[k] > 0.0) {
+            let own = self.unit_weight[k] * before[k];
+            let total = own + gamma * change[k];
+            self.accumulated_shear[k] =
+                (own * self.accumulated_shear[k] + gamma * change[k] * ut) / total;
+            self.unit_weight[k] = total / (before[k] + change[k]);
+        }
+    }
+}

@@ -1,0 +1,320 @@
+//! One increment's motion of the soil on the vertex ground (docs/model.md
+//! §3 on the node grid; here on material vertices).
+//!
+//! The lower boundary of the band is the line from the tip (x_0, −d) to the
+//! emergence point x_e, of slope tan β = (y(x_e) + d) / (x_e − x_0); the
+//! upper boundary lies e above it. A point at height z above the lower
+//! boundary has relative position g = z / e. The block (g ≥ 1) translates
+//! by (v0, rise), band soil (0 < g < 1) by g (v0, rise), soil below stays
+//! (M14, M18, M35). That map is affine on each side of the upper boundary,
+//! so the image of a straight piece that does not cross it is straight:
+//! moving the vertices, with one made where a piece crosses the upper
+//! boundary and one at x_e, moves the surface exactly, and each piece's
+//! state moves with it. Nothing is resampled.
+//!
+//! A slip line (e = 0) moves every vertex up to x_e with the block: the
+//! emergence point is the block's corner. Ground vertices the corner passes
+//! over are buried under it, and the piece from the corner to the ground
+//! ahead is the slip surface, which accumulates Δut (M15).
+//!
+//! What the face sweeps (the band soil that moved less than v0 and the soil
+//! below the band, ½ v0 (e + rise), M20) is put back at the face by raising
+//! the face vertex, the soil below the tip's path stays behind in the trench
+//! (M38), the band accumulates Δut (M22, the full rule), a block piece's
+//! unit weight mixes the soil it arrived with and the soil below the band
+//! it now stands on (M26), and the band takes the one unit weight that
+//! keeps the weight of soil unchanged (M27).
+
+use super::Ground;
+use crate::surface::compensated_sum;
+
+/// The mechanism an increment moves the soil by.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cut {
+    /// d: depth of the blade tip below y = 0, the tip at (x_0, −d) (length).
+    pub depth: f64,
+    /// x_e: where the band's lower boundary meets the surface (length).
+    pub emergence: f64,
+    /// e: the band's vertical thickness, dB / cos β (0: a slip line) (length).
+    pub thickness: f64,
+    /// dB: the band's width, normal to it (length; unused for a slip line).
+    pub width: f64,
+    /// Pieces shorter than this are joined after the motion (length).
+    pub min_spacing: f64,
+    /// v0: the block's horizontal advance, the blade's increment (length).
+    pub advance: f64,
+    /// The block's rise: v0 tan(β + ψ), v0 tan β for a slip line (length).
+    pub rise: f64,
+    /// Δut: the band's shearing displacement (length).
+    pub slip: f64,
+    /// tan ψ of the band (0 for a slip line).
+    pub tan_psi: f64,
+}
+
+/// What an increment did to the ground.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Moved {
+    /// Area the band's dilation added, A0 Δut tan ψ / dB (M19).
+    pub dilation_area: f64,
+    /// Weight of the soil the tip passed over, left in the trench (M38).
+    pub trench_mass: f64,
+    /// The pieces of the band after the motion (for a slip line, the slip
+    /// surface's piece ahead of the block's corner).
+    pub band: std::ops::Range<usize>,
+}
+
+impl Ground {
+    /// Moves the soil by `cut` and keeps its weight exact; `None` (nothing
+    /// changed) where the face lies in the band or the band's image folds
+    /// over, which a band narrower than the vertices resolve does.
+    pub fn apply(&mut self, cut: &Cut) -> Option<Moved> {
+        let mass_before = self.mass();
+        let emergence = self.split_at(cut.emergence);
+        let line = Line::through(self, cut.depth, emergence);
+        let banded = cut.thickness > 0.0;
+        let (corner, emergence) = if banded {
+            if line.position(self, 0, cut.thickness) < 1.0 {
+                return None;
+            }
+            self.split_at_upper_boundary(&line, cut.thickness, emergence)
+        } else {
+            (emergence, emergence)
+        };
+        let dilation_area = if banded {
+            line.band_area(self, cut.thickness, emergence) * cut.slip * cut.tan_psi / cut.width
+        } else {
+            0.0
+        };
+        let before = Snapshot::of(self, (emergence + 1).min(self.pieces()));
+        let target_area = self.area() - cut.advance * (-self.floor - cut.depth) + dilation_area;
+        let trench_mass = self.unit_weight[0] * cut.advance * (-self.floor - cut.depth);
+        let band = if banded {
+            self.shear_band(&line, cut, corner, emergence)?
+        } else {
+            self.slide_block(cut, emergence)
+        };
+        // The swept soil, ½ v0 (e + rise), on the face's piece (M20).
+        let first = self.x[1] - self.x[0];
+        self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
+        if banded {
+            self.spread_residual(corner..band.end, target_area - self.area());
+        }
+        self.mix_block_pieces(&before, &line, band.start);
+        for ut in &mut self.accumulated_shear[band.clone()] {
+            *ut += cut.slip;
+        }
+        self.trench_mass += trench_mass;
+        self.conserve_mass(band.clone(), mass_before);
+        let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
+        let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
+        Some(Moved {
+            dilation_area,
+            trench_mass,
+            band,
+        })
+    }
+
+    /// Makes a vertex wherever a piece between the face and the emergence
+    /// vertex crosses the band's upper boundary; returns the last vertex
+    /// of the block (g ≥ 1) and the emergence vertex after them.
+    fn split_at_upper_boundary(&mut self, line: &Line, e: f64, emergence: usize) -> (usize, usize) {
+        let crossings: Vec<f64> = (0..emergence)
+            .filter_map(|k| {
+                let (g0, g1) = (line.position(self, k, e), line.position(self, k + 1, e));
+                ((g0 - 1.0) * (g1 - 1.0) < 0.0).then(|| {
+                    let lambda = (g0 - 1.0) / (g0 - g1);
+                    self.x[k] + lambda * (self.x[k + 1] - self.x[k])
+                })
+            })
+            .collect();
+        let emergence = emergence + crossings.len();
+        for x in crossings {
+            self.split_at(x);
+        }
+        let corner = (0..emergence)
+            .rev()
+            .find(|&k| line.position(self, k, e) >= 1.0 - 1e-12)
+            .unwrap_or(0);
+        (corner, emergence)
+    }
+
+    /// The band's motion: vertex k moves by f_k (v0, rise), f_k = g_k
+    /// clamped to [0, 1]; returns the band's pieces, or `None` if the
+    /// images fold over.
+    fn shear_band(
+        &mut self,
+        line: &Line,
+        cut: &Cut,
+        corner: usize,
+        emergence: usize,
+    ) -> Option<std::ops::Range<usize>> {
+        // The corner's g is 1 to round-off: it moves with the block.
+        let share = |k: usize| match k <= corner {
+            true => 1.0,
+            false => line.position(self, k, cut.thickness).clamp(0.0, 1.0),
+        };
+        let shares: Vec<f64> = (0..=emergence).map(share).collect();
+        let moved: Vec<f64> = (0..=emergence)
+            .map(|k| self.x[k] + shares[k] * cut.advance)
+            .collect();
+        if moved.windows(2).any(|w| w[1] <= w[0]) {
+            return None;
+        }
+        self.x[..=emergence].copy_from_slice(&moved);
+        for (y, f) in self.y.iter_mut().zip(&shares) {
+            *y += f * cut.rise;
+        }
+        Some(corner..emergence)
+    }
+
+    /// The slip line's motion: every vertex up to the emergence vertex
+    /// moves with the block (M14); ground vertices the block's corner
+    /// passes are buried; returns the slip surface's piece.
+    fn slide_block(&mut self, cut: &Cut, emergence: usize) -> std::ops::Range<usize> {
+        for k in 0..=emergence {
+            self.x[k] += cut.advance;
+            self.y[k] += cut.rise;
+        }
+        // Vertices within half an increment of the corner are buried too,
+        // so that the slip surface's piece is not a sliver.
+        let reach = self.x[emergence] + 0.5 * cut.advance;
+        let buried = self.x[emergence + 1..]
+            .iter()
+            .take_while(|&&x| x <= reach)
+            .count()
+            .min(self.pieces() - emergence - 1);
+        // The slip surface ahead of the corner keeps the state of the
+        // ground it was (the first piece ahead of the emergence point).
+        let state = emergence + buried;
+        let (ut, gamma) = (self.accumulated_shear[state], self.unit_weight[state]);
+        let range = emergence + 1..emergence + 1 + buried;
+        self.x.drain(range.clone());
+        self.y.drain(range.clone());
+        self.accumulated_shear.drain(range.clone());
+        self.unit_weight.drain(range);
+        self.accumulated_shear[emergence] = ut;
+        self.unit_weight[emergence] = gamma;
+        emergence..emergence + 1
+    }
+
+    /// Raises the band's vertices (`vertices`, from the block's corner to
+    /// before the emergence vertex) by one height, so that the area is
+    /// exactly the old area less the trench plus the dilation (M21).
+    fn spread_residual(&mut self, vertices: std::ops::Range<usize>, residual: f64) {
+        let weight = |k: usize| {
+            let left = if k == 0 {
+                0.0
+            } else {
+                self.x[k] - self.x[k - 1]
+            };
+            0.5 * (left + self.x[k + 1] - self.x[k])
+        };
+        let total: f64 = vertices.clone().map(weight).sum();
+        let lift = residual / total;
+        for y in &mut self.y[vertices] {
+            *y += lift;
+        }
+    }
+
+    /// Unit weight of the block's pieces after the motion (M26): the soil
+    /// below the band's lower boundary stayed (γ of the ground that was
+    /// there), the soil above it arrived with the piece, mixed by area over
+    /// the piece (exact: the staying γ is integrated over the old pieces
+    /// beneath it).
+    fn mix_block_pieces(&mut self, before: &Snapshot, line: &Line, block_end: usize) {
+        for k in 0..block_end {
+            let (xa, xb) = (self.x[k], self.x[k + 1]);
+            let total = self.piece_area(k);
+            let floor = self.floor;
+            let at_rest = |x: f64| line.lower(x) - floor;
+            let staying = before.weight_below(xa, xb, at_rest);
+            let resting = 0.5 * (xb - xa) * (at_rest(xa) + at_rest(xb));
+            let arriving = self.unit_weight[k] * (total - resting);
+            self.unit_weight[k] = (staying + arriving) / total;
+        }
+    }
+
+    /// Gives the band's pieces the one unit weight that makes the weight of
+    /// soil equal `mass_before`: γ_band = (M_before − M_outside) / A_band (M27).
+    fn conserve_mass(&mut self, band: std::ops::Range<usize>, mass_before: f64) {
+        let outside = (0..self.pieces())
+            .filter(|k| !band.contains(k))
+            .map(|k| self.unit_weight[k] * self.piece_area(k));
+        let outside = compensated_sum(outside.chain([self.trench_mass]));
+        let area: f64 = band.clone().map(|k| self.piece_area(k)).sum();
+        let gamma = (mass_before - outside) / area;
+        for g in &mut self.unit_weight[band] {
+            *g = gamma;
+        }
+    }
+}
+
+/// The band's lower boundary: from the tip (x_0, −d) to the emergence
+/// vertex, frozen at the increment's start.
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    x0: f64,
+    depth: f64,
+    tan_beta: f64,
+}
+
+impl Line {
+    fn through(ground: &Ground, depth: f64, emergence: usize) -> Self {
+        let x0 = ground.x[0];
+        Line {
+            x0,
+            depth,
+            tan_beta: (ground.y[emergence] + depth) / (ground.x[emergence] - x0),
+        }
+    }
+
+    /// Height of the lower boundary at x.
+    fn lower(&self, x: f64) -> f64 {
+        -self.depth + self.tan_beta * (x - self.x0)
+    }
+
+    /// g of vertex k: its height above the lower boundary in thicknesses e.
+    fn position(&self, ground: &Ground, k: usize, e: f64) -> f64 {
+        (ground.y[k] - self.lower(ground.x[k])) / e
+    }
+
+    /// A0: the band's area below the surface from the face to the emergence
+    /// vertex, ∫ min(g, 1) e dx, exact once no piece crosses g = 1.
+    fn band_area(&self, ground: &Ground, e: f64, emergence: usize) -> f64 {
+        let g = |k: usize| self.position(ground, k, e).clamp(0.0, 1.0);
+        (0..emergence)
+            .map(|k| 0.5 * (ground.x[k + 1] - ground.x[k]) * e * (g(k) + g(k + 1)))
+            .sum()
+    }
+}
+
+/// The ground from the face to the emergence vertex before the motion:
+/// where each old piece lay and its unit weight.
+struct Snapshot {
+    x: Vec<f64>,
+    unit_weight: Vec<f64>,
+}
+
+impl Snapshot {
+    /// The pieces before vertex `end`.
+    fn of(ground: &Ground, end: usize) -> Self {
+        Snapshot {
+            x: ground.x[..=end].to_vec(),
+            unit_weight: ground.unit_weight[..end].to_vec(),
+        }
+    }
+
+    /// ∫ γ_old(x) h(x) dx over [xa, xb], h the height of the soil that
+    /// stayed (linear): the weight of the soil that stayed below a piece
+    /// now over [xa, xb].
+    fn weight_below(&self, xa: f64, xb: f64, height: impl Fn(f64) -> f64) -> f64 {
+        let mut weight = 0.0;
+        for k in 0..self.unit_weight.len() {
+            let (s0, s1) = (self.x[k].max(xa), self.x[k + 1].min(xb));
+            if s1 > s0 {
+                weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));
+            }
+        }
+        weight
+    }
+}
