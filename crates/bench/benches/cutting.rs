@@ -36,6 +36,36 @@ fn fig5_run_exhaustive(bencher: Bencher, per_depth: u32) {
         .bench(|| run(divan::black_box(&case)));
 }
 
+/// Whole run of fig5 on the vertex ground (`run.vertex_spacing` = d/50,
+/// issue 28) at increments d/250 to d/2000, beside `fig5_run`'s node grid
+/// in the same bench run: the cost per halving of the increment.
+#[divan::bench(args = [250, 500, 1000, 2000], sample_count = 3, sample_size = 1)]
+fn fig5_run_vertices(bencher: Bencher, per_depth: u32) {
+    let increment = format!("run.increment={}", 20.0 / per_depth as f64);
+    let case = shipped_case("paper/fig5.toml", &[&increment, "run.vertex_spacing=0.4"]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
+/// Whole run of each refined paper case on the vertex ground at the
+/// default increment, vertices d/50 apart.
+#[divan::bench(
+    args = ["table1-s", "fig8b", "table1-hs", "fig5"],
+    sample_count = 3,
+    sample_size = 1
+)]
+fn paper_case_on_vertices(bencher: Bencher, name: &str) {
+    let case = shipped_case(&format!("paper/{name}.toml"), &[]);
+    let spacing = format!("run.vertex_spacing={}", case.blade.depth / 50.0);
+    let case = shipped_case(&format!("paper/{name}.toml"), &[&spacing]);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
 /// Whole run of each paper case at its defaults (the targets of issue 19:
 /// `docs/performance.md`, "Time to accuracy in the ensemble sense").
 #[divan::bench(
@@ -60,6 +90,23 @@ fn original_run(bencher: Bencher) {
     bencher
         .counter(ItemsCount::new(evaluations))
         .bench(|| run(divan::black_box(&case)));
+}
+
+/// One `step()` of fig5 at d/1000 on the vertex ground (vertices d/50
+/// apart) on the pile developed after 3 d of travel: the control tick.
+#[divan::bench(sample_count = 20, sample_size = 20)]
+fn fig5_step_on_vertices(bencher: Bencher) {
+    let case = shipped_case(
+        "paper/fig5.toml",
+        &["run.increment=0.02", "run.vertex_spacing=0.4"],
+    );
+    let developed = developed(&case, 3.0);
+    bencher
+        .with_inputs(|| developed.clone())
+        .bench_local_values(|mut sim| {
+            sim.step().unwrap();
+            sim
+        });
 }
 
 /// One `step()` of fig5 at d/1000 on the pile developed after 3 d of travel.

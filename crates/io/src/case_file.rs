@@ -207,7 +207,7 @@ struct AngleFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { travel, increment, node_spacing, samples_per_band }"
+    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing }"
 )]
 struct RunFile {
     travel: f64,
@@ -217,6 +217,8 @@ struct RunFile {
     node_spacing: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     samples_per_band: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vertex_spacing: Option<f64>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -556,6 +558,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             increment,
             node_spacing,
             samples_per_band,
+            vertex_spacing: file.run.vertex_spacing.unwrap_or(0.0),
         },
         bin: Bin {
             length: file.bin.map(|b| b.length),

@@ -140,6 +140,10 @@ pub struct Run {
     /// Candidates the search's first stage evaluates per band width dB
     /// (0: every node; `Case::search_stride`, docs/model.md §2.8).
     pub samples_per_band: f64,
+    /// h of the vertex ground (0: the node grid; docs/model.md §19):
+    /// vertices every h on flat ground, and a band's points snap to a
+    /// vertex within h/2 (experimental, issue 28).
+    pub vertex_spacing: f64,
 }
 
 /// How a candidate band takes its angles from the nodes it touches.

@@ -1,5 +1,6 @@
-//! A ground whose points move with the soil (issue 28; the design is in
-//! docs/performance.md, "Issue 28: the vertex ground"): the free surface
+//! A ground whose points move with the soil (issue 28; docs/model.md §19,
+//! measured in docs/performance.md, "Issue 28, second step: the vertex
+//! ground"): the free surface
 //! as a polyline of vertices (x_k, y_k), x strictly increasing, vertex 0
 //! at the blade face, and the soil's state held per piece, piece k lying
 //! between vertices k and k + 1.
@@ -18,13 +19,15 @@
 //! exact for a polyline (the trapezoid rule integrates a linear surface
 //! exactly).
 //!
-//! Not yet the simulation's ground: the search, avalanching and the side
-//! spill still run on the node grid of `surface`; this is the first step.
+//! The simulation's ground where a case sets `run.vertex_spacing`
+//! (`cutting`); else the node grid of `surface`.
 
 use crate::surface::compensated_sum;
 
 mod avalanche;
+pub mod cutting;
 pub mod motion;
+pub(crate) mod search;
 
 /// The free surface as vertices that move with the soil, with the state
 /// of the soil held per piece between them.
@@ -43,6 +46,11 @@ pub struct Ground {
     pub floor: f64,
     /// Weight of the soil left below the tip's path behind the blade.
     pub trench_mass: f64,
+    /// γ0, the unit weight of the flat ground appended by `extend_flat`.
+    pub ground_unit_weight: f64,
+    /// Weight of the ground `extend_flat` appended, so that `mass` counts
+    /// only the ground that existed at the start.
+    pub appended_mass: f64,
 }
 
 impl Ground {
@@ -60,7 +68,22 @@ impl Ground {
             unit_weight: vec![unit_weight; pieces],
             floor: -depth,
             trench_mass: 0.0,
+            ground_unit_weight: unit_weight,
+            appended_mass: 0.0,
         }
+    }
+
+    /// Appends a piece of fresh ground (ut = 0, γ0) from the last vertex to
+    /// `length` beyond it at y = 0. Exact where the search may need it:
+    /// the weight it adds is not counted by `mass`.
+    pub fn extend_flat(&mut self, length: f64) {
+        let end = self.x[self.pieces()] + length;
+        self.x.push(end);
+        self.y.push(0.0);
+        self.accumulated_shear.push(0.0);
+        self.unit_weight.push(self.ground_unit_weight);
+        let k = self.pieces() - 1;
+        self.appended_mass += self.ground_unit_weight * self.piece_area(k);
     }
 
     /// Number of pieces (one less than the vertices).
@@ -77,7 +100,11 @@ impl Ground {
 
     /// Height of the surface at x, on the straight piece holding it.
     pub fn height_at(&self, x: f64) -> f64 {
-        let k = self.piece_at(x);
+        self.height_on(self.piece_at(x), x)
+    }
+
+    /// Height at x on piece k (x in or at the ends of it).
+    pub fn height_on(&self, k: usize, x: f64) -> f64 {
         let lambda = (x - self.x[k]) / (self.x[k + 1] - self.x[k]);
         self.y[k] + lambda * (self.y[k + 1] - self.y[k])
     }
@@ -100,6 +127,22 @@ impl Ground {
             .insert(k + 1, self.accumulated_shear[k]);
         self.unit_weight.insert(k + 1, self.unit_weight[k]);
         k + 1
+    }
+
+    /// The x of the vertex at x or within `snap` of it (the nearer of the
+    /// piece's two), made by `split_at` if there is none.
+    pub fn split_near(&mut self, x: f64, snap: f64) -> f64 {
+        let k = self.piece_at(x);
+        let nearest = if x - self.x[k] <= self.x[k + 1] - x {
+            k
+        } else {
+            k + 1
+        };
+        if (self.x[nearest] - x).abs() <= snap && nearest > 0 {
+            return self.x[nearest];
+        }
+        let v = self.split_at(x);
+        self.x[v]
     }
 
     /// Removes the vertices that end a piece shorter than `min_spacing`
@@ -149,11 +192,12 @@ impl Ground {
         compensated_sum((0..self.pieces()).map(|k| self.piece_area(k)))
     }
 
-    /// Weight of soil in front of the blade and in the trench behind it:
-    /// M = Σ_k γ_k A_k + M_trench.
+    /// Weight of soil in front of the blade and in the trench behind it,
+    /// of the ground that existed at the start: M = Σ_k γ_k A_k + M_trench
+    /// less what `extend_flat` appended.
     pub fn mass(&self) -> f64 {
         let pieces = (0..self.pieces()).map(|k| self.unit_weight[k] * self.piece_area(k));
-        compensated_sum(pieces.chain([self.trench_mass]))
+        compensated_sum(pieces.chain([self.trench_mass, -self.appended_mass]))
     }
 }
 

@@ -27,7 +27,7 @@
 
 mod angles;
 mod block;
-mod bounds;
+pub(crate) mod bounds;
 mod far_field;
 mod input;
 mod line;

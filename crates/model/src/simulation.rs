@@ -11,6 +11,7 @@ use crate::case::{Case, CaseError};
 use crate::crescent::Crescents;
 use crate::face_friction::Face;
 use crate::grid::Scheme;
+use crate::ground::cutting::Cutting;
 use crate::kinematics::{Advance, Kinematics, Update};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
@@ -169,6 +170,10 @@ pub struct Simulation {
     /// Increments done.
     done: usize,
     initial_mass: f64,
+    /// The vertex ground, where the case sets `run.vertex_spacing` above 0
+    /// (docs/model.md §19): it then holds the state and makes the
+    /// increments, and `surface` stays as set up.
+    vertices: Option<Box<Cutting>>,
 }
 
 impl Simulation {
@@ -186,7 +191,13 @@ impl Simulation {
             nodes,
         );
         let initial_mass = surface.mass(0);
-        Ok(Self::assemble(case.clone(), laws, surface, initial_mass))
+        let mut sim = Self::assemble(case.clone(), laws, surface, initial_mass);
+        if case.run.vertex_spacing > 0.0 {
+            let cutting = Cutting::new(case)?;
+            sim.initial_mass = cutting.ground().mass();
+            sim.vertices = Some(Box::new(cutting));
+        }
+        Ok(sim)
     }
 
     /// The node grid of a case: h = k v0.
@@ -216,6 +227,7 @@ impl Simulation {
             per_blade: case.blade.width.unwrap_or(1.0),
             done: 0,
             initial_mass,
+            vertices: None,
             case,
         }
     }
@@ -237,7 +249,10 @@ impl Simulation {
 
     /// Blade displacement u (the face is at x = u).
     pub fn blade_position(&self) -> f64 {
-        self.surface.x(self.surface.face.node)
+        match &self.vertices {
+            Some(cutting) => cutting.ground().x[0],
+            None => self.surface.x(self.surface.face.node),
+        }
     }
 
     /// The nodes as the model holds them: on the grid, whose x is the
@@ -249,7 +264,10 @@ impl Simulation {
     /// Current weight of soil ahead of the blade (ground that existed at
     /// the start), per blade for a blade of finite width.
     pub fn mass(&self) -> f64 {
-        self.surface.mass(self.surface.face.node) * self.per_blade
+        match &self.vertices {
+            Some(cutting) => cutting.ground().mass(),
+            None => self.surface.mass(self.surface.face.node) * self.per_blade,
+        }
     }
 
     /// Weight of soil spilled into the side heaps so far (M45), per blade.
@@ -265,11 +283,17 @@ impl Simulation {
 
     /// Candidate evaluations so far (for benchmarks).
     pub fn evaluations(&self) -> u64 {
-        self.search.evaluations
+        match &self.vertices {
+            Some(cutting) => cutting.evaluations(),
+            None => self.search.evaluations,
+        }
     }
 
     /// The free surface from the face to the end of the domain.
     pub fn profile(&self) -> Vec<ProfilePoint> {
+        if let Some(cutting) = &self.vertices {
+            return cutting.profile();
+        }
         let s = &self.surface;
         let d = self.case.blade.depth;
         (s.face.node..s.len())
@@ -385,6 +409,9 @@ impl Simulation {
     /// the next `step` is the one it would have been. Fails as `step`
     /// would if no candidate is admissible.
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
+        if let Some(cutting) = &mut self.vertices {
+            return cutting.landscape();
+        }
         let mut choices = Vec::new();
         let mut record = |c: &Choice| choices.push(*c);
         let found = self.find_mechanism(self.laws.face.for_climb(self.climb()), Some(&mut record));
@@ -426,6 +453,11 @@ impl Simulation {
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
         if self.is_done() {
             return Err(StepError::TravelReached { steps: self.done });
+        }
+        if let Some(cutting) = &mut self.vertices {
+            let record = cutting.step()?;
+            self.done += 1;
+            return Ok(record);
         }
         let u = self.blade_position();
         let face = self.laws.face.for_climb(self.climb());

@@ -39,6 +39,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             increment: d / per_depth,
             node_spacing: d / per_depth,
             samples_per_band: 0.0,
+            vertex_spacing: 0.0,
         },
         bin: Default::default(),
         choices: Default::default(),

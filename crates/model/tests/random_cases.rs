@@ -275,3 +275,50 @@ fn the_default_grid_is_accurate_on_random_cases() {
         });
     }
 }
+
+/// The same random cases on the vertex ground (docs/model.md §19), where it
+/// runs: vertical blades at constant depth, vertices d/100 to d/25 apart.
+/// Positive finite forces, mass kept, every piece's state physical, and
+/// the chosen band never more than the snap's 0.1 % above the least of the
+/// first stage's samples (the second stage may go below them).
+#[test]
+fn random_cases_on_the_vertex_ground_run_and_conserve() {
+    for_random(5, (30, 32), |draws| {
+        let mut rng = Draws(draws.iter());
+        let mut case = random_case(&mut rng);
+        case.blade.rake = 90.0;
+        case.blade.depth_path.clear();
+        case.blade.adhesion = 0.0;
+        case.run.vertex_spacing = case.blade.depth / rng.uniform(25.0, 100.0);
+        let fail = |e: &dyn std::fmt::Display| -> ! { panic!("{e}: {case:?}") };
+        let mut sim = Simulation::new(&case).unwrap_or_else(|e| fail(&e));
+        while !sim.is_done() {
+            let least = sim.steps_done().is_multiple_of(7).then(|| {
+                let candidates = sim.landscape().unwrap_or_else(|e| fail(&e));
+                candidates
+                    .iter()
+                    .map(|c| c.force)
+                    .fold(f64::INFINITY, f64::min)
+            });
+            let record = sim.step().unwrap_or_else(|e| fail(&e));
+            assert!(record.force.is_finite() && record.force > 0.0, "{record:?}");
+            if let Some(least) = least {
+                let within = record.force <= least * (1.0 + 1e-3 + 1e-12);
+                assert!(
+                    within,
+                    "step {}: {} vs {least}: {case:?}",
+                    record.step, record.force
+                );
+            }
+        }
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-9, "mass drift {drift:e}: {case:?}");
+        for p in sim.profile() {
+            assert!(
+                p.unit_weight > 0.3 && p.unit_weight < 3.0,
+                "γ {p:?}: {case:?}"
+            );
+            assert!(p.accumulated_shear >= 0.0, "ut {p:?}");
+        }
+    });
+}

@@ -327,6 +327,7 @@ impl Case {
         }
         self.validate_node_spacing()?;
         non_negative("run.samples_per_band", self.run.samples_per_band)?;
+        non_negative("run.vertex_spacing", self.run.vertex_spacing)?;
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
             return Err(CaseError::new(

@@ -1,4 +1,5 @@
-//! Avalanching on the vertex ground (docs/model.md §6 on the node grid):
+//! Avalanching on the vertex ground (M50; docs/model.md §19, and §6 for
+//! the node grid):
 //! no piece may be steeper than the angle of repose θr.
 //!
 //! With s = tan θr, the downslope constraint y_{k+1} ≥ y_k − s (x_{k+1} − x_k)
@@ -37,8 +38,11 @@ struct Pool {
 
 impl Ground {
     /// Relaxes every piece steeper than the angle of repose (`tan_repose`,
-    /// s = tan θr) (M28); returns whether any soil moved.
-    pub fn relax(&mut self, tan_repose: f64) -> bool {
+    /// s = tan θr) (M28, M50); returns whether any soil moved. The pieces next
+    /// to a steep one are first cut to at most `spacing`, so that the soil
+    /// that runs down heaps where it stops, not over a long piece.
+    pub fn relax(&mut self, tan_repose: f64, spacing: f64) -> bool {
+        self.refine_around_steep(tan_repose, spacing);
         let mut moved = false;
         for _ in 0..MAX_PASSES {
             let areas: Vec<f64> = (0..self.pieces()).map(|k| self.piece_area(k)).collect();
@@ -51,6 +55,31 @@ impl Ground {
             moved = true;
         }
         moved
+    }
+
+    /// Cuts the two pieces on either side of every piece steeper than s
+    /// into equal pieces no longer than `spacing` (the avalanche cuts the
+    /// ground where its soil lands; each part keeps the piece's state).
+    fn refine_around_steep(&mut self, s: f64, spacing: f64) {
+        let limit = s * (1.0 + SLOPE_TOLERANCE);
+        let steep: Vec<usize> = (0..self.pieces())
+            .filter(|&k| (self.y[k + 1] - self.y[k]).abs() > limit * (self.x[k + 1] - self.x[k]))
+            .collect();
+        let mut near: Vec<usize> = steep
+            .iter()
+            .flat_map(|&k| k.saturating_sub(2)..(k + 3).min(self.pieces()))
+            .filter(|&k| self.x[k + 1] - self.x[k] > spacing)
+            .collect();
+        near.sort_unstable();
+        near.dedup();
+        // From the far end, so that the indices before stay valid.
+        for &k in near.iter().rev() {
+            let (xa, xb) = (self.x[k], self.x[k + 1]);
+            let parts = ((xb - xa) / spacing).ceil() as usize;
+            for i in (1..parts).rev() {
+                self.split_at(xa + (xb - xa) * i as f64 / parts as f64);
+            }
+        }
     }
 
     /// Trapezoid weight of vertex k: half of each piece it bounds.

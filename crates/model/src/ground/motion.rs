@@ -1,5 +1,5 @@
-//! One increment's motion of the soil on the vertex ground (docs/model.md
-//! §3 on the node grid; here on material vertices).
+//! One increment's motion of the soil on the vertex ground (M48;
+//! docs/model.md §19, and §3 for the node grid).
 //!
 //! The lower boundary of the band is the line from the tip (x_0, −d) to the
 //! emergence point x_e, of slope tan β = (y(x_e) + d) / (x_e − x_0); the
@@ -41,6 +41,9 @@ pub struct Cut {
     pub width: f64,
     /// Pieces shorter than this are joined after the motion (length).
     pub min_spacing: f64,
+    /// A crossing of the band's upper boundary closer than this to a
+    /// vertex takes that vertex instead of making one (length).
+    pub snap: f64,
     /// v0: the block's horizontal advance, the blade's increment (length).
     pub advance: f64,
     /// The block's rise: v0 tan(β + ψ), v0 tan β for a slip line (length).
@@ -64,7 +67,7 @@ pub struct Moved {
 }
 
 impl Ground {
-    /// Moves the soil by `cut` and keeps its weight exact; `None` (nothing
+    /// Moves the soil by `cut` (M48) and keeps its weight exact; `None` (nothing
     /// changed) where the face lies in the band or the band's image folds
     /// over, which a band narrower than the vertices resolve does.
     pub fn apply(&mut self, cut: &Cut) -> Option<Moved> {
@@ -76,7 +79,7 @@ impl Ground {
             if line.position(self, 0, cut.thickness) < 1.0 {
                 return None;
             }
-            self.split_at_upper_boundary(&line, cut.thickness, emergence)
+            self.split_at_upper_boundary(&line, (cut.thickness, cut.snap), emergence)
         } else {
             (emergence, emergence)
         };
@@ -91,20 +94,23 @@ impl Ground {
         let band = if banded {
             self.shear_band(&line, cut, corner, emergence)?
         } else {
-            self.slide_block(cut, emergence)
+            self.slide_over(cut, emergence)
         };
         // The swept soil, ½ v0 (e + rise), on the face's piece (M20).
         let first = self.x[1] - self.x[0];
         self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
         if banded {
-            self.spread_residual(corner..band.end, target_area - self.area());
+            self.lift_band(corner..band.end, target_area - self.area());
         }
         self.mix_block_pieces(&before, &line, band.start);
+        if banded {
+            self.keep_band_state(&before, band.clone());
+        }
         for ut in &mut self.accumulated_shear[band.clone()] {
             *ut += cut.slip;
         }
         self.trench_mass += trench_mass;
-        self.conserve_mass(band.clone(), mass_before);
+        self.weigh_band(band.clone(), mass_before);
         let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
         let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
         Some(Moved {
@@ -117,7 +123,12 @@ impl Ground {
     /// Makes a vertex wherever a piece between the face and the emergence
     /// vertex crosses the band's upper boundary; returns the last vertex
     /// of the block (g ≥ 1) and the emergence vertex after them.
-    fn split_at_upper_boundary(&mut self, line: &Line, e: f64, emergence: usize) -> (usize, usize) {
+    fn split_at_upper_boundary(
+        &mut self,
+        line: &Line,
+        (e, snap): (f64, f64),
+        emergence: usize,
+    ) -> (usize, usize) {
         let crossings: Vec<f64> = (0..emergence)
             .filter_map(|k| {
                 let (g0, g1) = (line.position(self, k, e), line.position(self, k + 1, e));
@@ -127,14 +138,19 @@ impl Ground {
                 })
             })
             .collect();
-        let emergence = emergence + crossings.len();
-        for x in crossings {
-            self.split_at(x);
+        let before = self.x.len();
+        let last = crossings.last().map(|&x| self.split_near(x, snap));
+        for &x in crossings.iter().rev().skip(1) {
+            self.split_near(x, snap);
         }
-        let corner = (0..emergence)
-            .rev()
-            .find(|&k| line.position(self, k, e) >= 1.0 - 1e-12)
-            .unwrap_or(0);
+        let emergence = emergence + self.x.len() - before;
+        let corner = match last {
+            Some(x) => self.x.partition_point(|&v| v < x),
+            None => (0..emergence)
+                .rev()
+                .find(|&k| line.position(self, k, e) >= 1.0)
+                .unwrap_or(0),
+        };
         (corner, emergence)
     }
 
@@ -167,40 +183,53 @@ impl Ground {
         Some(corner..emergence)
     }
 
-    /// The slip line's motion: every vertex up to the emergence vertex
-    /// moves with the block (M14); ground vertices the block's corner
-    /// passes are buried; returns the slip surface's piece.
-    fn slide_block(&mut self, cut: &Cut, emergence: usize) -> std::ops::Range<usize> {
-        for k in 0..=emergence {
+    /// The slip line's motion (M14): the block's vertices move by
+    /// (v0, rise); the emergence vertex stays, the ground's sheared point,
+    /// and takes the height of the block's surface above it, so that the
+    /// block's toe beyond it is cut off (as on the node grid, whose block
+    /// lands on the emergence node; M27 keeps the mass); block vertices
+    /// that reach it go. Returns the slip surface's piece, ahead of it, v0
+    /// long (M15, M22).
+    fn slide_over(&mut self, cut: &Cut, emergence: usize) -> std::ops::Range<usize> {
+        let xe = self.x[emergence];
+        let corner = (xe + cut.advance, self.y[emergence] + cut.rise);
+        for k in 0..emergence {
             self.x[k] += cut.advance;
             self.y[k] += cut.rise;
         }
-        // Vertices within half an increment of the corner are buried too,
-        // so that the slip surface's piece is not a sliver.
-        let reach = self.x[emergence] + 0.5 * cut.advance;
-        let buried = self.x[emergence + 1..]
-            .iter()
-            .take_while(|&&x| x <= reach)
-            .count()
-            .min(self.pieces() - emergence - 1);
-        // The slip surface ahead of the corner keeps the state of the
-        // ground it was (the first piece ahead of the emergence point).
-        let state = emergence + buried;
-        let (ut, gamma) = (self.accumulated_shear[state], self.unit_weight[state]);
-        let range = emergence + 1..emergence + 1 + buried;
-        self.x.drain(range.clone());
-        self.y.drain(range.clone());
-        self.accumulated_shear.drain(range.clone());
-        self.unit_weight.drain(range);
-        self.accumulated_shear[emergence] = ut;
-        self.unit_weight[emergence] = gamma;
-        emergence..emergence + 1
+        let kept = (1..emergence)
+            .find(|&k| self.x[k] >= xe)
+            .unwrap_or(emergence);
+        let (xa, ya) = (self.x[kept - 1], self.y[kept - 1]);
+        self.y[emergence] = ya + (corner.1 - ya) * (xe - xa) / (corner.0 - xa);
+        self.x.drain(kept..emergence);
+        self.y.drain(kept..emergence);
+        self.accumulated_shear.drain(kept..emergence);
+        self.unit_weight.drain(kept..emergence);
+        // The slip line shears a point of the ground: its piece is v0 long,
+        // as the node grid's emergence node is.
+        if self.x.get(kept + 1).is_some_and(|&x| x > xe + cut.advance) {
+            self.split_at(xe + cut.advance);
+        }
+        kept..kept + 1
+    }
+
+    /// The band's state stays where it was (M48; docs/model.md §3.6, as on the
+    /// node grid, whose band nodes keep theirs): each band piece, moved by
+    /// the band's shear, takes the mean ut of the ground that lay under its
+    /// new extent before the increment (a conservative remap within the
+    /// band; the block's pieces carry theirs).
+    fn keep_band_state(&mut self, before: &Snapshot, band: std::ops::Range<usize>) {
+        for k in band {
+            let (xa, xb) = (self.x[k], self.x[k + 1]);
+            self.accumulated_shear[k] = before.mean_shear(xa, xb);
+        }
     }
 
     /// Raises the band's vertices (`vertices`, from the block's corner to
     /// before the emergence vertex) by one height, so that the area is
     /// exactly the old area less the trench plus the dilation (M21).
-    fn spread_residual(&mut self, vertices: std::ops::Range<usize>, residual: f64) {
+    fn lift_band(&mut self, vertices: std::ops::Range<usize>, residual: f64) {
         let weight = |k: usize| {
             let left = if k == 0 {
                 0.0
@@ -222,12 +251,16 @@ impl Ground {
     /// the piece (exact: the staying γ is integrated over the old pieces
     /// beneath it).
     fn mix_block_pieces(&mut self, before: &Snapshot, line: &Line, block_end: usize) {
+        let floor = self.floor;
+        let at_rest = |x: f64| line.lower(x) - floor;
+        // The block's pieces and the old pieces are both in order of x: the
+        // old pieces under piece k start from the first under piece k − 1.
+        let mut first_old = 0;
         for k in 0..block_end {
             let (xa, xb) = (self.x[k], self.x[k + 1]);
             let total = self.piece_area(k);
-            let floor = self.floor;
-            let at_rest = |x: f64| line.lower(x) - floor;
-            let staying = before.weight_below(xa, xb, at_rest);
+            first_old += before.x[first_old + 1..].partition_point(|&x| x <= xa);
+            let staying = before.weight_below(first_old, xa, xb, at_rest);
             let resting = 0.5 * (xb - xa) * (at_rest(xa) + at_rest(xb));
             let arriving = self.unit_weight[k] * (total - resting);
             self.unit_weight[k] = (staying + arriving) / total;
@@ -236,11 +269,11 @@ impl Ground {
 
     /// Gives the band's pieces the one unit weight that makes the weight of
     /// soil equal `mass_before`: γ_band = (M_before − M_outside) / A_band (M27).
-    fn conserve_mass(&mut self, band: std::ops::Range<usize>, mass_before: f64) {
+    fn weigh_band(&mut self, band: std::ops::Range<usize>, mass_before: f64) {
         let outside = (0..self.pieces())
             .filter(|k| !band.contains(k))
             .map(|k| self.unit_weight[k] * self.piece_area(k));
-        let outside = compensated_sum(outside.chain([self.trench_mass]));
+        let outside = compensated_sum(outside.chain([self.trench_mass, -self.appended_mass]));
         let area: f64 = band.clone().map(|k| self.piece_area(k)).sum();
         let gamma = (mass_before - outside) / area;
         for g in &mut self.unit_weight[band] {
@@ -293,6 +326,7 @@ impl Line {
 struct Snapshot {
     x: Vec<f64>,
     unit_weight: Vec<f64>,
+    shear: Vec<f64>,
 }
 
 impl Snapshot {
@@ -301,15 +335,34 @@ impl Snapshot {
         Snapshot {
             x: ground.x[..=end].to_vec(),
             unit_weight: ground.unit_weight[..end].to_vec(),
+            shear: ground.accumulated_shear[..end].to_vec(),
         }
+    }
+
+    /// Mean ut of the old pieces over [xa, xb] (the last old piece reaches
+    /// beyond its end).
+    fn mean_shear(&self, xa: f64, xb: f64) -> f64 {
+        let last = self.shear.len() - 1;
+        let mut sum = 0.0;
+        for k in 0..=last {
+            let hi = if k == last { xb } else { self.x[k + 1].min(xb) };
+            let lo = self.x[k].max(xa);
+            if hi > lo {
+                sum += self.shear[k] * (hi - lo);
+            }
+        }
+        sum / (xb - xa)
     }
 
     /// ∫ γ_old(x) h(x) dx over [xa, xb], h the height of the soil that
     /// stayed (linear): the weight of the soil that stayed below a piece
-    /// now over [xa, xb].
-    fn weight_below(&self, xa: f64, xb: f64, height: impl Fn(f64) -> f64) -> f64 {
+    /// now over [xa, xb]; the old pieces before `first` lie before xa.
+    fn weight_below(&self, first: usize, xa: f64, xb: f64, height: impl Fn(f64) -> f64) -> f64 {
         let mut weight = 0.0;
-        for k in 0..self.unit_weight.len() {
+        for k in first..self.unit_weight.len() {
+            if self.x[k] >= xb {
+                break;
+            }
             let (s0, s1) = (self.x[k].max(xa), self.x[k + 1].min(xb));
             if s1 > s0 {
                 weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));

@@ -118,7 +118,8 @@ impl Block {
                 self.passed[near] = line;
                 // Kept without a branch: which lines pass is data.
                 let t = line.slope.tan_beta;
-                let pass = !best.prune || least.lower.can_beat(line.floor, t, best.bar, input);
+                let pass =
+                    !best.prune || least.lower.can_beat(line.floor, t, best.bar, &input.face);
                 near += usize::from(pass);
             }
             j += 1;

@@ -9,23 +9,24 @@
 use super::input::SearchInput;
 use super::line::Line;
 use crate::case::FaceFrictionRule;
-use crate::laws::BandAngles;
+use crate::face_friction::Face;
+use crate::laws::{BandAngles, Laws};
 use crate::mechanism::ForceFactor;
 use crate::surface::Surface;
 
 /// Eq. (1) at a friction angle no greater than the band's: a lower bound
 /// of P/W, with the face friction of a rising block above `sinking_below`.
-#[derive(Clone, Copy)]
-pub(super) struct Lower {
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Lower {
     pub(super) rising: ForceFactor,
     pub(super) sinking: ForceFactor,
 }
 
 impl Lower {
-    pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
+    pub(crate) fn new(phi: f64, laws: &Laws) -> Self {
         Lower {
-            rising: ForceFactor::new(phi, input.laws.face.walls.0),
-            sinking: ForceFactor::new(phi, input.laws.face.walls.1),
+            rising: ForceFactor::new(phi, laws.face.walls.0),
+            sinking: ForceFactor::new(phi, laws.face.walls.1),
         }
     }
 
@@ -36,22 +37,15 @@ impl Lower {
     /// either may be, so both are tried; a partly mobilised block's ω lies
     /// anywhere between them (M41), where the raked blade's denominator
     /// may peak (`ForceFactor::can_beat_between`).
-    pub(super) fn can_beat(
-        &self,
-        weight: f64,
-        tan_beta: f64,
-        bar: f64,
-        input: &SearchInput,
-    ) -> bool {
+    pub(crate) fn can_beat(&self, weight: f64, tan_beta: f64, bar: f64, face: &Face) -> bool {
         self.rising.can_beat(weight, tan_beta, bar)
-            | (tan_beta <= input.face.sinking_below
-                && self.sinking_can_beat(weight, tan_beta, bar, input))
+            | (tan_beta <= face.sinking_below && self.sinking_can_beat(weight, tan_beta, bar, face))
     }
 
     /// The same below `sinking_below`, where the block need not rise.
     #[inline]
-    fn sinking_can_beat(&self, weight: f64, tan_beta: f64, bar: f64, input: &SearchInput) -> bool {
-        match input.face.rule {
+    fn sinking_can_beat(&self, weight: f64, tan_beta: f64, bar: f64, face: &Face) -> bool {
+        match face.rule {
             FaceFrictionRule::Sign => self.sinking.can_beat(weight, tan_beta, bar),
             FaceFrictionRule::Mobilised => {
                 self.sinking
@@ -93,7 +87,7 @@ impl LeastFriction {
     pub(super) fn new(phi: f64, input: &SearchInput) -> Self {
         LeastFriction {
             phi,
-            lower: Lower::new(phi, input),
+            lower: Lower::new(phi, input.laws),
         }
     }
 
@@ -103,7 +97,7 @@ impl LeastFriction {
         let (here, before) = (surface.friction[j], surface.friction[j - 1]);
         if here < self.phi || before < self.phi {
             self.phi = self.phi.min(here).min(before);
-            self.lower = Lower::new(self.phi, input);
+            self.lower = Lower::new(self.phi, input.laws);
         }
     }
 }

@@ -109,7 +109,7 @@ impl FarField {
     ) -> u64 {
         let b = lines.face.node;
         let fresh = input.laws.band_angles(input.laws.fresh);
-        let fresh_walls = Lower::new(fresh.friction, input);
+        let fresh_walls = Lower::new(fresh.friction, input.laws);
         let mut evaluations = 0;
         let mut n1 = self.first_admissible(lines.r_min, max_nodes.saturating_sub(b));
         // A candidate needs a node ahead of it within `max_nodes` (an end

@@ -36,7 +36,7 @@ use std::borrow::Cow;
 /// The first bytes of every snapshot.
 pub const MAGIC: [u8; 8] = *b"SOILCUT\x01";
 /// The layout's version: raised whenever the body changes.
-pub const FORMAT_VERSION: u32 = 3;
+pub const FORMAT_VERSION: u32 = 4;
 /// The crate version a snapshot must come from.
 pub const CRATE_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Bytes of the CRC-32 that ends every snapshot.
@@ -112,6 +112,12 @@ impl Simulation {
     pub fn from_snapshot_with_note(bytes: &[u8]) -> Result<(Simulation, Vec<u8>), SnapshotError> {
         let body = decode(checked_body(bytes)?)?;
         body.case.validate().map_err(SnapshotError::Case)?;
+        if body.case.run.vertex_spacing > 0.0 {
+            return Err(SnapshotError::Invalid {
+                what: "run.vertex_spacing",
+                message: "a simulation on the vertex ground cannot be restored from a snapshot yet (run.vertex_spacing > 0, issue 28)".into(),
+            });
+        }
         let note = body.note.to_vec();
         Ok((Self::restore(body)?, note))
     }

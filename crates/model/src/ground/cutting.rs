@@ -1,0 +1,275 @@
+//! The cut on the vertex ground: each increment searches the least-force
+//! mechanism anywhere on the ground (`search`), moves the soil by it
+//! (`motion`) and lets the slopes avalanche (`avalanche`), as the node
+//! grid's `Simulation::step` does (docs/model.md §1).
+//!
+//! For a vertical blade at constant depth in plane strain, under the
+//! default choices (the full band shear, the band's uniform unit weight);
+//! `Cutting::new` refuses other cases with the key that is not supported.
+
+use super::motion::Cut;
+use super::search::{Pick, Scan, VertexSearch};
+use super::Ground;
+use crate::case::{BandShearRule, Case, CaseError, UnitWeightRule};
+use crate::landscape::Candidate;
+use crate::laws::Laws;
+use crate::mechanism::Loads;
+use crate::simulation::{ProfilePoint, StepError, StepRecord};
+
+/// Flat fresh ground appended when the search reaches the end, in d.
+const GROW_DEPTHS: f64 = 4.0;
+/// Spacing of a slip line's samples, in d (it has no band width).
+const SLIP_LINE_SAMPLES: f64 = 1.0 / 64.0;
+/// No band emerges farther ahead of the face than this, in d.
+const MAX_REACH_DEPTHS: f64 = 1000.0;
+
+/// A cut simulated on the vertex ground.
+#[derive(Clone, Debug)]
+pub struct Cutting {
+    case: Case,
+    laws: Laws,
+    ground: Ground,
+    search: VertexSearch,
+    done: usize,
+}
+
+impl Cutting {
+    /// The cut of `case` on flat ground of fresh soil from the face to the
+    /// travel plus 8 d ahead, in pieces `run.vertex_spacing` long (where
+    /// the soil that avalanches ahead of a band lands; a heap on one long
+    /// piece would spread thin over all of it).
+    pub fn new(case: &Case) -> Result<Self, CaseError> {
+        case.validate()?;
+        supported(case)?;
+        let d = case.blade.depth;
+        let length = case.run.travel + 8.0 * d;
+        let spacing = case.run.vertex_spacing;
+        let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
+        Ok(Cutting {
+            laws: Laws::new(case),
+            ground,
+            search: VertexSearch::default(),
+            done: 0,
+            case: case.clone(),
+        })
+    }
+
+    /// The ground now.
+    pub fn ground(&self) -> &Ground {
+        &self.ground
+    }
+
+    /// Eq. (1) evaluations so far.
+    pub fn evaluations(&self) -> u64 {
+        self.search.evaluations
+    }
+
+    /// The surface at the vertices from the face on, each with the state
+    /// of the piece that starts there (the last, of the piece it ends).
+    pub fn profile(&self) -> Vec<ProfilePoint> {
+        let g = &self.ground;
+        (0..g.x.len())
+            .map(|k| {
+                let piece = k.min(g.pieces() - 1);
+                ProfilePoint {
+                    x: g.x[k],
+                    y: g.y[k],
+                    accumulated_shear: g.accumulated_shear[piece],
+                    unit_weight: g.unit_weight[piece],
+                    ridge_height: 0.0,
+                }
+            })
+            .collect()
+    }
+
+    /// Every candidate the next increment's first stage evaluates, without
+    /// pruning: its samples every dB / K along the ground, up to where the
+    /// stopping rule ends the scan (the least force found then).
+    pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
+        self.search.observed = Some(Vec::new());
+        let scan_done = self.search_next().map(|_| ());
+        let picks = self.search.observed.take().unwrap_or_default();
+        scan_done?;
+        let scale = self.case.force_scale();
+        Ok(picks
+            .iter()
+            .map(|p| Candidate {
+                x_emergence: p.x,
+                y_emergence: p.y,
+                beta_deg: p.tan_beta.atan().to_degrees(),
+                force: p.force,
+                force_norm: p.force / scale,
+                friction_deg: p.angles.friction.to_degrees(),
+                dilation_deg: p.angles.dilation.to_degrees(),
+            })
+            .collect())
+    }
+
+    /// Whether the case's travel is done.
+    pub fn is_done(&self) -> bool {
+        self.done >= self.case.steps()
+    }
+
+    /// Advances the blade by one increment.
+    pub fn step(&mut self) -> Result<StepRecord, StepError> {
+        if self.is_done() {
+            return Err(StepError::TravelReached { steps: self.done });
+        }
+        let pick = self.search_next()?;
+        let (d, u) = (self.case.blade.depth, self.ground.x[0]);
+        let face = self.laws.face.for_climb(0.0);
+        let cut = self.cut(&pick);
+        let moved = match self.ground.apply(&cut) {
+            Some(moved) => moved,
+            None => self
+                .ground
+                .apply(&slip_line(&cut, pick.tan_beta))
+                .expect("a slip line always moves"),
+        };
+        let tan_repose = self.case.soil.repose.to_radians().tan();
+        self.ground.relax(tan_repose, self.case.run.vertex_spacing);
+        self.done += 1;
+        let omega = self
+            .laws
+            .face
+            .angle(face.mobilisation(pick.tan_beta, pick.angles.dilation));
+        Ok(StepRecord {
+            step: self.done,
+            u,
+            u_over_d: u / d,
+            force: pick.force,
+            force_norm: pick.force / self.case.force_scale(),
+            force_h: pick.force * omega.cos(),
+            force_v: pick.force * omega.sin(),
+            beta_deg: pick.tan_beta.atan().to_degrees(),
+            x_emergence: pick.x,
+            mass: self.ground.mass(),
+            y_emergence: pick.y,
+            friction_deg: pick.angles.friction.to_degrees(),
+            slip: cut.slip,
+            dilation_deg: pick.angles.dilation.to_degrees(),
+            dilation_area: moved.dilation_area,
+            depth: d,
+            mass_spilled: 0.0,
+        })
+    }
+
+    /// The least-force mechanism of the next increment (§2 on the ground).
+    fn search_next(&mut self) -> Result<Pick, StepError> {
+        let (c, d) = (&self.case, self.case.blade.depth);
+        let u = self.ground.x[0];
+        let face = self.laws.face.for_climb(0.0);
+        let band_width = c.soil.band_width;
+        let per_band = if c.run.samples_per_band > 0.0 {
+            c.run.samples_per_band
+        } else {
+            crate::case::DEFAULT_SAMPLES_PER_BAND
+        };
+        let scan = Scan {
+            laws: &self.laws,
+            loads: loads(c, self.ground.y[0] + d),
+            face,
+            depth: d,
+            band_width,
+            sample: if band_width > 0.0 {
+                band_width / per_band
+            } else {
+                SLIP_LINE_SAMPLES * d
+            },
+            resolution: c.run.increment,
+            snap: 0.5 * c.run.vertex_spacing,
+            grow: GROW_DEPTHS * d,
+            reach: u + MAX_REACH_DEPTHS * d,
+        };
+        self.search
+            .run(&mut self.ground, &scan)
+            .ok_or(StepError::NoAdmissibleMechanism {
+                step: self.done + 1,
+                u,
+            })
+    }
+
+    /// The motion of the band `pick` (M18, M35): rise v0 tan(β + ψ), slip
+    /// Δut = v0 cos ψ / cos(β + ψ); a slip line's v0 tan β and v0 / cos β.
+    fn cut(&self, pick: &Pick) -> Cut {
+        let (c, t) = (&self.case, pick.tan_beta);
+        let v0 = c.run.increment;
+        let band = Cut {
+            depth: c.blade.depth,
+            emergence: pick.x,
+            thickness: c.soil.band_width * (1.0 + t * t).sqrt(),
+            width: c.soil.band_width,
+            min_spacing: 0.25 * v0,
+            snap: 0.5 * c.run.vertex_spacing,
+            advance: v0,
+            rise: 0.0,
+            slip: 0.0,
+            tan_psi: pick.angles.dilation.tan(),
+        };
+        let run = 1.0 - t * band.tan_psi;
+        if band.thickness == 0.0 || run <= 0.0 {
+            return slip_line(&band, t);
+        }
+        let rho = (t + band.tan_psi) / run;
+        Cut {
+            rise: v0 * rho,
+            slip: v0 * pick.angles.dilation.cos() * (1.0 + rho * rho).sqrt(),
+            ..band
+        }
+    }
+}
+
+/// The slip line of `band`'s lower boundary (M14, M15).
+fn slip_line(band: &Cut, tan_beta: f64) -> Cut {
+    Cut {
+        thickness: 0.0,
+        rise: band.advance * tan_beta,
+        slip: band.advance * (1.0 + tan_beta * tan_beta).sqrt(),
+        tan_psi: 0.0,
+        ..*band
+    }
+}
+
+/// The loads of a vertical blade whose face holds soil to `rise` above
+/// the tip (M8).
+fn loads(case: &Case, rise: f64) -> Loads {
+    Loads {
+        surcharge: case.soil.surcharge,
+        adhesion: case.blade.adhesion * rise,
+        cohesion: case.soil.cohesion,
+        face_run: 0.0,
+        rake_offset: (0.0, 1.0),
+    }
+}
+
+/// Refuses what the vertex ground does not do yet, naming the key.
+fn supported(case: &Case) -> Result<(), CaseError> {
+    let unsupported = |key: &str, why: &str| {
+        Err(CaseError::new(
+            key,
+            format!("{why}: not supported on the vertex ground (run.vertex_spacing > 0) yet"),
+        ))
+    };
+    if case.blade.rake != 90.0 {
+        return unsupported("blade.rake", "a raked blade");
+    }
+    if !case.blade.depth_path.is_empty() {
+        return unsupported("blade.depth_path", "a depth path");
+    }
+    if case.blade.width.is_some() {
+        return unsupported("blade.width", "a blade of finite width");
+    }
+    if case.bin.length.is_some() {
+        return unsupported("bin.length", "an end wall");
+    }
+    if case.choices.band_shear != BandShearRule::Full {
+        return unsupported("choices.band_shear", "a band shear other than full");
+    }
+    if case.choices.unit_weight != UnitWeightRule::BandUniform {
+        return unsupported(
+            "choices.unit_weight",
+            "a unit weight rule other than the band's",
+        );
+    }
+    Ok(())
+}

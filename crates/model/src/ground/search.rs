@@ -1,0 +1,406 @@
+//! The search for the least force on the vertex ground (M49;
+//! docs/model.md §19, and §2 for the node grid): the band may emerge
+//! anywhere on the ground, not only at vertices.
+//!
+//! For an emergence point x on piece k (x_k ≤ x < x_{k+1}), with the tip at
+//! (x_0, −d) and tan β = (y(x) + d) / (x − x_0):
+//!
+//! * the line stays inside the soil iff every vertex before x lies on or
+//!   above it, tan β ≤ min_i (y_i + d) / (x_i − x_0) (M3);
+//! * the block's weight is the exact integral over its pieces,
+//!   W = Σ γ_i ∫ (y − y_line) dx = S_A(x) − tan β S_B(x), with
+//!   S_A = Σ γ_i ½ Δx_i (y_i + y_{i+1} + 2d) and
+//!   S_B = Σ γ_i ½ Δx_i (x_i + x_{i+1} − 2 x_0) up to x (M5);
+//! * the band's angles are the means of φ(ut), ψ(ut) and ut over its
+//!   footprint [x − L, x], L = e / (tan β − s) with s the surface's secant
+//!   slope over the flat-ground footprint e / tan β (M10, M17), integrals
+//!   of piecewise constant state;
+//! * P = W (P/W)(β, φ) with the loads, Eq. (1) (M6, M8).
+//!
+//! Every one is O(1) from prefix sums at the vertices (O(log n) for the
+//! footprint's rear end). The search samples every piece at spacing
+//! dB / K (the sampled search of (M47), here along the ground), stops
+//! where the block's weight times the least factor passes the best force
+//! (M31), then narrows every local minimum of the samples within 2 % of
+//! the least by golden-section search down to the resolution.
+
+use super::Ground;
+use crate::face_friction::Face;
+use crate::laws::{BandAngles, Laws};
+use crate::mechanism::Loads;
+use crate::search::bounds::Lower;
+
+/// Local minima of the samples within this fraction of the least are
+/// narrowed (the sampled search's slack, (M47)).
+const SLACK: f64 = 0.02;
+/// A vertex near the least's emergence point takes the band if its force
+/// is within this fraction of the least.
+const SNAP_SLACK: f64 = 1e-3;
+/// 1 / golden ratio.
+const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
+
+/// What the search needs besides the ground.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Scan<'a> {
+    pub(crate) laws: &'a Laws,
+    pub(crate) loads: Loads,
+    pub(crate) face: Face,
+    /// d, the tip's depth (length).
+    pub(crate) depth: f64,
+    /// dB (0: a slip line) (length).
+    pub(crate) band_width: f64,
+    /// Spacing of the first stage's samples along the ground (length).
+    pub(crate) sample: f64,
+    /// Width at which a local minimum's bracket stops narrowing (length).
+    pub(crate) resolution: f64,
+    /// An emergence point this close to a vertex moves to it (length).
+    pub(crate) snap: f64,
+    /// Flat fresh ground appended when the scan reaches the end (length).
+    pub(crate) grow: f64,
+    /// No emergence point beyond this x.
+    pub(crate) reach: f64,
+}
+
+/// The chosen mechanism.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Pick {
+    /// x_e, the emergence point.
+    pub(crate) x: f64,
+    /// y(x_e).
+    pub(crate) y: f64,
+    pub(crate) tan_beta: f64,
+    /// P (force per unit width).
+    pub(crate) force: f64,
+    /// The band's angles (radians).
+    pub(crate) angles: BandAngles,
+}
+
+/// Prefix sums at vertex k: the integrals from the face to x_k.
+#[derive(Clone, Copy, Debug, Default)]
+struct Row {
+    sum_a: f64,
+    sum_b: f64,
+    /// ∫ φ, ∫ ψ, ∫ ut.
+    state: [f64; 3],
+    /// min over vertices 1..k (before k) of (y_i + d) / (x_i − x_0).
+    least_slope: f64,
+}
+
+/// The search's reusable scratch.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct VertexSearch {
+    rows: Vec<Row>,
+    /// φ, ψ of each piece scanned (radians).
+    angles: Vec<(f64, f64)>,
+    samples: Vec<(f64, f64)>,
+    /// The least φ of the pieces scanned and Eq. (1) at it: a band's mean
+    /// φ is no less, so W (P/W)(β, φ_least) bounds its force (as on the
+    /// node grid, `Lower::can_beat`).
+    least: Option<(f64, Lower)>,
+    /// Eq. (1) evaluations so far.
+    pub(crate) evaluations: u64,
+    /// Every candidate the first stage evaluates, unpruned, when set
+    /// (`Cutting::landscape`).
+    pub(crate) observed: Option<Vec<Pick>>,
+}
+
+impl VertexSearch {
+    /// The least-force mechanism, if any is admissible before `scan.reach`.
+    pub(crate) fn run(&mut self, ground: &mut Ground, scan: &Scan) -> Option<Pick> {
+        self.start();
+        let mut best: Option<Pick> = None;
+        let mut k = 0;
+        loop {
+            if k + 1 >= ground.pieces() {
+                if ground.x[ground.pieces()] >= scan.reach {
+                    break;
+                }
+                ground.extend_flat(scan.grow);
+            }
+            self.push_row(ground, scan, k);
+            if self.beyond_reach(ground, scan, k, best.as_ref()) {
+                break;
+            }
+            self.sample_piece(ground, scan, k, &mut best);
+            k += 1;
+        }
+        let best = self.narrow(ground, scan, best?);
+        Some(self.snap(ground, scan, best))
+    }
+
+    /// The least candidate at a vertex within `scan.snap` of the least's
+    /// emergence point, if one is within `SNAP_SLACK` of its force (a
+    /// vertex's piece may hold other soil, which a band there would shear
+    /// instead); else the least itself, whose point becomes a vertex.
+    fn snap(&mut self, ground: &Ground, scan: &Scan, best: Pick) -> Pick {
+        let k = ground.piece_at(best.x);
+        let mut snapped: Option<Pick> = None;
+        for v in [k, k + 1] {
+            let near = (ground.x[v] - best.x).abs() <= scan.snap;
+            if v == 0 || v + 1 >= self.rows.len() || !near {
+                continue;
+            }
+            if let Some(pick) = self.evaluate(ground, scan, (v, ground.x[v]), f64::INFINITY) {
+                if snapped.is_none_or(|s| pick.force < s.force) {
+                    snapped = Some(pick);
+                }
+            }
+        }
+        snapped
+            .filter(|s| s.force <= best.force * (1.0 + SNAP_SLACK))
+            .unwrap_or(best)
+    }
+
+    fn start(&mut self) {
+        self.rows.clear();
+        self.angles.clear();
+        self.samples.clear();
+        self.least = None;
+        self.rows.push(Row {
+            least_slope: f64::INFINITY,
+            ..Row::default()
+        });
+    }
+
+    /// Adds piece k to the prefix sums (row k + 1).
+    fn push_row(&mut self, ground: &Ground, scan: &Scan, k: usize) {
+        let material = &scan.laws.material;
+        let ut = ground.accumulated_shear[k];
+        let (phi, psi) = (material.friction.at(ut), material.dilation.at(ut));
+        self.angles.push((phi, psi));
+        if self.least.is_none_or(|(least, _)| phi < least) {
+            self.least = Some((phi, Lower::new(phi, scan.laws)));
+        }
+        let row = self.rows[k];
+        let (x0, d) = (ground.x[0], scan.depth);
+        let (xa, xb, ya, yb) = (ground.x[k], ground.x[k + 1], ground.y[k], ground.y[k + 1]);
+        let g = ground.unit_weight[k];
+        let dx = xb - xa;
+        let slope = if k == 0 {
+            f64::INFINITY
+        } else {
+            (ya + d) / (xa - x0)
+        };
+        self.rows.push(Row {
+            sum_a: row.sum_a + g * 0.5 * dx * (ya + yb + 2.0 * d),
+            sum_b: row.sum_b + g * 0.5 * dx * (xa + xb - 2.0 * x0),
+            state: [
+                row.state[0] + phi * dx,
+                row.state[1] + psi * dx,
+                row.state[2] + ut * dx,
+            ],
+            least_slope: row.least_slope.min(slope),
+        });
+    }
+
+    /// The stopping rule (M31): the weight of the block to x_k bounds that
+    /// of every candidate beyond, times the least P/W.
+    fn beyond_reach(&self, ground: &Ground, scan: &Scan, k: usize, best: Option<&Pick>) -> bool {
+        let Some(best) = best else { return false };
+        if k == 0 {
+            return false;
+        }
+        let row = &self.rows[k];
+        let t = (ground.y[k] + scan.depth) / (ground.x[k] - ground.x[0]);
+        (row.sum_a - t * row.sum_b) * scan.laws.min_factor > best.force
+    }
+
+    /// The first stage on piece k: candidates from x_k (not the face) at
+    /// spacing `scan.sample`.
+    fn sample_piece(&mut self, ground: &Ground, scan: &Scan, k: usize, best: &mut Option<Pick>) {
+        let (xa, xb) = (ground.x[k], ground.x[k + 1]);
+        let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
+        for i in usize::from(k == 0)..n {
+            let x = xa + (xb - xa) * i as f64 / n as f64;
+            let bar = match (&self.observed, &*best) {
+                (None, Some(b)) => b.force * (1.0 + SLACK),
+                _ => f64::INFINITY,
+            };
+            let force = match self.evaluate(ground, scan, (k, x), bar) {
+                Some(pick) => {
+                    if let Some(observed) = &mut self.observed {
+                        observed.push(pick);
+                    }
+                    if best.is_none_or(|b| pick.force < b.force) {
+                        *best = Some(pick);
+                    }
+                    pick.force
+                }
+                None => f64::INFINITY,
+            };
+            self.samples.push((x, force));
+        }
+    }
+
+    /// The candidate emerging at x on piece k (M49; the prefix sums must
+    /// reach row k + 1), if admissible and able to come under `bar`.
+    fn evaluate(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        (k, x): (usize, f64),
+        bar: f64,
+    ) -> Option<Pick> {
+        let (x0, d) = (ground.x[0], scan.depth);
+        let row = self.rows[k];
+        let (xa, ya) = (ground.x[k], ground.y[k]);
+        let y = ya + (x - xa) * (ground.y[k + 1] - ya) / (ground.x[k + 1] - xa);
+        let run = x - x0;
+        let t = (y + d) / run;
+        // Vertex k is before x unless x is vertex k (M3).
+        let least = if x > xa && k > 0 {
+            row.least_slope.min((ya + d) / (xa - x0))
+        } else {
+            row.least_slope
+        };
+        if !(t > 0.0 && t <= least) {
+            return None;
+        }
+        let g = ground.unit_weight[k];
+        let part = x - xa;
+        let sum_a = row.sum_a + g * 0.5 * part * (ya + y + 2.0 * d);
+        let sum_b = row.sum_b + g * 0.5 * part * (xa + x - 2.0 * x0);
+        let weight = sum_a - t * sum_b;
+        // No band here can come within the slack of the best: P ≥ W f_min.
+        let (_, lower) = self.least.expect("a piece scanned");
+        if !lower.can_beat(weight, t, bar, &scan.face) {
+            return None;
+        }
+        let angles = self.footprint_angles(ground, scan, k, x, y, t);
+        let angles = scan.laws.band_angles(angles);
+        self.evaluations += 1;
+        let factor = scan.laws.factor(angles, t, scan.face);
+        let force = scan.loads.force(&factor, weight, run, t)?;
+        Some(Pick {
+            x,
+            y,
+            tan_beta: t,
+            force,
+            angles,
+        })
+    }
+
+    /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
+    /// M17); for a slip line, piece k's.
+    fn footprint_angles(
+        &self,
+        ground: &Ground,
+        scan: &Scan,
+        k: usize,
+        x: f64,
+        y: f64,
+        t: f64,
+    ) -> BandAngles {
+        let ut = ground.accumulated_shear[k];
+        let (phi, psi) = self.angles[k];
+        if scan.band_width == 0.0 {
+            return BandAngles {
+                friction: phi,
+                dilation: psi,
+                shear: ut,
+                fresh: ut == 0.0,
+            };
+        }
+        let run = x - ground.x[0];
+        let e = scan.band_width * (1.0 + t * t).sqrt();
+        let flat = (e / t).min(run);
+        let back = piece_before(ground, k, x - flat);
+        let s = (y - ground.height_on(back, x - flat)) / flat;
+        let length = if t > s { (e / (t - s)).min(run) } else { run };
+        let rear = x - length;
+        let hi = self.integral(ground, k, x);
+        let lo = self.integral(ground, piece_before(ground, k, rear), rear);
+        let mean = |i: usize| (hi[i] - lo[i]) / length;
+        BandAngles {
+            friction: mean(0),
+            dilation: mean(1),
+            shear: mean(2),
+            fresh: hi[2] == lo[2],
+        }
+    }
+
+    /// ∫ φ, ψ, ut from the face to x on piece k.
+    fn integral(&self, ground: &Ground, k: usize, x: f64) -> [f64; 3] {
+        let row = self.rows[k];
+        let part = x - ground.x[k];
+        let (phi, psi) = self.angles[k];
+        let ut = ground.accumulated_shear[k];
+        [
+            row.state[0] + phi * part,
+            row.state[1] + psi * part,
+            row.state[2] + ut * part,
+        ]
+    }
+
+    /// The second stage (M49): every local minimum of the samples within
+    /// `SLACK` of the least, narrowed by golden-section search to
+    /// `scan.resolution`; returns the least found.
+    fn narrow(&mut self, ground: &Ground, scan: &Scan, mut best: Pick) -> Pick {
+        let bar = best.force * (1.0 + SLACK);
+        let samples = std::mem::take(&mut self.samples);
+        for i in 0..samples.len() {
+            let (x, f) = samples[i];
+            let left = if i == 0 {
+                f64::INFINITY
+            } else {
+                samples[i - 1].1
+            };
+            let right = samples.get(i + 1).map_or(f64::INFINITY, |s| s.1);
+            if !(f <= bar && f <= left && f <= right) {
+                continue;
+            }
+            let lo = if i == 0 { x } else { samples[i - 1].0 };
+            let hi = samples.get(i + 1).map_or(x, |s| s.0);
+            if let Some(pick) = self.golden(ground, scan, (lo, hi), bar) {
+                if pick.force < best.force {
+                    best = pick;
+                }
+            }
+        }
+        self.samples = samples;
+        best
+    }
+
+    /// Golden-section search for the least force on [lo, hi].
+    fn golden(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        (mut lo, mut hi): (f64, f64),
+        bar: f64,
+    ) -> Option<Pick> {
+        let mut at = |x: f64| {
+            let k = ground.piece_at(x);
+            self.evaluate(ground, scan, (k, x), bar)
+        };
+        let force = |p: &Option<Pick>| p.map_or(f64::INFINITY, |p| p.force);
+        let mut a = hi - INVERSE_PHI * (hi - lo);
+        let mut b = lo + INVERSE_PHI * (hi - lo);
+        let (mut pa, mut pb) = (at(a), at(b));
+        while hi - lo > scan.resolution {
+            if force(&pa) <= force(&pb) {
+                (hi, b, pb) = (b, a, pa);
+                a = hi - INVERSE_PHI * (hi - lo);
+                pa = at(a);
+            } else {
+                (lo, a, pa) = (a, b, pb);
+                b = lo + INVERSE_PHI * (hi - lo);
+                pb = at(b);
+            }
+        }
+        if force(&pa) <= force(&pb) {
+            pa
+        } else {
+            pb
+        }
+    }
+}
+
+/// The piece holding x, walking back from piece k (x ≤ x_{k+1}): the
+/// footprint's rear is a few pieces behind its front.
+fn piece_before(ground: &Ground, mut k: usize, x: f64) -> usize {
+    while k > 0 && ground.x[k] > x {
+        k -= 1;
+    }
+    k
+}

@@ -1,0 +1,124 @@
+//! The simulation on the vertex ground (`run.vertex_spacing` > 0,
+//! docs/model.md §19): Coulomb's wedge on the first increment, mass over a
+//! run, the node grid's results where the two agree by design, and a cost
+//! that follows what changes (its vertices do not multiply with the
+//! resolution).
+
+mod common;
+
+use soilcut_model::{Simulation, SnapshotError};
+
+/// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
+fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
+    let mut case = common::refined("table1-s", travel_depths, per_depth);
+    case.run.vertex_spacing = case.blade.depth / 50.0;
+    case
+}
+
+#[test]
+fn the_first_increment_is_coulombs_wedge_anywhere_on_the_ground() {
+    // The band may emerge between vertices, then snaps to one within half
+    // the spacing: the force's error is second order in that distance.
+    for (spacing, tolerance) in [(50.0, 1e-4), (2000.0, 1e-7)] {
+        wedge_within(spacing, tolerance);
+    }
+}
+
+fn wedge_within(per_depth: f64, tolerance: f64) {
+    for (phi, phi_w) in [(20.0, 10.0), (30.0, 0.0), (35.0, 10.0), (40.0, 20.0)] {
+        let mut case = common::original(1.0, 250.0);
+        case.soil.friction.initial = phi;
+        case.soil.friction.peak = phi;
+        case.soil.friction.residual = phi;
+        case.blade.wall_friction = phi_w;
+        case.run.vertex_spacing = case.blade.depth / per_depth;
+        let got = Simulation::new(&case).unwrap().step().unwrap().force_norm;
+        let expected = 0.5 * common::coulomb_kp(phi, phi_w);
+        let rel = (got - expected) / expected;
+        assert!(
+            rel < tolerance,
+            "d/{per_depth}, φ={phi} φw={phi_w}: {got} vs {expected}"
+        );
+        assert!(rel > -1e-12, "no mechanism beats the exact minimum");
+    }
+}
+
+#[test]
+fn a_run_keeps_its_mass_and_follows_the_node_grid() {
+    let d = 20.0;
+    let (history, sim) = common::run(&table1_s(3.0, 250.0));
+    let m0 = sim.initial_mass();
+    for r in &history {
+        assert!(
+            (r.mass - m0).abs() < 1e-12 * m0,
+            "step {}: {}",
+            r.step,
+            r.mass
+        );
+    }
+    let mut nodes = common::refined("table1-s", 3.0, 250.0);
+    nodes.run.samples_per_band = 0.0;
+    let (reference, _) = common::run(&nodes);
+    // Both keep the band's state where it was; they differ in where a band
+    // may emerge (anywhere, or at nodes) and in the avalanches' vertices.
+    let (ours, theirs) = (
+        common::window_means(&history, d, 3),
+        common::window_means(&reference, d, 3),
+    );
+    for (w, (a, b)) in ours.iter().zip(&theirs).enumerate() {
+        assert!((a - b).abs() < 0.015 * b, "window {w}: {a} vs {b}");
+    }
+}
+
+#[test]
+fn the_vertices_do_not_multiply_with_the_resolution() {
+    // On the node grid the nodes double with each halving of v0; on the
+    // vertex ground a band's points snap to the vertices within half the
+    // spacing, so the ground keeps about as many.
+    let count = |per_depth: f64| {
+        let (_, sim) = common::run(&table1_s(2.0, per_depth));
+        sim.profile().len() as f64
+    };
+    let (coarse, fine) = (count(250.0), count(1000.0));
+    assert!(
+        fine < 1.5 * coarse,
+        "{coarse} vertices at d/250, {fine} at d/1000"
+    );
+}
+
+#[test]
+fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
+    let mut wide = table1_s(1.0, 250.0);
+    wide.blade.width = Some(40.0);
+    let e = Simulation::new(&wide).unwrap_err();
+    assert_eq!(e.key, "blade.width");
+    let mut raked = table1_s(1.0, 250.0);
+    raked.blade.rake = 60.0;
+    assert_eq!(Simulation::new(&raked).unwrap_err().key, "blade.rake");
+    let sim = Simulation::new(&table1_s(1.0, 250.0)).unwrap();
+    match Simulation::from_snapshot(&sim.snapshot()) {
+        Err(SnapshotError::Invalid { what, .. }) => assert_eq!(what, "run.vertex_spacing"),
+        other => panic!("restored a vertex-ground snapshot: {:?}", other.map(|_| ())),
+    }
+}
+
+#[test]
+fn the_landscape_holds_the_first_stage_and_the_step_refines_it() {
+    let mut sim = Simulation::new(&table1_s(2.0, 250.0)).unwrap();
+    for _ in 0..200 {
+        sim.step().unwrap();
+    }
+    let candidates = sim.landscape().unwrap();
+    let least = candidates
+        .iter()
+        .map(|c| c.force_norm)
+        .fold(f64::INFINITY, f64::min);
+    let chosen = sim.step().unwrap().force_norm;
+    assert!(candidates.len() > 100, "{} candidates", candidates.len());
+    // The second stage narrows the least sample's bracket; the emergence
+    // point may then snap to a vertex within half the spacing.
+    assert!(
+        (chosen / least - 1.0).abs() < 0.01,
+        "{chosen} vs samples' {least}"
+    );
+}
