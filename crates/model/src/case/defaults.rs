@@ -8,15 +8,17 @@
 use super::{Model, Soil};
 
 /// `run.increment` of the original model (one slip line) when a case does
-/// not give it: v0 = d / 250 on the reference grid, accurate by the
-/// ensemble rule (docs/model.md §12.1, (M40)) on all three original-model
-/// cases against the reference grid's ensemble at d/2000, with the
-/// exhaustive search as with the sampled one at every finer increment
-/// (worst window / tolerance 0.18 `cases/paper/original.toml`, 0.13
-/// `cases/tools/tine.toml`, 0.11 `cases/tools/dozer.toml`;
-/// `docs/studies/ensemble-accuracy/`, rows "reference d/250" and
-/// "defaults"). The finer increments the refined model needs cost these
-/// cases about 25 times as much for no accuracy the rule asks for.
+/// not give it: v0 = d / 250, the coarsest increment the study tries, is
+/// accurate by the ensemble rule (docs/model.md §12.1, (M40)) against the
+/// reference grid's ensemble at d/2000 on all three original-model cases,
+/// whose soil softens, on the reference grid (worst window / tolerance 0.18
+/// `cases/paper/original.toml`, 0.13 `cases/tools/tine.toml`, 0.11
+/// `cases/tools/dozer.toml`; `docs/studies/ensemble-accuracy/`, rows
+/// "defaults"), and on the original case with φr = φp on the coarse grid
+/// of `default_node_spacing` (0.085; docs/model.md §9). A slip line has no
+/// band width to sample: the search is exhaustive. The refined model's
+/// d/1250 cost these cases about 25 times as much for no accuracy the rule
+/// asks for.
 pub const ORIGINAL_INCREMENTS_PER_DEPTH: f64 = 250.0;
 
 /// `run.increment` of the refined model in soil that never softens, when a
