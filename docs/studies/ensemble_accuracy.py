@@ -4,8 +4,9 @@
 For each paper case and the tine and dozer of cases/tools/, runs an ensemble
 of 7 perturbed runs (`soilcut run --ensemble 7`) for each scheme below, and
 for the case as shipped (scheme "defaults": the increment, node spacing and
-search its class of case defaults to, docs/model.md §9), and judges it against the reference grid's ensemble at d/2000 with `soilcut
-accuracy` (the rule: every unit-window ensemble mean within clamp(2 standard
+search its class of case defaults to, docs/model.md §9), and judges it
+against the reference grid's ensemble at d/2000 with `soilcut accuracy`
+(the rule: every unit-window ensemble mean within clamp(2 standard
 errors of the difference, 1 %, 2.5 %), the whole-run mean within 1 %).
 
     python3 docs/studies/ensemble_accuracy.py --soilcut target/release/soilcut --out DIR
@@ -22,9 +23,9 @@ import csv
 import json
 import statistics
 import subprocess
-import tomllib
 from pathlib import Path
 
+import tomllib
 from time_to_accuracy import depth_of  # the same folder: the case file's blade depth
 
 # The paper's cases (cases/paper/) and the tools of finite width whose soil
