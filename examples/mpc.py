@@ -74,8 +74,9 @@ class Path:
 
 
 def tine() -> soilcut.Case:
-    """The tine at d/100 (1.5 mm increments; the default d/1250 is 12.5 times
-    slower and the picture the same to the eye), its tip at START."""
+    """The tine at d/100 (1.5 mm increments; the original model's default
+    d/250 takes 2.5 times as many, the picture the same to the eye), its tip
+    at START."""
     case = soilcut.Case.from_file(TINE)
     return case.update({"run.increment": D / 100, "blade.depth_path": [[0.0, START]]})
 

@@ -2,9 +2,11 @@
 """Time to accuracy in the ensemble sense (docs/performance.md, docs/model.md §12).
 
 For each paper case and the tine and dozer of cases/tools/, runs an ensemble
-of 7 perturbed runs (`soilcut run --ensemble 7`) for each scheme below and
-judges it against the reference grid's ensemble at d/2000 with `soilcut
-accuracy` (the rule: every unit-window ensemble mean within clamp(2 standard
+of 7 perturbed runs (`soilcut run --ensemble 7`) for each scheme below, and
+for the case as shipped (scheme "defaults": the increment, node spacing and
+search its class of case defaults to, docs/model.md §9), and judges it
+against the reference grid's ensemble at d/2000 with `soilcut accuracy`
+(the rule: every unit-window ensemble mean within clamp(2 standard
 errors of the difference, 1 %, 2.5 %), the whole-run mean within 1 %).
 
     python3 docs/studies/ensemble_accuracy.py --soilcut target/release/soilcut --out DIR
@@ -23,12 +25,14 @@ import statistics
 import subprocess
 from pathlib import Path
 
+import tomllib
 from time_to_accuracy import depth_of  # the same folder: the case file's blade depth
 
 # The paper's cases (cases/paper/) and the tools of finite width whose soil
 # softens (cases/tools/).
 CASES = ["original", "table1-s", "fig8b", "table1-hs", "fig5", "tools/tine", "tools/dozer"]
 REFERENCE = 2000
+DEFAULTS = "defaults"
 # (name, d/v0, d/h, run.samples_per_band): the reference grid (h = v0) and
 # the coarse grid, with the exhaustive search (0) or the sampled one.
 SCHEMES = [
@@ -43,6 +47,10 @@ SCHEMES = [
     ("sampled d/1500", 1500, 1500, 8),
     ("coarse d/1250, h d/25", 1250, 25, 8),
     ("coarse d/1500, h d/25", 1500, 25, 8),
+    # The case as shipped: its increment, node spacing and search are the
+    # defaults for its class of case (docs/model.md §9, issue 28), read
+    # back from the run's case.resolved.toml.
+    (DEFAULTS, None, None, None),
 ]
 
 
@@ -50,14 +58,24 @@ def ensemble(soilcut, case, depth, scheme, folder, jobs):
     """The ensemble folder, run unless it exists."""
     per_v0, per_h, samples = scheme
     if not (folder / "ensemble.csv").exists():
-        v0 = depth / per_v0
-        h = v0 * round((depth / per_h) / v0)
         cmd = [soilcut, "run", str(case), "--ensemble", "7", "--jobs", str(jobs)]
-        cmd += ["--set", f"run.increment={v0!r}", "--set", f"run.node_spacing={h!r}"]
-        cmd += ["--set", f"run.samples_per_band={samples}"]
+        if per_v0 is not None:
+            v0 = depth / per_v0
+            h = v0 * round((depth / per_h) / v0)
+            cmd += ["--set", f"run.increment={v0!r}", "--set", f"run.node_spacing={h!r}"]
+            cmd += ["--set", f"run.samples_per_band={samples}"]
         cmd += ["--no-plots", "--quiet", "--force", "--out", str(folder)]
         subprocess.run(cmd, check=True)
     return folder
+
+
+def resolved_grid(folder, depth):
+    """d/v0, d/h and run.samples_per_band of the ensemble's middle member,
+    as its case.resolved.toml gives them."""
+    run = tomllib.loads((folder / "k+0" / "case.resolved.toml").read_text())["run"]
+    per_v0 = round(depth / run["increment"])
+    per_h = round(depth / run["node_spacing"])
+    return per_v0, per_h, round(run["samples_per_band"])
 
 
 def median_wall_time(folder):
@@ -101,11 +119,17 @@ def main():
             + [ref_mean["mean"], ref_mean["std"], 0.0, "reference"]
         )
         for scheme, per_v0, per_h, samples in SCHEMES:
-            tag = f"v{per_v0}-h{per_h}" + (f"-s{samples}" if samples else "")
+            if per_v0 is None:
+                tag = DEFAULTS
+            else:
+                tag = f"v{per_v0}-h{per_h}" + (f"-s{samples}" if samples else "")
             if args.schemes and scheme not in args.schemes and not (runs / name / tag).exists():
                 continue
             folder = runs / name / tag
             folder = ensemble(args.soilcut, case, d, (per_v0, per_h, samples), folder, args.jobs)
+            if per_v0 is None:
+                per_v0, per_h, samples = resolved_grid(folder, d)
+                scheme = f"{DEFAULTS} (d/{per_v0}, h d/{per_h}, K {samples})"
             verdict = judge(args.soilcut, folder, ref)
             whole = json.loads((folder / "summary.json").read_text())["mean_force_norm"]
             rows.append(

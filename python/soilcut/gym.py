@@ -43,8 +43,9 @@ OBSERVATION_BOUND = 1000.0
 
 # The narrow tine of cases/tools/tine.toml (w = 50 mm, d = 150 mm, dry sand,
 # the original model; forces per tine in N, lengths in mm) at d/100 instead
-# of the default d/1250, so that an episode of 3 d runs in seconds: the
-# package does not ship the repository's cases, so the case is written out.
+# of the original model's default d/250, so that an episode of 3 d runs in
+# seconds: the package does not ship the repository's cases, so the case is
+# written out.
 _TINE = """\
 name = "tine-gym"
 title = "Narrow vertical tine, w = 50 mm, d = 150 mm, dry sand, at d/100"

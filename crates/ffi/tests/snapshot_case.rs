@@ -10,7 +10,8 @@ use std::ptr::{null, null_mut};
 
 const ORIGINAL: &str = include_str!("../../../cases/paper/original.toml");
 
-/// The original case, 12 increments long.
+/// The original case, cut to 0.48 of travel (6 increments at its default
+/// d/250).
 fn loaded() -> LoadedCase {
     parse_case(&ORIGINAL.replace("travel = 100.0", "travel = 0.48"), &[]).unwrap()
 }

@@ -9,9 +9,9 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
-    Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, UnitWeightRule,
-    DEFAULT_INCREMENTS_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade,
+    Case, CaseError, Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, UnitWeightRule,
+    DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -518,15 +518,17 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     let rake = *file.blade.rake.get_or_insert(90.0);
     let adhesion = *file.blade.adhesion.get_or_insert(0.0);
     let depth = file.blade.depth;
-    let increment = *file
-        .run
-        .increment
-        .get_or_insert(depth / DEFAULT_INCREMENTS_PER_DEPTH);
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
     };
     let soil = resolve_soil(&mut file.soil, model)?;
+    // The grid's defaults depend on the class of case: the model and
+    // whether its soil softens (soilcut_model::default_increment).
+    let increment = *file
+        .run
+        .increment
+        .get_or_insert_with(|| default_increment(model, &soil, depth));
     let choices_file = file.choices.get_or_insert_with(ChoicesFile::default);
     let choices = match model {
         Model::Original => choices_file.original()?,
@@ -712,44 +714,68 @@ mod tests {
         assert_eq!(c.soil.dilation.initial, -5.0);
     }
 
-    #[test]
-    fn increment_defaults_to_a_fraction_of_the_depth_and_nodes_by_the_soil() {
-        let text: String = ORIGINAL
-            .lines()
+    /// `text` without its `increment` line.
+    fn without_increment(text: &str) -> String {
+        text.lines()
             .filter(|l| !l.starts_with("increment"))
             .map(|l| format!("{l}\n"))
-            .collect();
-        let loaded = parse_case(&text, &[]).unwrap();
-        let d = loaded.case.blade.depth;
-        let v0 = d / soilcut_model::DEFAULT_INCREMENTS_PER_DEPTH;
-        assert_eq!(loaded.case.run.increment, v0);
-        assert_eq!(loaded.case.run.node_spacing, v0);
+            .collect()
+    }
+
+    /// The increment and node spacing `text` resolves to with `overrides`,
+    /// checked to be written into the resolved file.
+    fn resolved_grid(text: &str, overrides: &[&str]) -> (f64, f64, f64) {
+        let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
+        let loaded = parse_case(text, &overrides).unwrap();
+        let run = &loaded.case.run;
         let resolved = loaded.resolved_toml();
-        assert!(
-            resolved.contains(&format!("increment = {:?}", v0)),
-            "{resolved}"
-        );
-        assert!(
-            resolved.contains(&format!("node_spacing = {:?}", v0)),
-            "{resolved}"
-        );
-        // Where the soil does not soften, the nodes default to d / 25 in
-        // whole increments.
-        let hardening = parse_case(&text, &["soil.friction.residual=35".parse().unwrap()]).unwrap();
-        let h = hardening.case.run.node_spacing;
+        for line in [
+            format!("increment = {:?}", run.increment),
+            format!("node_spacing = {:?}", run.node_spacing),
+        ] {
+            assert!(resolved.contains(&line), "{line} not in {resolved}");
+        }
+        (loaded.case.blade.depth, run.increment, run.node_spacing)
+    }
+
+    #[test]
+    fn increment_and_nodes_default_by_the_class_of_case() {
+        let original = without_increment(ORIGINAL);
+        let refined = without_increment(REFINED);
+        // The original model: d/250, on the reference grid in softening
+        // soil, on nodes every d/25 (ten increments) where it never softens.
+        let (d, v0, h) = resolved_grid(&original, &[]);
+        assert_eq!(v0, d / 250.0);
+        assert_eq!(h, v0);
+        let (d, v0, h) = resolved_grid(&original, &["soil.friction.residual=35"]);
+        assert_eq!((v0, h), (d / 250.0, 10.0 * (d / 250.0)));
+        // The refined model in softening soil: d/1250, nodes every
+        // increment.
+        let (d, v0, h) = resolved_grid(&refined, &[]);
+        assert_eq!((v0, h), (d / 1250.0, d / 1250.0));
+        // The refined model in soil that never softens (Fig. 8b's kind):
+        // d/500 on the coarse grid, h = d/25 in whole increments.
+        let (d, v0, h) = resolved_grid(&refined, &["soil.friction.residual=35"]);
+        assert_eq!(v0, d / 500.0);
         let n = (h / v0).round();
         assert_eq!(h, n * v0);
         assert!(
             n * v0 <= d / 25.0 * (1.0 + 1e-12) && (n + 1.0) * v0 > d / 25.0,
             "{h}"
         );
-        assert!(hardening
-            .resolved_toml()
-            .contains(&format!("node_spacing = {h:?}")));
-        let coarse = parse_case(&text, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
+        // An increment given keeps the class's grid rule at that increment.
+        let (_, v0, h) = resolved_grid(&original, &["run.increment=0.05"]);
+        assert_eq!((v0, h), (0.05, 0.05));
+        let (_, v0, h) = resolved_grid(&refined, &["run.increment=0.02"]);
+        assert_eq!((v0, h), (0.02, 0.02));
+        let given = ["soil.friction.residual=35", "run.increment=0.2"];
+        let (_, v0, h) = resolved_grid(&refined, &given);
+        assert_eq!(v0, 0.2);
+        assert!((h - 0.8).abs() < 1e-12, "{h}");
+        let coarse = parse_case(&original, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
         assert_eq!(coarse.case.run.node_spacing, 0.08);
-        assert_eq!(coarse.case.run.increment, v0);
-        let e = key_error(&text, &["run.node_spacing=0.03"]);
+        assert_eq!(coarse.case.run.increment, 0.08);
+        let e = key_error(&original, &["run.node_spacing=0.03"]);
         assert_eq!(e.key, "run.node_spacing");
     }
 

@@ -12,8 +12,9 @@ mod validate;
 mod warnings;
 
 pub use defaults::{
-    default_node_spacing, COARSE_NODES_PER_DEPTH, DEFAULT_INCREMENTS_PER_DEPTH,
-    DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_increments_per_depth, default_node_spacing, COARSE_NODES_PER_DEPTH,
+    DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH,
+    SOFTENING_INCREMENTS_PER_DEPTH,
 };
 pub use error::CaseError;
 pub use validate::{MAGNITUDE, MAX_NODES, THINNEST_WIDTH};

@@ -14,7 +14,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner
 use soilcut_model::accuracy::{agreement, Spread};
 use soilcut_model::search::TIE_TOLERANCE;
 use soilcut_model::{
-    default_node_spacing, AngleLaw, Case, Model, Simulation, DEFAULT_INCREMENTS_PER_DEPTH,
+    default_increment, default_node_spacing, AngleLaw, Case, Model, Simulation,
     DEFAULT_SAMPLES_PER_BAND,
 };
 
@@ -247,11 +247,12 @@ fn at(case: &Case, increment: f64, node_spacing: f64, samples: f64) -> Case {
     c
 }
 
-/// At the default grid and search (`DEFAULT_INCREMENTS_PER_DEPTH`,
-/// `default_node_spacing`, `DEFAULT_SAMPLES_PER_BAND`) the ensembles of random cases it was not chosen
-/// on are accurate by the ensemble rule (M40) against the reference grid's
-/// ensemble at d/2000, over the first 1.5 depths of travel; where the soil
-/// does not soften, the default is the coarse grid.
+/// At the default grid and search for the class of case
+/// (`default_increment`, `default_node_spacing`, `DEFAULT_SAMPLES_PER_BAND`)
+/// the ensembles of random cases it was not chosen on are accurate by the
+/// ensemble rule (M40) against the reference grid's ensemble at d/2000,
+/// over the first 1.5 depths of travel; where the soil does not soften,
+/// the default is the coarse grid.
 #[test]
 fn the_default_grid_is_accurate_on_random_cases() {
     // Three cases as drawn, one whose soil does not soften; an ensemble
@@ -264,7 +265,7 @@ fn the_default_grid_is_accurate_on_random_cases() {
             }
             let d = case.blade.depth;
             case.run.travel = 1.5 * d;
-            let v0 = d / DEFAULT_INCREMENTS_PER_DEPTH;
+            let v0 = default_increment(case.model, &case.soil, d);
             let h = default_node_spacing(&case.soil, d, v0);
             assert_eq!(h > v0, !case.soil.softens());
             let (windows, whole) = ensemble(&at(&case, v0, h, DEFAULT_SAMPLES_PER_BAND), 1);

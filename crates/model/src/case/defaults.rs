@@ -1,18 +1,43 @@
 //! The defaults of `run.increment` and `run.node_spacing`: each a claim,
 //! chosen by the ensemble rule (docs/model.md §9, §12.1) and rechosen
 //! whenever the model's numbers change (`docs/studies/ensemble-accuracy/`).
+//! They depend on the class of case (issue 28): the model, and whether its
+//! soil ever softens. `default_increment` and `default_node_spacing` are
+//! the one place that decides them.
 
-use super::Soil;
+use super::{Model, Soil};
 
-/// `run.increment` when a case does not give it: v0 = d / 1250, with the
-/// sampled search of `DEFAULT_SAMPLES_PER_BAND` the coarsest of d/1000,
-/// d/1250 and d/1500 that is accurate by the ensemble rule (docs/model.md
-/// §12.1, (M40)) on every paper case and the tine and dozer of
-/// `cases/tools/`, against the reference grid's ensemble at d/2000 with the
-/// exhaustive search under the face friction that ships (`mobilised`;
-/// `docs/studies/ensemble-accuracy/`); the node spacing defaults to
-/// `default_node_spacing`.
-pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1250.0;
+/// `run.increment` of the original model (one slip line) when a case does
+/// not give it: v0 = d / 250, the coarsest increment the study tries, is
+/// accurate by the ensemble rule (docs/model.md §12.1, (M40)) against the
+/// reference grid's ensemble at d/2000 on all three original-model cases,
+/// whose soil softens, on the reference grid (worst window / tolerance 0.18
+/// `cases/paper/original.toml`, 0.13 `cases/tools/tine.toml`, 0.11
+/// `cases/tools/dozer.toml`; `docs/studies/ensemble-accuracy/`, rows
+/// "defaults"), and on the original case with φr = φp on the coarse grid
+/// of `default_node_spacing` (0.085; docs/model.md §9). A slip line has no
+/// band width to sample: the search is exhaustive. The refined model's
+/// d/1250 cost these cases about 25 times as much for no accuracy the rule
+/// asks for.
+pub const ORIGINAL_INCREMENTS_PER_DEPTH: f64 = 250.0;
+
+/// `run.increment` of the refined model in soil that never softens, when a
+/// case does not give it: v0 = d / 500, with the coarse grid of
+/// `COARSE_NODES_PER_DEPTH`, is accurate by the ensemble rule on Fig. 8b
+/// (`cases/paper/fig8b.toml`; worst window / tolerance 0.32, against 0.19
+/// at d/1250 on the same grid; `docs/studies/ensemble-accuracy/`, rows
+/// "coarse d/500, h d/25" and "defaults").
+pub const NON_SOFTENING_INCREMENTS_PER_DEPTH: f64 = 500.0;
+
+/// `run.increment` of the refined model in soil that softens, when a case
+/// does not give it: v0 = d / 1250, with the sampled search of
+/// `DEFAULT_SAMPLES_PER_BAND` the coarsest of d/1000, d/1250 and d/1500
+/// that is accurate by the ensemble rule on Fig. 5, Table 1 S and HS
+/// against the reference grid's ensemble at d/2000 with the exhaustive
+/// search under the face friction that ships (`mobilised`). Fig. 5 decides
+/// it (0.97 of its tolerance at d/1250, 1.81 at d/1000;
+/// `docs/studies/ensemble-accuracy/`).
+pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 
 /// `run.samples_per_band` when a case does not give it: the search's first
 /// stage evaluates 8 candidates per band width (`Case::search_stride`,
@@ -20,15 +45,38 @@ pub const DEFAULT_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 pub const DEFAULT_SAMPLES_PER_BAND: f64 = 8.0;
 
 /// Node spacings per blade depth of the default coarse grid, used where
-/// the soil never softens: h = d / 25 at v0 = d / 1250 is accurate by the
-/// ensemble rule on Fig. 8b and the original case
-/// (`docs/studies/ensemble-accuracy/`).
+/// the soil never softens: h = d / 25 at v0 = d / 500 is accurate by the
+/// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`), and at
+/// v0 = d / 250 on the original case with φr = φp (docs/model.md §9).
 pub const COARSE_NODES_PER_DEPTH: f64 = 25.0;
+
+/// Increments per blade depth of `run.increment`'s default for the class
+/// of case: `ORIGINAL_INCREMENTS_PER_DEPTH` in the original model,
+/// `SOFTENING_INCREMENTS_PER_DEPTH` in the refined model where the soil
+/// softens, `NON_SOFTENING_INCREMENTS_PER_DEPTH` where it never does.
+pub fn default_increments_per_depth(model: Model, soil: &Soil) -> f64 {
+    match model {
+        Model::Original => ORIGINAL_INCREMENTS_PER_DEPTH,
+        Model::Refined if soil.softens() => SOFTENING_INCREMENTS_PER_DEPTH,
+        Model::Refined => NON_SOFTENING_INCREMENTS_PER_DEPTH,
+    }
+}
+
+/// `run.increment` when a case does not give it: d over
+/// `default_increments_per_depth`.
+pub fn default_increment(model: Model, soil: &Soil, depth: f64) -> f64 {
+    depth / default_increments_per_depth(model, soil)
+}
 
 /// `run.node_spacing` when a case does not give it, for the increment v0:
 /// the reference grid (h = v0) where the soil softens, as only there does
-/// a coarse grid converge to a limit of its own (docs/model.md §9); else
-/// the whole number of increments nearest below d / 25 (at least one).
+/// a coarse grid converge to a limit of its own in the refined model
+/// (docs/model.md §9); else the whole number of increments nearest below
+/// d / 25 (at least one). It depends on the soil alone: in the original
+/// model in soil that never softens, d/25 at d/250 (ten increments a node)
+/// is as accurate by the ensemble rule as the reference grid (the original
+/// case with φr = φp: 0.085 of the tolerance on either grid against the
+/// reference grid's ensemble at d/2000) at a quarter of its time.
 pub fn default_node_spacing(soil: &Soil, depth: f64, increment: f64) -> f64 {
     if soil.softens() {
         return increment;
