@@ -1,17 +1,21 @@
 #!/usr/bin/env python3
 """soilcut beside the DEM cuts of validation/dem/ (stdlib only).
 
-Usage: python3 validation/compare.py OUT
+Usage: python3 validation/compare.py OUT [--campaign damp0|reference]
 
 OUT holds, for every cut NAME of CUTS, soilcut ensembles written by
 validation/run.sh: OUT/NAME (the element-test keys, the default face
 friction), OUT/NAME-sign (the same with `choices.face_friction = "sign"`,
 the rule before issue 20) and OUT/NAME-fitted (friction angles fitted to
-the vertical DEM cut). The DEM's numbers come from
-validation/dem/results/summary.json (validation/dem/summarise.py), mean ±
-standard deviation over seeds. Prints the tables docs/validation.md quotes
-and writes validation/bands.json, the band of soilcut / DEM ratios that
-crates/io/tests/validation.rs holds soilcut to.
+the vertical DEM cut). The DEM's numbers come from a campaign's summary
+(validation/dem/campaigns.py; validation/dem/summarise.py --campaign C):
+by default the yardstick's, `damp0` (the cuts without numerical damping at
+20 mm/s, results/summary_damp0.json), or `reference` (the damped cuts at
+40 mm/s, results/summary.json), mean ± standard deviation over seeds.
+Prints the tables docs/validation.md quotes and, for the yardstick only,
+writes validation/bands.json, the band of soilcut / DEM ratios that
+crates/io/tests/validation.rs holds soilcut to, and the ground pictures
+docs/img/validation_surface_NAME.svg.
 
 Definitions (the same for soilcut and the DEM):
 - force: the resultant on the blade's face per unit width over gamma0 d^2
@@ -36,7 +40,9 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-DEM = ROOT / "validation" / "dem" / "results"
+sys.path.insert(0, str(ROOT / "validation" / "dem"))
+from campaigns import CAMPAIGNS, RESULTS as DEM, YARDSTICK, campaign_option, compared_key, config_key  # noqa: E402
+
 CUTS = {"vertical": (20.0, 90.0), "raked30": (20.0, 30.0), "deep": (25.0, 90.0)}
 AT = (0.5, 1.0, 1.5, 2.0)
 
@@ -135,14 +141,15 @@ def svg(name, depth, dem_surf, model_surf):
     (ROOT / "docs" / "img" / f"validation_surface_{name}.svg").write_text("\n".join(out) + "\n")
 
 
-def surfaces(name, folder, depth):
+def surfaces(name, folder, depth, campaign):
     """The DEM seeds' grounds and soilcut's (frames.csv of k+0) at u = 1 and 2 d."""
     dem_surf = {}
-    for path in sorted((DEM / "cuts").glob(f"{name}_r10_s*_surface.csv")):
-        if "_short" in path.name or "_v" in path.name.split("_s")[-1]:
+    cuts = DEM / CAMPAIGNS[campaign]["cuts"]
+    for meta in (json.loads(p.read_text()) for p in sorted(cuts.glob(f"{name}_r10_s*.json"))):
+        if config_key(meta) != compared_key(name, campaign):
             continue
         by_u = {}
-        for r in rows(path):
+        for r in rows(cuts / (meta["run"] + "_surface.csv")):
             by_u.setdefault(round(r["u_over_d"], 2), []).append((r["x_mm"], r["y_mm"]))
         for u in (1.0, 2.0):
             if u in by_u:
@@ -163,9 +170,12 @@ def dem(summary, key):
     return (e["mean"], e["sd"]) if e else (math.nan, 0.0)
 
 
-def main(out):
+def main(out, campaign):
     out = Path(out)
-    summary = json.loads((DEM / "summary.json").read_text())
+    c = CAMPAIGNS[campaign]
+    summary = json.loads((DEM / f"summary{c['suffix']}.json").read_text())
+    print(f"DEM campaign: {campaign} (results/{c['cuts']}/, the cuts at {c['speed'] * 1e3:g} mm/s, damping {c['damping']:g})")
+    print()
     bands = {}
     print("Forces (P/(γ0 d²); soilcut: ensemble mean ± sd over 7 members; DEM: mean ± sd over seeds):")
     print()
@@ -174,7 +184,7 @@ def main(out):
     components, mechanism, first = [], [], []
     default = {}  # each cut's members under the element-test keys, for the speed table
     for name, (depth, rake) in CUTS.items():
-        d = summary.get(f"{name}_r10")
+        d = summary.get(compared_key(name, campaign))
         if d is None:
             continue
         for rule in ("", "-sign", "-fitted"):
@@ -184,7 +194,8 @@ def main(out):
             s = soilcut_numbers(folder, depth, rake)
             if rule == "":
                 default[name] = s
-                svg(name, depth, *surfaces(name, folder, depth))
+                if campaign == YARDSTICK:
+                    svg(name, depth, *surfaces(name, folder, depth, campaign))
             get = lambda key: spread([n.get(key) for n in s])
             cells = [fmt(*get("first")), fmt(*dem(d, "early"))]
             for k in range(2):
@@ -233,20 +244,25 @@ def main(out):
     print("| cut | u/d | β | emergence ahead of the tip | pile height | pile front slope |")
     print("|---|---|---|---|---|---|")
     print("\n".join(mechanism))
-    speeds = [(f"{summary[key]['speed_m_per_s'] * 1e3:g} mm/s", summary[key]) for key in
-              ("vertical_r10", "vertical_r10_v20", "vertical_r10_v10") if key in summary]
+    keys = [config_key({"name": "vertical", "ratio_d_over_D": 10.0, "slab_layers": 0, "run": "",
+                        "speed_m_per_s": v, "damping": c["damping"]}) for v in (0.04, 0.02, 0.01)]
+    speeds = [(f"{summary[key]['speed_m_per_s'] * 1e3:g} mm/s", summary[key]) for key in keys if key in summary]
     if speeds and "vertical" in default:
         s = default["vertical"]
         print()
-        print("The vertical cut's mean force over [0, 0.5) d against the DEM blade's speed (DEM: seeds as in the")
-        print("tables above; the slower blades cut the bed of seed 14), and soilcut's (element-test keys):")
+        print("The vertical cut's mean force over [0, 0.5) d against the DEM blade's speed (DEM: mean ± sd over")
+        print("the seeds run at each speed, n in summarise.py's table), and soilcut's (element-test keys):")
         print()
         print("| " + " | ".join(f"DEM at {label}" for label, _ in speeds) + " | soilcut |")
         print("|" + "---|" * (len(speeds) + 1))
         print("| " + " | ".join(fmt(*dem(e, "half_0")) for _, e in speeds)
               + f" | {fmt(*spread([n['half_0'] for n in s]))} |")
     print()
-    print("The band crates/io/tests/validation.rs holds soilcut to (soilcut / DEM over [0, 1) d):")
+    if campaign == YARDSTICK:
+        print("The band crates/io/tests/validation.rs holds soilcut to (soilcut / DEM over [0, 1) d):")
+    else:
+        print(f"The band against the {campaign} campaign (soilcut / DEM over [0, 1) d; not written:")
+        print(f"the test holds soilcut to the {YARDSTICK} campaign's):")
     print()
     print("| cut | band | ensemble ratio |")
     print("|---|---|---|")
@@ -254,8 +270,10 @@ def main(out):
         if key.endswith("_window_0"):
             mid = (b["low"] + b["high"]) / 2
             print(f"| {key[: -len('_window_0')]} | {b['low']:.2f}-{b['high']:.2f} | {mid:.2f} |")
-    (ROOT / "validation" / "bands.json").write_text(json.dumps(bands, indent=1, sort_keys=True) + "\n")
+    if campaign == YARDSTICK:
+        (ROOT / "validation" / "bands.json").write_text(json.dumps(bands, indent=1, sort_keys=True) + "\n")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    chosen = campaign_option(sys.argv, YARDSTICK)
+    main(sys.argv[1], chosen)

@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """The mechanism of a DEM cut from its grain field (numpy; not Yade).
 
-Usage: python3 validation/dem/mechanism.py RUN [RUN ...]     (RUN: cut.py's run name)
+Usage: python3 validation/dem/mechanism.py [--campaign reference|damp0] RUN [RUN ...]
+       (RUN: cut.py's run name)
 
-Reads fields/RUN.npz and results/cuts/RUN.json / RUN_surface.csv and writes
+Reads fields/RUN.npz (cut.py's grain field, not committed: a run's field is
+on the machine that ran it) and RUN.json / RUN_surface.csv in the campaign's
+folder (campaigns.py: results/cuts/, the default, or results/damp0/) and writes
 results/mechanism/RUN.csv, one row per 0.25 d of travel (the interval ending
 at u). Definitions, stated before any cut was compared with soilcut:
 
@@ -32,6 +35,8 @@ import sys
 from pathlib import Path
 
 import numpy as np
+
+from campaigns import CAMPAIGNS, bed_tag, campaign_option
 
 HERE = Path(__file__).resolve().parent
 MOVING = 0.5
@@ -123,15 +128,15 @@ def crossing(x, v, level):
     return None
 
 
-def analyse(run):
-    meta = json.loads((HERE / 'results' / 'cuts' / (run + '.json')).read_text())
-    tag = run.split('_', 1)[1].split('_v')[0]  # the bed's: the run name without the cut and speed
-    bed = json.loads((HERE / 'results' / 'beds' / ('bed_%s.json' % tag)).read_text())
+def analyse(run, campaign='reference'):
+    folder = HERE / 'results' / CAMPAIGNS[campaign]['cuts']
+    meta = json.loads((folder / (run + '.json')).read_text())
+    bed = json.loads((HERE / 'results' / 'beds' / ('bed_%s.json' % bed_tag(meta))).read_text())
     meta['surface_level_m'] = bed['surface_level_m']
     f = np.load(HERE / 'fields' / (run + '.npz'))
     u, pos = f['u'], f['pos']
     grounds = {}
-    with open(HERE / 'results' / 'cuts' / (run + '_surface.csv')) as fh:
+    with open(folder / (run + '_surface.csv')) as fh:
         for row in csv.DictReader(fh):
             grounds.setdefault(round(float(row['u_over_d']), 2), []).append(
                 (float(row['x_mm']), float(row['y_mm'])))
@@ -153,8 +158,13 @@ def analyse(run):
 
 
 def main():
+    campaign = campaign_option(sys.argv)
     for run in sys.argv[1:]:
-        for r in analyse(run):
+        if not (HERE / 'fields' / (run + '.npz')).exists():
+            print('%s: no grain field fields/%s.npz (not committed; rerun the cut to make it)'
+                  % (run, run), file=sys.stderr)
+            continue
+        for r in analyse(run, campaign):
             print(run, ' '.join('%.3g' % v for v in r))
 
 

@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """soilcut's soil parameters from the DEM element tests and the DEM's band (stdlib only).
 
-Usage: python3 validation/dem/parameters.py
+Usage: python3 validation/dem/parameters.py [--campaign reference|damp0] [--cases DIR]
 
-Reads results/element/biaxial_*.csv (raw records every 0.2 % of axial
-strain), results/repose.json and results/mechanism/*.csv, writes
-results/element/parameters.json and the case files cases/validation/*.toml,
-and prints the tables of docs/validation.md.
+Reads a campaign's element tests (campaigns.py: `reference`, the default,
+results/element/; `damp0`, the shear undamped, results/element_damp0/),
+biaxial_*.csv (raw records every 0.2 % of axial strain), results/repose.json
+and results/mechanism/*.csv, writes ELEMENT/parameters.json and, for the
+campaign soilcut is compared with (campaigns.YARDSTICK, `damp0` since
+issue 31), the case files cases/validation/*.toml (with --cases DIR: the
+campaign's case files in DIR instead, for any campaign), and prints the
+tables of docs/validation.md.
 The rule, fixed before any cut was compared with soilcut (plane strain,
 compression positive, gamma = eps_1 - eps_3, eps_v = eps_1 + eps_3):
 
@@ -38,6 +42,9 @@ compression positive, gamma = eps_1 - eps_3, eps_v = eps_1 + eps_3):
   interval of the vertical d/D = 10 monolayer cuts in the full bin at the
   default speed (the calibration cut), u >= 0.5 d,
   but at most 0.9 d (soilcut's band is thinner than the cut is deep);
+  (issue 31: the campaign's own cuts at its speed where their mechanism has
+  been measured; where it has not, the `reference` campaign's band, and the
+  printout says so;)
   u_p = gamma_p dB, u_r = gamma_r dB;
 - repose: the heap test (results/repose.json); the DEM pile's own front
   slope is reported beside it (docs/validation.md).
@@ -46,9 +53,11 @@ import csv
 import json
 import math
 import statistics
+import sys
 from pathlib import Path
 
-HERE = Path(__file__).resolve().parent / "results"
+from campaigns import CAMPAIGNS, RESULTS as HERE, YARDSTICK, campaign_option, compared_key, config_key
+
 D50 = 2.0  # mean grain diameter (mm) at d/D = 10
 WALL_FRICTION = 20.0  # blade-grain contact friction (degrees), set in grains.py
 CUTS = {"vertical": (20.0, 90.0), "raked30": (20.0, 30.0), "deep": (25.0, 90.0)}  # depth (mm), rake
@@ -127,11 +136,15 @@ def interpolate(tests, sigma, key):
     return tests[lo][key] * (1 - f) + tests[hi][key] * f
 
 
-def band_width():
-    """Mean DEM band thickness (mm) over the vertical d/D = 10 monolayer cuts at the default speed."""
+def band_width(campaign):
+    """Mean DEM band thickness (mm) over the vertical d/D = 10 monolayer cuts of a
+    campaign at its speed (the cuts whose mechanism has been measured), and the
+    number of intervals."""
     values = []
-    for path in sorted((HERE / "mechanism").glob("vertical_r10_s*.csv")):
-        if "_slab" in path.name or "_short" in path.name or "_v" in path.stem.split("_s")[-1]:
+    runs = [json.loads(p.read_text()) for p in sorted((HERE / CAMPAIGNS[campaign]["cuts"]).glob("*.json"))]
+    for meta in runs:
+        path = HERE / "mechanism" / (meta["run"] + ".csv")
+        if config_key(meta) != compared_key("vertical", campaign) or not path.exists():
             continue
         for row in csv.DictReader(path.open()):
             t = float(row["band_thickness_mm"])
@@ -142,17 +155,22 @@ def band_width():
     return sum(values) / len(values), len(values)
 
 
-def main():
+def main(campaign, cases):
+    element = HERE / CAMPAIGNS[campaign]["element"]
     tests = {}
-    for path in sorted(HERE.glob("element/biaxial_*.csv")):
+    for path in sorted(element.glob("biaxial_*.csv")):
         tests[float(path.stem.split("_")[1])] = test(path)
     bed = json.loads((HERE / "beds" / "bed_r10_s14.json").read_text())
     repose = json.loads((HERE / "repose.json").read_text())["repose_deg"]
-    band, n = band_width()
+    band, n = band_width(campaign)
+    band_from = campaign
+    if band is None and campaign != "reference":
+        band, n = band_width("reference")
+        band_from = "reference"
     print("| σ3 (Pa) | solid fraction | E (kPa) | ν | εv/ε1 first | φc | ψc | φp | ψp | γp | φr (noise) | ψr | γr | drift of φr |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s, t in sorted(tests.items()):
-        solid = json.loads((HERE / "element" / f"biaxial_{s:g}.json").read_text())["solid_fraction_before_shear"]
+        solid = json.loads((element / f"biaxial_{s:g}.json").read_text())["solid_fraction_before_shear"]
         print(f"| {s:g} | {solid:.3f} | {t['young_Pa'] / 1e3:.0f} | {t['poisson']:.2f} | {t['eps_v_first_over_eps_1']:.2f} | "
               f"{t['phi_c']:.1f} | {t['psi_c']:.1f} | {t['phi_p']:.1f} | {t['psi_p']:.1f} | {t['gamma_p']:.3f} | "
               f"{t['phi_r']:.1f} (± {t['noise_deg']:.1f}) | {t['psi_r']:.1f} | {t['gamma_r']:.3f} | {t['drift_deg']:+.1f} |")
@@ -170,8 +188,9 @@ def main():
         k["repose"] = repose
         keys[name] = k
     print()
-    print(f"band width dB = {band if band is None else round(band, 2)} mm (mean of {n} intervals), "
-          f"repose {repose:.1f}°, wall friction {WALL_FRICTION:g}° (set)")
+    print(f"band width dB = {band if band is None else round(band, 2)} mm (mean of {n} intervals"
+          + ("" if band_from == campaign else f" of the {band_from} campaign's cuts: no mechanism of the {campaign} cuts")
+          + f"), repose {repose:.1f}°, wall friction {WALL_FRICTION:g}° (set)")
     print("| cut | σ* (Pa) | φc | φp | φr | ψc | ψp | ψr | up (mm) | ur (mm) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for name, k in keys.items():
@@ -179,21 +198,30 @@ def main():
               f"{k['psi_c']:.1f} | {k['psi_p']:.1f} | {k['psi_r']:.1f} | "
               f"{k.get('peak_shear_mm', math.nan):.2f} | {k.get('residual_shear_mm', math.nan):.2f} |")
     out = {"tests": {f"{s:g}": t for s, t in sorted(tests.items())}, "keys": keys}
-    (HERE / "element" / "parameters.json").write_text(json.dumps(out, indent=1) + "\n")
-    if band is not None:
+    if band_from != campaign:
+        out["band_from"] = band_from
+    (element / "parameters.json").write_text(json.dumps(out, indent=1) + "\n")
+    if cases is None and campaign == YARDSTICK:
+        cases = CASES
+    if band is not None and cases is not None:
+        cases.mkdir(parents=True, exist_ok=True)
         for name, k in keys.items():
-            write_case(name, k, bed)
+            write_case(cases, name, k, bed, campaign, band_from)
 
 
-def write_case(name, k, bed):
+def write_case(cases, name, k, bed, campaign, band_from):
     """cases/validation/<name>.toml from the rule's keys: nothing else is set."""
     depth, rake = CUTS[name]
     wall = f"\n[bin]\nlength = {X_END:g}  # the DEM bin's end wall ahead of the tip's start\n" if rake == 90.0 else ""
+    element = CAMPAIGNS[campaign]["element"]
     text = f"""# The DEM soil-bin cut {name} of validation/dem/ (docs/validation.md), with
-# soilcut's keys from the DEM's element tests and its measured band only,
-# written by python3 validation/dem/parameters.py (the rule is in its
-# header): never tuned to the cut. Lengths in mm; unit weight 1 (forces in
-# γ0·mm²; the DEM's γ0 is {bed['unit_weight_N_per_m3']:.0f} N/m³ per unit width of its slab).
+# soilcut's keys from the DEM's element tests (the {campaign} campaign,
+# results/{element}/) and its measured band (the {band_from} campaign's
+# cuts) only, written by
+# python3 validation/dem/parameters.py --campaign {campaign}
+# (the rule is in its header): never tuned to the cut. Lengths in mm; unit
+# weight 1 (forces in γ0·mm²; the DEM's γ0 is {bed['unit_weight_N_per_m3']:.0f} N/m³ per unit width
+# of its slab).
 name = "validation-{name}"
 title = "DEM validation: {name}, d = {depth:g} mm, α = {rake:g}°, to u = {TRAVEL:g} d"
 model = "refined"
@@ -217,8 +245,9 @@ band_width = {k['band_width_mm']:.2f}  # the DEM's band (mechanism.py), at most 
 [run]
 travel = {TRAVEL * depth:g}
 """
-    (CASES / f"{name}.toml").write_text(text)
+    (cases / f"{name}.toml").write_text(text)
 
 
 if __name__ == "__main__":
-    main()
+    chosen = campaign_option(sys.argv)
+    main(chosen, Path(sys.argv[sys.argv.index("--cases") + 1]) if "--cases" in sys.argv else None)

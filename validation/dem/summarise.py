@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
 """Every DEM cut's numbers, with their spread over seeds (stdlib only).
 
-Usage: python3 validation/dem/summarise.py
+Usage: python3 validation/dem/summarise.py [--campaign reference|damp0]
 
-Reads results/cuts/*.json, *_forces.csv and results/mechanism/*.csv (run
-mechanism.py first) and writes results/summary.json: for every
-configuration (cut, d/D, slab, speed) the seeds run and, over them, the
+Reads a campaign's cuts (campaigns.py: `reference`, the default,
+results/cuts/; `damp0`, the undamped cuts of issue 31, results/damp0/),
+RUN.json and RUN_forces.csv, and results/mechanism/RUN.csv where there is
+one (run mechanism.py first), and writes results/summary.json
+(results/summary_damp0.json): for every configuration (cut, d/D, slab,
+speed, numerical settings; campaigns.config_key) the seeds run and, over them, the
 mean, sample standard deviation and count of
 
 - `window_k`: the mean of force_norm (the face's resultant over gamma d^2,
@@ -25,8 +28,9 @@ mean, sample standard deviation and count of
   kg/m^3 the grains' density and p = gamma0 d / 2 the mean vertical stress
   along the band;
 - `wall_time_s` of each run.
-It also writes results/cut_NAME_mean.csv for the d/D = 10 monolayer cuts at
-the default speed: the seeds' mean force per record (u in mm, force per unit
+It also writes results/cut_NAME_mean.csv (cut_NAME_damp0_mean.csv) for the
+configuration the campaign compares with soilcut (d/D = 10 monolayer cuts
+at the campaign's speed): the seeds' mean force per record (u in mm, force per unit
 width in units of gamma0 mm^2 with gamma0 = 1: what `soilcut fit` and
 `soilcut compare --measured` read). It prints the tables docs/validation.md
 quotes.
@@ -35,9 +39,10 @@ import csv
 import json
 import math
 import statistics
-from pathlib import Path
+import sys
 
-HERE = Path(__file__).resolve().parent / "results"
+from campaigns import CAMPAIGNS, RESULTS as HERE, campaign_option, compared_key, config_key
+
 MECH = ("beta_deg", "emergence_mm", "band_thickness_mm", "pile_height_mm", "pile_ahead_mm",
         "pile_slope_deg", "block_ratio")
 
@@ -88,13 +93,13 @@ def run_numbers(meta):
     return out
 
 
-def write_mean(name, metas):
+def write_mean(name, metas, campaign):
     """The seeds' mean force curve, record by record (the records are 0.02 d apart in all)."""
     # the records within each cut's nominal travel (the last one may pass it by a step)
     curves = [[r for r in rows_of(m) if r["u_mm"] <= m["travel_mm"]] for m in metas]
     n = min(len(c) for c in curves)
     d = metas[0]["depth_mm"]
-    with open(HERE / f"cut_{name}_mean.csv", "w") as f:
+    with open(HERE / f"cut_{name}{CAMPAIGNS[campaign]['suffix']}_mean.csv", "w") as f:
         f.write("u,force\n")
         for i in range(n):
             u = statistics.fmean(c[i]["u_mm"] for c in curves)
@@ -104,21 +109,19 @@ def write_mean(name, metas):
 
 def rows_of(meta):
     return [{k: float(v) for k, v in r.items()} for r in
-            csv.DictReader((HERE / "cuts" / (meta["run"] + "_forces.csv")).open())]
+            csv.DictReader((meta["folder"] / (meta["run"] + "_forces.csv")).open())]
 
 
-def main():
+def main(campaign):
     configs = {}
-    for path in sorted((HERE / "cuts").glob("*.json")):
+    folder = HERE / CAMPAIGNS[campaign]["cuts"]
+    for path in sorted(folder.glob("*.json")):
         meta = json.loads(path.read_text())
-        key = "%s_r%g%s%s%s" % (meta["name"], meta["ratio_d_over_D"],
-                                "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
-                                "_short" if "_short" in meta["run"] else "",
-                                "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3))
-        configs.setdefault(key, []).append((meta, run_numbers(meta)))
-    for key, runs in configs.items():
-        if key.endswith("_r10"):
-            write_mean(key[: -len("_r10")], [m for m, _ in runs])
+        meta["folder"] = folder
+        configs.setdefault(config_key(meta), []).append((meta, run_numbers(meta)))
+    for name in ("vertical", "raked30", "deep"):
+        if compared_key(name, campaign) in configs:
+            write_mean(name, [m for m, _ in configs[compared_key(name, campaign)]], campaign)
     summary = {}
     for key, runs in sorted(configs.items()):
         numbers = sorted({k for _, n in runs for k in n})
@@ -128,7 +131,7 @@ def main():
         for k in numbers:
             entry[k] = spread([n.get(k) for _, n in runs])
         summary[key] = entry
-    (HERE / "summary.json").write_text(json.dumps(summary, indent=1, sort_keys=True) + "\n")
+    (HERE / f"summary{CAMPAIGNS[campaign]['suffix']}.json").write_text(json.dumps(summary, indent=1, sort_keys=True) + "\n")
     fmt = lambda s: "–" if s is None else (f"{s['mean']:.2f} ± {s['sd']:.2f}" if s["n"] > 1 else f"{s['mean']:.2f}")
     print("| configuration | seeds | early | [0,0.5) d | [0,1) d | [1,2) d | [2,3) d | h [0,1) | v [0,1) | h [1,2) | v [1,2) | wall share [0,1) | [1,2) | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -144,8 +147,8 @@ def main():
     for key, e in summary.items():
         inertial = e.get("inertial_number")
         print(f"| {key} | " + " | ".join(fmt(e.get(f"mean_{m}")) for m in MECH[:4] + MECH[5:])
-              + f" | {inertial['mean']:.1e} |" if inertial else " | – |")
+              + (f" | {inertial['mean']:.1e} |" if inertial else " | – |"))
 
 
 if __name__ == "__main__":
-    main()
+    main(campaign_option(sys.argv))
