@@ -396,11 +396,8 @@ impl VertexSearch {
     }
 }
 
-/// The piece holding x, walking back from piece k (x ≤ x_{k+1}): the
-/// footprint's rear is a few pieces behind its front.
-fn piece_before(ground: &Ground, mut k: usize, x: f64) -> usize {
-    while k > 0 && ground.x[k] > x {
-        k -= 1;
-    }
-    k
+/// The piece holding x among pieces 0..=k (x ≤ x_{k+1}), by bisection:
+/// a footprint's rear may lie dozens of short pieces behind its front.
+fn piece_before(ground: &Ground, k: usize, x: f64) -> usize {
+    ground.x[1..=k].partition_point(|&v| v <= x)
 }
