@@ -28,7 +28,7 @@ use super::Ground;
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
 use crate::mechanism::Loads;
-use crate::search::bounds::Lower;
+use crate::search::bounds::{may_win, Lower};
 
 /// Local minima of the samples within this fraction of the least are
 /// narrowed (the sampled search's slack, (M47)).
@@ -268,6 +268,10 @@ impl VertexSearch {
         }
         let angles = self.footprint_angles(ground, scan, k, x, y, t);
         let angles = scan.laws.band_angles(angles);
+        // Eq. (1) at the band's φ rounded down on the table's grid.
+        if !may_win((scan.laws, &scan.face), (weight, t), &angles, bar) {
+            return None;
+        }
         self.evaluations += 1;
         let factor = scan.laws.factor(angles, t, scan.face);
         let force = scan.loads.force(&factor, weight, run, t)?;
