@@ -23,6 +23,7 @@
 //! (`cutting`); else the node grid of `surface`.
 
 use crate::surface::compensated_sum;
+use serde::{Deserialize, Serialize};
 
 mod avalanche;
 pub mod cutting;
@@ -31,7 +32,7 @@ pub(crate) mod search;
 
 /// The free surface as vertices that move with the soil, with the state
 /// of the soil held per piece between them.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Ground {
     /// x_k: abscissae of the vertices, strictly increasing; x_0 is the
     /// blade face (length).
@@ -84,6 +85,47 @@ impl Ground {
         self.unit_weight.push(self.ground_unit_weight);
         let k = self.pieces() - 1;
         self.appended_mass += self.ground_unit_weight * self.piece_area(k);
+    }
+
+    /// What is wrong with a ground that no run makes (for a restored
+    /// snapshot): columns of unequal length, x not increasing, a number not
+    /// finite, ut < 0 or γ ≤ 0; `None` if nothing.
+    pub fn defect(&self) -> Option<String> {
+        let pieces = self.x.len().saturating_sub(1);
+        let lengths = [
+            self.y.len(),
+            self.accumulated_shear.len() + 1,
+            self.unit_weight.len() + 1,
+        ];
+        if pieces == 0 || lengths.iter().any(|&n| n != self.x.len()) {
+            return Some(format!(
+                "{} vertices and columns of lengths {lengths:?}",
+                self.x.len()
+            ));
+        }
+        let numbers = [
+            self.floor,
+            self.trench_mass,
+            self.ground_unit_weight,
+            self.appended_mass,
+        ];
+        let columns = [&self.x, &self.y, &self.accumulated_shear, &self.unit_weight];
+        if numbers
+            .iter()
+            .chain(columns.into_iter().flatten())
+            .any(|v| !v.is_finite())
+        {
+            return Some("a number that is not finite".into());
+        }
+        if self.x.windows(2).any(|w| w[1] <= w[0]) {
+            return Some("vertices whose x does not increase".into());
+        }
+        if self.accumulated_shear.iter().any(|&u| u < 0.0)
+            || self.unit_weight.iter().any(|&g| g <= 0.0)
+        {
+            return Some("a piece with ut < 0 or γ <= 0".into());
+        }
+        None
     }
 
     /// Number of pieces (one less than the vertices).
@@ -220,6 +262,20 @@ mod tests {
         assert!((g.mass() - m0).abs() < 1e-13 * m0);
         assert!((g.area() - a0).abs() < 1e-13 * a0);
         assert_eq!(g.split_at(x), k, "an existing vertex is not split");
+    }
+
+    #[test]
+    fn a_ground_no_run_makes_is_a_defect() {
+        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        assert_eq!(g.defect(), None);
+        g.x.swap(3, 4);
+        assert!(g.defect().unwrap().contains("increase"));
+        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        g.unit_weight.pop();
+        assert!(g.defect().unwrap().contains("lengths"));
+        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        g.y[2] = f64::NAN;
+        assert!(g.defect().unwrap().contains("finite"));
     }
 
     #[test]

@@ -95,11 +95,33 @@ fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
     let mut raked = table1_s(1.0, 250.0);
     raked.blade.rake = 60.0;
     assert_eq!(Simulation::new(&raked).unwrap_err().key, "blade.rake");
-    let sim = Simulation::new(&table1_s(1.0, 250.0)).unwrap();
-    match Simulation::from_snapshot(&sim.snapshot()) {
-        Err(SnapshotError::Invalid { what, .. }) => assert_eq!(what, "run.vertex_spacing"),
-        other => panic!("restored a vertex-ground snapshot: {:?}", other.map(|_| ())),
+}
+
+#[test]
+fn a_snapshot_on_the_vertex_ground_continues_bit_for_bit() {
+    let mut sim = Simulation::new(&table1_s(2.0, 250.0)).unwrap();
+    for _ in 0..300 {
+        sim.step().unwrap();
     }
+    let bytes = sim.snapshot();
+    let mut restored = Simulation::from_snapshot(&bytes).unwrap();
+    assert_eq!(restored.profile(), sim.profile());
+    for _ in 0..100 {
+        assert_eq!(restored.step().unwrap(), sim.step().unwrap());
+    }
+    assert_eq!(restored.evaluations(), sim.evaluations());
+    // A case on the node grid with the vertex ground's state is refused.
+    let mut other = table1_s(2.0, 250.0);
+    other.run.vertex_spacing = 0.0;
+    let nodes = Simulation::new(&other).unwrap().snapshot();
+    assert!(Simulation::from_snapshot(&nodes).is_ok());
+    let corrupt = bytes.len() / 2;
+    let mut flipped = bytes.clone();
+    flipped[corrupt] ^= 0x10;
+    assert_eq!(
+        Simulation::from_snapshot(&flipped).err(),
+        Some(SnapshotError::Corrupt)
+    );
 }
 
 #[test]

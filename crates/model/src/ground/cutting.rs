@@ -54,6 +54,21 @@ impl Cutting {
         })
     }
 
+    /// The cut of `case` resumed on `ground` after `done` increments and
+    /// `evaluations` Eq. (1) evaluations (a restored snapshot; the search
+    /// keeps no state from one increment to the next).
+    pub(crate) fn resumed(case: &Case, ground: Ground, done: usize, evaluations: u64) -> Self {
+        let mut search = VertexSearch::default();
+        search.evaluations = evaluations;
+        Cutting {
+            laws: Laws::new(case),
+            ground,
+            search,
+            done,
+            case: case.clone(),
+        }
+    }
+
     /// The ground now.
     pub fn ground(&self) -> &Ground {
         &self.ground

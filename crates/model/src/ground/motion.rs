@@ -71,7 +71,6 @@ impl Ground {
     /// changed) where the face lies in the band or the band's image folds
     /// over, which a band narrower than the vertices resolve does.
     pub fn apply(&mut self, cut: &Cut) -> Option<Moved> {
-        let mass_before = self.mass();
         let emergence = self.split_at(cut.emergence);
         let line = Line::through(self, cut.depth, emergence);
         let banded = cut.thickness > 0.0;
@@ -89,7 +88,11 @@ impl Ground {
             0.0
         };
         let before = Snapshot::of(self, (emergence + 1).min(self.pieces()));
-        let target_area = self.area() - cut.advance * (-self.floor - cut.depth) + dilation_area;
+        // Nothing beyond the second vertex after the emergence point moves:
+        // the sums that keep area and mass exact stop there.
+        let end = self.x[(emergence + 2).min(self.pieces())];
+        let (mass_before, area_before) = self.region(end);
+        let target_area = area_before - cut.advance * (-self.floor - cut.depth) + dilation_area;
         let trench_mass = self.unit_weight[0] * cut.advance * (-self.floor - cut.depth);
         let band = if banded {
             self.shear_band(&line, cut, corner, emergence)?
@@ -100,7 +103,7 @@ impl Ground {
         let first = self.x[1] - self.x[0];
         self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
         if banded {
-            self.lift_band(corner..band.end, target_area - self.area());
+            self.lift_band(corner..band.end, target_area - self.region(end).1);
         }
         self.mix_block_pieces(&before, &line, band.start);
         if banded {
@@ -110,7 +113,7 @@ impl Ground {
             *ut += cut.slip;
         }
         self.trench_mass += trench_mass;
-        self.weigh_band(band.clone(), mass_before);
+        self.weigh_band(band.clone(), mass_before - trench_mass, end);
         let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
         let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
         Some(Moved {
@@ -214,6 +217,14 @@ impl Ground {
         kept..kept + 1
     }
 
+    /// Weight and area of the pieces from the face to the vertex at `end`.
+    fn region(&self, end: f64) -> (f64, f64) {
+        let pieces = self.x.partition_point(|&x| x < end);
+        let mass = (0..pieces).map(|k| self.unit_weight[k] * self.piece_area(k));
+        let area = (0..pieces).map(|k| self.piece_area(k));
+        (compensated_sum(mass), compensated_sum(area))
+    }
+
     /// The band's state stays where it was (M48; docs/model.md §3.6, as on the
     /// node grid, whose band nodes keep theirs): each band piece, moved by
     /// the band's shear, takes the mean ut of the ground that lay under its
@@ -268,12 +279,14 @@ impl Ground {
     }
 
     /// Gives the band's pieces the one unit weight that makes the weight of
-    /// soil equal `mass_before`: γ_band = (M_before − M_outside) / A_band (M27).
-    fn weigh_band(&mut self, band: std::ops::Range<usize>, mass_before: f64) {
-        let outside = (0..self.pieces())
+    /// the soil from the face to `end` equal `mass_before` (what it was less
+    /// the trench's share): γ_band = (M_before − M_outside) / A_band (M27).
+    fn weigh_band(&mut self, band: std::ops::Range<usize>, mass_before: f64, end: f64) {
+        let pieces = self.x.partition_point(|&x| x < end);
+        let outside = (0..pieces)
             .filter(|k| !band.contains(k))
             .map(|k| self.unit_weight[k] * self.piece_area(k));
-        let outside = compensated_sum(outside.chain([self.trench_mass, -self.appended_mass]));
+        let outside = compensated_sum(outside);
         let area: f64 = band.clone().map(|k| self.piece_area(k)).sum();
         let gamma = (mass_before - outside) / area;
         for g in &mut self.unit_weight[band] {
@@ -343,8 +356,13 @@ impl Snapshot {
     /// beyond its end).
     fn mean_shear(&self, xa: f64, xb: f64) -> f64 {
         let last = self.shear.len() - 1;
+        // The old pieces before the one holding xa lie before it.
+        let first = self.x[1..=last].partition_point(|&x| x <= xa);
         let mut sum = 0.0;
-        for k in 0..=last {
+        for k in first..=last {
+            if self.x[k] >= xb {
+                break;
+            }
             let hi = if k == last { xb } else { self.x[k + 1].min(xb) };
             let lo = self.x[k].max(xa);
             if hi > lo {

@@ -28,7 +28,7 @@ use super::Ground;
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
 use crate::mechanism::Loads;
-use crate::search::bounds::Lower;
+use crate::search::bounds::{may_win, Lower};
 
 /// Local minima of the samples within this fraction of the least are
 /// narrowed (the sampled search's slack, (M47)).
@@ -268,6 +268,10 @@ impl VertexSearch {
         }
         let angles = self.footprint_angles(ground, scan, k, x, y, t);
         let angles = scan.laws.band_angles(angles);
+        // Eq. (1) at the band's φ rounded down on the table's grid.
+        if !may_win((scan.laws, &scan.face), (weight, t), &angles, bar) {
+            return None;
+        }
         self.evaluations += 1;
         let factor = scan.laws.factor(angles, t, scan.face);
         let force = scan.loads.force(&factor, weight, run, t)?;
@@ -396,11 +400,8 @@ impl VertexSearch {
     }
 }
 
-/// The piece holding x, walking back from piece k (x ≤ x_{k+1}): the
-/// footprint's rear is a few pieces behind its front.
-fn piece_before(ground: &Ground, mut k: usize, x: f64) -> usize {
-    while k > 0 && ground.x[k] > x {
-        k -= 1;
-    }
-    k
+/// The piece holding x among pieces 0..=k (x ≤ x_{k+1}), by bisection:
+/// a footprint's rear may lie dozens of short pieces behind its front.
+fn piece_before(ground: &Ground, k: usize, x: f64) -> usize {
+    ground.x[1..=k].partition_point(|&v| v <= x)
 }

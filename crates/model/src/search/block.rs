@@ -149,7 +149,8 @@ impl Block {
                 input
                     .laws
                     .band_angles(self.prefix.band_angles(surface, &band, input.laws.fresh));
-            let may_win = may_win(input, &line, &angles, best.bar);
+            let lower = (line.floor, line.slope.tan_beta);
+            let may_win = may_win((input.laws, &input.face), lower, &angles, best.bar);
             self.kept[kept] = (line, angles);
             kept += usize::from(angles.fresh | !best.prune | may_win);
         }

@@ -7,7 +7,6 @@
 //! down on a grid (`FactorTable`). Both tests are division-free.
 
 use super::input::SearchInput;
-use super::line::Line;
 use crate::case::FaceFrictionRule;
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
@@ -102,19 +101,23 @@ impl LeastFriction {
     }
 }
 
-/// The bound after the footprint: whether the line, with its band's angles
-/// known, may beat `bar`. Which face friction is the lesser depends on the
+/// The bound after the footprint: whether a line of weight W (as the
+/// bounds take it) at tan β, with its band's angles known, may beat `bar`. Which face friction is the lesser depends on the
 /// rake (see `Lower`). With the band's dilation known, a block that rises
 /// fully (`Face::mobilisation`, taken only where it decides) has the rising
 /// one in Eq. (1); one that does not, −φw (M9) or anything up to +φw (M41).
-pub(super) fn may_win(input: &SearchInput, line: &Line, angles: &BandAngles, bar: f64) -> bool {
-    let t = line.slope.tan_beta;
-    let (rising, sinking) = input.laws.table.below(angles.friction);
-    rising.can_beat(line.floor, t, bar)
-        || (t <= input.face.sinking_below
-            && match input.face.rule {
-                FaceFrictionRule::Sign => sinking.can_beat(line.floor, t, bar),
-                FaceFrictionRule::Mobilised => sinking.can_beat_between(rising, line.floor, t, bar),
+pub(crate) fn may_win(
+    (laws, face): (&Laws, &Face),
+    (weight, t): (f64, f64),
+    angles: &BandAngles,
+    bar: f64,
+) -> bool {
+    let (rising, sinking) = laws.table.below(angles.friction);
+    rising.can_beat(weight, t, bar)
+        || (t <= face.sinking_below
+            && match face.rule {
+                FaceFrictionRule::Sign => sinking.can_beat(weight, t, bar),
+                FaceFrictionRule::Mobilised => sinking.can_beat_between(rising, weight, t, bar),
             }
-            && input.face.mobilisation(t, angles.dilation) < 1.0)
+            && face.mobilisation(t, angles.dilation) < 1.0)
 }

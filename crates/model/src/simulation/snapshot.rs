@@ -25,6 +25,8 @@ pub use error::SnapshotError;
 use super::{fresh_angles, Simulation};
 use crate::case::Case;
 use crate::grid::FaceNode;
+use crate::ground::cutting::Cutting;
+use crate::ground::Ground;
 use crate::laws::Laws;
 use crate::search::Search;
 use crate::spill::SideHeaps;
@@ -74,6 +76,9 @@ struct Body<'a> {
     side_area: Cow<'a, [f64]>,
     side_height: Cow<'a, [f64]>,
     side_unit_weight: Cow<'a, [f64]>,
+    /// The vertex ground and its evaluations, where the case has one
+    /// (docs/model.md §19).
+    vertices: Option<(Cow<'a, Ground>, u64)>,
 }
 
 impl Simulation {
@@ -112,12 +117,6 @@ impl Simulation {
     pub fn from_snapshot_with_note(bytes: &[u8]) -> Result<(Simulation, Vec<u8>), SnapshotError> {
         let body = decode(checked_body(bytes)?)?;
         body.case.validate().map_err(SnapshotError::Case)?;
-        if body.case.run.vertex_spacing > 0.0 {
-            return Err(SnapshotError::Invalid {
-                what: "run.vertex_spacing",
-                message: "a simulation on the vertex ground cannot be restored from a snapshot yet (run.vertex_spacing > 0, issue 28)".into(),
-            });
-        }
         let note = body.note.to_vec();
         Ok((Self::restore(body)?, note))
     }
@@ -145,6 +144,10 @@ impl Simulation {
             side_area: Cow::Borrowed(&side.area),
             side_height: Cow::Borrowed(&side.height),
             side_unit_weight: Cow::Borrowed(&side.unit_weight),
+            vertices: self
+                .vertices
+                .as_ref()
+                .map(|c| (Cow::Borrowed(c.ground()), c.evaluations())),
         }
     }
 
@@ -200,11 +203,45 @@ impl Simulation {
         s.unit_weight = unit_weight;
         s.friction = friction;
         s.dilation = dilation;
+        let vertices = resumed_vertices(&case, b.vertices, b.done)?;
         let mut sim = Simulation::assemble(case, laws, s, initial_mass);
         sim.search = Search::resumed(b.seed, b.evaluations);
         sim.side = side;
         sim.done = b.done;
+        sim.vertices = vertices;
         Ok(sim)
+    }
+}
+
+/// The vertex ground of a restored snapshot: there exactly where its case
+/// asks for one, and one that runs make (`Ground::defect`).
+fn resumed_vertices(
+    case: &Case,
+    vertices: Option<(Cow<Ground>, u64)>,
+    done: usize,
+) -> Result<Option<Box<Cutting>>, SnapshotError> {
+    let wanted = case.run.vertex_spacing > 0.0;
+    match vertices {
+        None if !wanted => Ok(None),
+        Some((ground, evaluations)) if wanted => {
+            let ground = ground.into_owned();
+            if let Some(defect) = ground.defect() {
+                return Err(SnapshotError::invalid("vertex ground", defect));
+            }
+            Ok(Some(Box::new(Cutting::resumed(
+                case,
+                ground,
+                done,
+                evaluations,
+            ))))
+        }
+        _ => Err(SnapshotError::invalid(
+            "vertex ground",
+            format!(
+                "present where run.vertex_spacing = {} says otherwise",
+                case.run.vertex_spacing
+            ),
+        )),
     }
 }
 
