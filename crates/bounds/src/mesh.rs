@@ -62,12 +62,22 @@ pub fn twice_area(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
 }
 
-impl Mesh {
-    /// The mesh of a (validated) problem with N cells along the face near
-    /// the tip, N ≥ 1.
-    pub fn new(p: &Problem, n: usize) -> Mesh {
+/// The mesh's lines: the x of every column of nodes (at the tip's level),
+/// the y of the levels below the tip, and the levels above it as fractions
+/// of the way from the tip to the column's top.
+struct Lines {
+    columns: Vec<f64>,
+    /// The column through the tip: the face's, vertical below, parallel to
+    /// the face above (from it on).
+    tip_column: usize,
+    below: Vec<f64>,
+    above: Vec<f64>,
+}
+
+impl Lines {
+    fn of(p: &Problem, n: usize) -> Lines {
         let h = p.face_height();
-        let (xa, ya, cot) = (p.face.tip_x, p.face.tip_y, p.cot_rake());
+        let (xa, ya) = (p.face.tip_x, p.face.tip_y);
         let n = n.max(1) as f64;
         let spacing = |len: f64| graded(len, 0.5 * h / n, 0.5 / n);
         let back = if p.domain.depth > 0.0 {
@@ -78,34 +88,55 @@ impl Mesh {
         let mut columns: Vec<f64> = spacing(back * h).iter().rev().map(|r| xa - r).collect();
         let tip_column = columns.len() - 1;
         columns.extend(spacing(p.domain.reach * h).iter().skip(1).map(|r| xa + r));
-        let below: Vec<f64> = spacing(p.domain.depth * h)
+        let below = spacing(p.domain.depth * h)
             .iter()
             .rev()
             .map(|r| ya - r)
             .collect();
-        let above: Vec<f64> = spacing(h).iter().skip(1).map(|r| r / h).collect();
+        let above = spacing(h).iter().skip(1).map(|r| r / h).collect();
+        Lines {
+            columns,
+            tip_column,
+            below,
+            above,
+        }
+    }
 
+    /// The boundary sides of cell (j, k) of a column pair with `levels`
+    /// levels, edge by edge counter-clockwise from the bottom.
+    fn sides(&self, j: usize, k: usize, levels: usize) -> [Option<Side>; 4] {
+        let top = if j < self.tip_column {
+            Side::Trench
+        } else {
+            Side::Surface
+        };
+        [
+            (k == 0).then_some(Side::Far),
+            (j + 2 == self.columns.len()).then_some(Side::Far),
+            (k + 2 == levels).then_some(top),
+            if j == self.tip_column && k + 1 >= self.below.len() {
+                Some(Side::Face)
+            } else if j == 0 {
+                Some(Side::Far)
+            } else {
+                None
+            },
+        ]
+    }
+}
+
+impl Mesh {
+    /// The mesh of a (validated) problem with N cells along the face near
+    /// the tip, N ≥ 1.
+    pub fn new(p: &Problem, n: usize) -> Mesh {
+        let lines = Lines::of(p, n);
         let mut mesh = Mesh {
             nodes: Vec::new(),
             triangles: Vec::new(),
             boundary: Vec::new(),
         };
-        let grid: Vec<Vec<usize>> = columns
-            .iter()
-            .enumerate()
-            .map(|(j, &x0)| {
-                let mut ids: Vec<usize> = below.iter().map(|&y| mesh.add([x0, y])).collect();
-                if j >= tip_column {
-                    let top = p.column_top(x0);
-                    for f in &above {
-                        let y = ya + f * (top - ya);
-                        ids.push(mesh.add([x0 - (y - ya) * cot, y]));
-                    }
-                }
-                ids
-            })
-            .collect();
-        for j in 0..columns.len() - 1 {
+        let grid = mesh.add_columns(p, &lines);
+        for j in 0..lines.columns.len() - 1 {
             let levels = grid[j].len().min(grid[j + 1].len());
             for k in 0..levels - 1 {
                 let corners = [
@@ -114,27 +145,34 @@ impl Mesh {
                     grid[j + 1][k + 1],
                     grid[j][k + 1],
                 ];
-                let top = if j < tip_column {
-                    Side::Trench
-                } else {
-                    Side::Surface
-                };
-                let sides = [
-                    (k == 0).then_some(Side::Far),
-                    (j + 2 == columns.len()).then_some(Side::Far),
-                    (k + 2 == levels).then_some(top),
-                    if j == tip_column && k + 1 >= below.len() {
-                        Some(Side::Face)
-                    } else if j == 0 {
-                        Some(Side::Far)
-                    } else {
-                        None
-                    },
-                ];
-                mesh.add_cell(corners, sides);
+                mesh.add_cell(corners, lines.sides(j, k, levels));
             }
         }
         mesh
+    }
+
+    /// The nodes of every column, bottom up: the levels below the tip,
+    /// then, from the tip's column on, the levels above it up to the
+    /// column's top along lines parallel to the face. Their indices by
+    /// column.
+    fn add_columns(&mut self, p: &Problem, lines: &Lines) -> Vec<Vec<usize>> {
+        let (ya, cot) = (p.face.tip_y, p.cot_rake());
+        lines
+            .columns
+            .iter()
+            .enumerate()
+            .map(|(j, &x0)| {
+                let mut ids: Vec<usize> = lines.below.iter().map(|&y| self.add([x0, y])).collect();
+                if j >= lines.tip_column {
+                    let top = p.column_top(x0);
+                    for f in &lines.above {
+                        let y = ya + f * (top - ya);
+                        ids.push(self.add([x0 - (y - ya) * cot, y]));
+                    }
+                }
+                ids
+            })
+            .collect()
     }
 
     fn add(&mut self, point: [f64; 2]) -> usize {

@@ -2,7 +2,7 @@
 //! another by the ensemble rule (docs/model.md §12), from their files.
 
 use super::Failure;
-use soilcut_study::accuracy::Verdict;
+use soilcut_study::accuracy::{Agreement, Verdict};
 use soilcut_study::ensemble::{accuracy_rule, RecordedSpread};
 use std::path::PathBuf;
 
@@ -43,24 +43,35 @@ pub fn accuracy(args: AccuracyArgs) -> Result<(), Failure> {
     }
     let a = scheme.agreement(&reference);
     if args.json {
-        let verdict = |v: &Verdict| {
-            format!(
-                "{{\"deviation\": {}, \"tolerance\": {}, \"within\": {}}}",
-                v.deviation,
-                v.tolerance,
-                v.ok()
-            )
-        };
-        let windows: Vec<String> = a.windows.iter().map(verdict).collect();
-        println!(
-            "{{\"accurate\": {}, \"worst_ratio\": {}, \"whole_run\": {}, \"windows\": [{}]}}",
-            a.accurate(),
-            a.worst_ratio(),
-            verdict(&a.whole_run),
-            windows.join(", ")
-        );
-        return Ok(());
+        println!("{}", json(&a));
+    } else {
+        print_table(&scheme, &reference, &a);
     }
+    Ok(())
+}
+
+/// The agreement as one JSON object.
+fn json(a: &Agreement) -> String {
+    let verdict = |v: &Verdict| {
+        format!(
+            "{{\"deviation\": {}, \"tolerance\": {}, \"within\": {}}}",
+            v.deviation,
+            v.tolerance,
+            v.ok()
+        )
+    };
+    let windows: Vec<String> = a.windows.iter().map(verdict).collect();
+    format!(
+        "{{\"accurate\": {}, \"worst_ratio\": {}, \"whole_run\": {}, \"windows\": [{}]}}",
+        a.accurate(),
+        a.worst_ratio(),
+        verdict(&a.whole_run),
+        windows.join(", ")
+    )
+}
+
+/// The table: a row a window and one for the whole run, then the verdict.
+fn print_table(scheme: &RecordedSpread, reference: &RecordedSpread, a: &Agreement) {
     println!("{}\nrule: {}\n", scheme.title, accuracy_rule());
     println!(
         "window   scheme (mean ± sd)   reference (mean ± sd)   deviation   tolerance   within"
@@ -96,5 +107,4 @@ pub fn accuracy(args: AccuracyArgs) -> Result<(), Failure> {
         );
     }
     println!("\naccurate: {}", if a.accurate() { "yes" } else { "no" });
-    Ok(())
 }

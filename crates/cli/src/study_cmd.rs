@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{check_output_dir, read_measured_curve, write_output_dir_then, OutputError};
 use soilcut_study::converge::ensembles::EnsembleConverge;
 use soilcut_study::converge::{Converge, Refine};
-use soilcut_study::fit::{measured_width, parse_bounds, Compare, Fit, Method};
+use soilcut_study::fit::{measured_width, parse_bounds, Compare, Fit, FitResult, Method};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::Sweep;
 use soilcut_study::{BaseCase, StudyError};
@@ -322,6 +322,53 @@ fn test_of(name: &Path, base: BaseCase, w: f64) -> Result<soilcut_study::fit::Te
     ))
 }
 
+/// The tests of a fit: `--measured` against the case, then every
+/// `--also CASE=FILE`, each curve's forces divided by `width`.
+fn tests_of(
+    args: &FitArgs,
+    base: BaseCase,
+    width: f64,
+) -> Result<Vec<soilcut_study::fit::Test>, Failure> {
+    let c = &args.common;
+    let path = &c.target.case;
+    let mut tests = vec![test_of(&args.measured, base, width)?];
+    for also in &args.also {
+        let (case, measured) = also
+            .split_once('=')
+            .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
+        let case = Path::new(case);
+        let other =
+            BaseCase::read(case, c.target.overrides()?).map_err(|e| Failure::input(case, e))?;
+        tests.push(test_of(Path::new(measured), other, width)?);
+    }
+    Ok(tests)
+}
+
+/// The line `soilcut fit` ends with: the RMS errors and every key's best
+/// value with its interval and verdict.
+fn summary_of(r: &FitResult) -> String {
+    let best: Vec<String> = r
+        .params
+        .iter()
+        .enumerate()
+        .map(|(j, p)| {
+            format!(
+                "{} = {:.4} [{}, {}]",
+                p.key,
+                r.best.x[j],
+                r.interval_text(j),
+                r.verdict(j)
+            )
+        })
+        .collect();
+    format!(
+        "RMS error {:.4} (start {:.4}), {}",
+        r.best.rms,
+        r.start.rms,
+        best.join(", ")
+    )
+}
+
 pub fn fit(args: FitArgs) -> Result<(), Failure> {
     let c = &args.common;
     let path = &c.target.case;
@@ -338,16 +385,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
     let width = measured_width(args.width, &case, "--width").map_err(fail)?;
     let title = case.title;
-    let mut tests = vec![test_of(&args.measured, base.clone(), width)?];
-    for also in &args.also {
-        let (case, measured) = also
-            .split_once('=')
-            .ok_or_else(|| Failure::input(path, format!("--also {also}: expected CASE=FILE")))?;
-        let case = Path::new(case);
-        let other =
-            BaseCase::read(case, c.target.overrides()?).map_err(|e| Failure::input(case, e))?;
-        tests.push(test_of(Path::new(measured), other, width)?);
-    }
+    let tests = tests_of(&args, base, width)?;
     let fit = Fit {
         tests,
         free: args.free.clone(),
@@ -366,26 +404,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         let r = fit.run(&c.progress("runs"))?;
         text_files(dir, &r.files(&title))?;
         r.draw(dir)?;
-        let best: Vec<String> = r
-            .params
-            .iter()
-            .enumerate()
-            .map(|(j, p)| {
-                format!(
-                    "{} = {:.4} [{}, {}]",
-                    p.key,
-                    r.best.x[j],
-                    r.interval_text(j),
-                    r.verdict(j)
-                )
-            })
-            .collect();
-        summary = format!(
-            "RMS error {:.4} (start {:.4}), {}",
-            r.best.rms,
-            r.start.rms,
-            best.join(", ")
-        );
+        summary = summary_of(&r);
         Ok(())
     })
     .map_err(fail)?;

@@ -1,12 +1,16 @@
 //! Pictures: `soilcut run` draws them for every shipped case, `soilcut plot`
 //! redraws the same bytes, `--no-plots` leaves the results unchanged,
 //! `soilcut compare` overlays runs, and `soilcut run --ensemble` draws its
-//! members and their envelope.
+//! members and their envelope. A run that several tests read is run once
+//! ([`shared_run`]).
 
+use crate::readme::copy_dir;
+use std::collections::BTreeMap;
 use std::fs;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::{Arc, Mutex, OnceLock};
 
 const SHORT: [&str; 4] = ["--set", "run.travel=20", "--set", "run.increment=0.2"];
 
@@ -72,6 +76,33 @@ fn run_short(case: &Path, out: &Path, extra: &[&str]) {
     assert_ok(&soilcut(&args, out.parent().unwrap()));
 }
 
+/// The folder of `soilcut run CASE` [`SHORT`] `extra`, run once for all
+/// the tests of this file that read it, in `CARGO_TARGET_TMPDIR` (emptied
+/// by the first of them): a test that changes a run's folder changes a
+/// copy ([`copy_dir`]).
+fn shared_run(case: &Path, extra: &[&str]) -> PathBuf {
+    static RUNS: Mutex<BTreeMap<String, Arc<OnceLock<PathBuf>>>> = Mutex::new(BTreeMap::new());
+    static ROOT: OnceLock<PathBuf> = OnceLock::new();
+    let key = format!("{} {}", case.display(), extra.join(" "));
+    let cell = Arc::clone(RUNS.lock().unwrap().entry(key.clone()).or_default());
+    cell.get_or_init(|| {
+        let root = ROOT.get_or_init(|| {
+            let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join("plots");
+            let _ = fs::remove_dir_all(&root);
+            fs::create_dir_all(&root).unwrap();
+            root
+        });
+        let name: String = key
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
+        let out = root.join(name);
+        run_short(case, &out, extra);
+        out
+    })
+    .clone()
+}
+
 fn assert_png(path: &Path) {
     let bytes = fs::read(path).unwrap();
     let mut reader = png::Decoder::new(Cursor::new(bytes))
@@ -125,9 +156,7 @@ fn every_case_draws_valid_pictures_that_plot_redraws_and_that_change_nothing() {
     assert!(!cases.is_empty());
     for case in cases {
         let name = case.display().to_string();
-        let tmp = tempfile::tempdir().unwrap();
-        let out = tmp.path().join("drawn");
-        run_short(&case, &out, &[]);
+        let out = shared_run(&case, &[]);
         for p in PICTURES {
             let path = out.join(p);
             assert!(fs::metadata(&path).unwrap().len() > 0, "{name}: {p}");
@@ -151,6 +180,10 @@ fn every_case_draws_valid_pictures_that_plot_redraws_and_that_change_nothing() {
 
         // `soilcut plot` redraws the same files from the run's files.
         let drawn = pictures(&out);
+        let tmp = tempfile::tempdir().unwrap();
+        let shared = out;
+        let out = tmp.path().join("drawn");
+        copy_dir(&shared, &out);
         for p in PICTURES {
             fs::remove_file(out.join(p)).unwrap();
         }
@@ -161,8 +194,7 @@ fn every_case_draws_valid_pictures_that_plot_redraws_and_that_change_nothing() {
         }
 
         // Drawing does not change the results.
-        let bare = tmp.path().join("bare");
-        run_short(&case, &bare, &["--no-plots"]);
+        let bare = shared_run(&case, &["--no-plots"]);
         assert!(!bare.join("plots").exists() && !bare.join("animation.gif").exists());
         for file in ["history.csv", "profile.csv", "frames.csv"] {
             assert!(
@@ -177,8 +209,8 @@ fn every_case_draws_valid_pictures_that_plot_redraws_and_that_change_nothing() {
 fn compare_overlays_runs_and_a_measured_curve() {
     let tmp = tempfile::tempdir().unwrap();
     let case = workspace().join("cases/paper/original.toml");
-    let (a, b) = (tmp.path().join("a"), tmp.path().join("b"));
-    run_short(&case, &a, &["--no-plots"]);
+    let (a, b) = (shared_run(&case, &["--no-plots"]), tmp.path().join("b"));
+    let a = a.to_str().unwrap();
     let title = "title=\"Original model, peak 38\"";
     run_short(
         &case,
@@ -198,7 +230,7 @@ fn compare_overlays_runs_and_a_measured_curve() {
     .unwrap();
     for out in ["cmp.png", "cmp.svg"] {
         let o = soilcut(
-            &["compare", "a", "b", "--measured", "m.csv", "--out", out],
+            &["compare", a, "b", "--measured", "m.csv", "--out", out],
             tmp.path(),
         );
         assert_ok(&o);
@@ -218,10 +250,10 @@ fn compare_overlays_runs_and_a_measured_curve() {
             );
         }
     }
-    let o = soilcut(&["compare", "a", "--out", "cmp.pdf"], tmp.path());
+    let o = soilcut(&["compare", a, "--out", "cmp.pdf"], tmp.path());
     assert_eq!(o.status.code(), Some(2), "only .png and .svg");
     assert!(!tmp.path().join("cmp.pdf").exists());
-    let o = soilcut(&["compare", "a", "--measured", "nope.csv"], tmp.path());
+    let o = soilcut(&["compare", a, "--measured", "nope.csv"], tmp.path());
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -272,14 +304,9 @@ fn an_ensemble_writes_its_members_and_their_envelope() {
     let csv = fs::read_to_string(ens.join("ensemble.csv")).unwrap();
     assert!(csv.starts_with("u_over_d_from,u_over_d_to,members,mean,std,min,max,k-1,k+0,k+1\n"));
     // Member k = 0 is `soilcut run` of the case itself, bit for bit.
-    let mut plain = vec!["run", case, "--no-plots", "--out", "plain"];
-    plain.extend(SHORT);
-    assert_ok(&soilcut(&plain, tmp.path()));
+    let plain = shared_run(Path::new(case), &["--no-plots"]);
     let history = |dir: &Path| fs::read(dir.join("history.csv")).unwrap();
-    assert_eq!(
-        history(&ens.join("k+0")),
-        history(&tmp.path().join("plain"))
-    );
+    assert_eq!(history(&ens.join("k+0")), history(&plain));
     // One thread: the same files.
     let mut one = vec!["run", case, "--ensemble", "3", "--jobs", "1", "--no-plots"];
     one.extend(["--out", "one"]);
@@ -398,8 +425,7 @@ fn quiet_run_prints_nothing() {
 fn an_inclined_blade_is_drawn_inclined() {
     let tmp = tempfile::tempdir().unwrap();
     let case = workspace().join("cases/tools/inclined.toml");
-    let (raked, vertical) = (tmp.path().join("raked"), tmp.path().join("vertical"));
-    run_short(&case, &raked, &[]);
+    let (raked, vertical) = (shared_run(&case, &[]), tmp.path().join("vertical"));
     run_short(&case, &vertical, &["--set", "blade.rake=90"]);
     let resolved = fs::read_to_string(raked.join("case.resolved.toml")).unwrap();
     assert!(resolved.contains("rake = 60"), "{resolved}");

@@ -93,7 +93,9 @@ fn soilcut_args(line: &str) -> Option<Vec<&str>> {
     None
 }
 
-fn copy_dir(from: &Path, to: &Path) {
+/// Copies a folder and everything in it (also for the runs `plots.rs`
+/// shares).
+pub fn copy_dir(from: &Path, to: &Path) {
     std::fs::create_dir_all(to).unwrap();
     for entry in std::fs::read_dir(from).unwrap() {
         let entry = entry.unwrap();

@@ -2,7 +2,7 @@
 //! changed entry point without a regenerated header fails here.
 //!
 //! After changing the entry points, rewrite the header with
-//! SOILCUT_BLESS=1 cargo test -p soilcut-ffi --test header
+//! SOILCUT_BLESS=1 cargo test -p soilcut-ffi --test integration header::
 
 use std::path::Path;
 
@@ -29,7 +29,7 @@ fn the_committed_header_is_current() {
     let committed = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
         committed == header,
-        "{} is not what cbindgen generates from crates/ffi/src; regenerate it with\n    SOILCUT_BLESS=1 cargo test -p soilcut-ffi --test header",
+        "{} is not what cbindgen generates from crates/ffi/src; regenerate it with\n    SOILCUT_BLESS=1 cargo test -p soilcut-ffi --test integration header::",
         path.display()
     );
 }

@@ -13,13 +13,29 @@ pub struct CsvText {
 impl CsvText {
     /// A text starting with `header`, the column names joined by commas.
     pub fn new(header: &str) -> Self {
-        let mut text = CsvText {
+        let mut text = CsvText::new_empty();
+        text.record(header.split(','));
+        text
+    }
+
+    fn new_empty() -> Self {
+        CsvText {
             writer: csv::WriterBuilder::new()
                 .terminator(csv::Terminator::Any(b'\n'))
                 .from_writer(Vec::new()),
-        };
-        text.record(header.split(','));
+        }
+    }
+
+    /// A text starting with a header of `names`.
+    pub fn named<S: AsRef<str>>(names: &[S]) -> Self {
+        let mut text = CsvText::new_empty();
+        text.fields(names);
         text
+    }
+
+    /// Appends one row of fields already formatted.
+    pub fn fields<S: AsRef<str>>(&mut self, fields: &[S]) {
+        self.record(fields.iter().map(|f| f.as_ref()));
     }
 
     /// Appends one row.
@@ -58,5 +74,13 @@ mod tests {
             t.finish(),
             "a,b,c\n1,0.1,\"x, y\"\nNaN,1000000000000000000000,-0\n"
         );
+    }
+
+    #[test]
+    fn fields_are_quoted_only_when_needed() {
+        let mut t = CsvText::named(&["plain", "a, b"]);
+        t.fields(&["1.5", "say \"x\""]);
+        t.fields(&["", ""]);
+        assert_eq!(t.finish(), "plain,\"a, b\"\n1.5,\"say \"\"x\"\"\"\n,\n");
     }
 }

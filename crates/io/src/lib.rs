@@ -46,6 +46,7 @@ pub use case_file::{
     unknown_key, LoadedCase,
 };
 pub use columns::Columns;
+pub use csv_text::CsvText;
 pub use error::{visible, InputError, OutputError, RunFilesError};
 pub use finished::{
     frames_columns, frames_csv, read_finished_run, FinishedRun, SurfaceFrame, FRAMES_HEADER,

@@ -47,19 +47,8 @@ pub fn parse_measured(text: &str) -> Result<Vec<(f64, f64)>, InputError> {
 /// finite number, every weight ≥ 0 with at least one > 0; at least two
 /// points are needed. Errors name the line and the column.
 pub fn parse_measured_curve(text: &str) -> Result<MeasuredCurve, InputError> {
-    let syntax = |line: usize, message: String| InputError::Syntax { line, message };
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let (header_line, header) = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l))
-        .find(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-        .ok_or_else(|| {
-            syntax(
-                1,
-                "empty file: expected a header with the columns u,force".into(),
-            )
-        })?;
+    let (header_line, header) = header_of(text)?;
     let delimiter = delimiter_of(header);
     let mut reader = csv::ReaderBuilder::new()
         .delimiter(delimiter)
@@ -73,16 +62,7 @@ pub fn parse_measured_curve(text: &str) -> Result<MeasuredCurve, InputError> {
         .iter()
         .map(str::to_lowercase)
         .collect();
-    let column = |name: &str| names.iter().position(|n| n == name);
-    let missing = |name: &str| {
-        syntax(
-            header_line,
-            format!("the header has no column {name:?} (expected the columns u,force)"),
-        )
-    };
-    let u_col = column("u").ok_or_else(|| missing("u"))?;
-    let force_col = column("force").ok_or_else(|| missing("force"))?;
-    let weight_col = column("weight");
+    let layout = Layout::of(names, header_line, delimiter)?;
     let mut curve = MeasuredCurve {
         points: Vec::new(),
         weights: Vec::new(),
@@ -92,28 +72,91 @@ pub fn parse_measured_curve(text: &str) -> Result<MeasuredCurve, InputError> {
             let line = e.position().map_or(header_line, |p| p.line() as usize);
             syntax(line, e.to_string())
         })?;
+        let (point, weight) = layout.row(&record)?;
+        curve.points.push(point);
+        curve.weights.push(weight);
+    }
+    enough(curve, header_line)
+}
+
+fn syntax(line: usize, message: String) -> InputError {
+    InputError::Syntax { line, message }
+}
+
+/// The header: the first line that is neither blank nor a `#` comment,
+/// with its number (from 1).
+fn header_of(text: &str) -> Result<(usize, &str), InputError> {
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l))
+        .find(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .ok_or_else(|| {
+            syntax(
+                1,
+                "empty file: expected a header with the columns u,force".into(),
+            )
+        })
+}
+
+/// Where the columns a curve reads are, by the header's (lower-case)
+/// names.
+struct Layout {
+    names: Vec<String>,
+    delimiter: u8,
+    u: usize,
+    force: usize,
+    weight: Option<usize>,
+}
+
+impl Layout {
+    fn of(names: Vec<String>, header_line: usize, delimiter: u8) -> Result<Self, InputError> {
+        let column = |name: &str| names.iter().position(|n| n == name);
+        let missing = |name: &str| {
+            syntax(
+                header_line,
+                format!("the header has no column {name:?} (expected the columns u,force)"),
+            )
+        };
+        let u = column("u").ok_or_else(|| missing("u"))?;
+        let force = column("force").ok_or_else(|| missing("force"))?;
+        let weight = column("weight");
+        Ok(Layout {
+            names,
+            delimiter,
+            u,
+            force,
+            weight,
+        })
+    }
+
+    /// A data row's point (u, force) and weight (1 without the column).
+    fn row(&self, record: &csv::StringRecord) -> Result<((f64, f64), f64), InputError> {
         let line = record.position().map_or(0, |p| p.line() as usize);
-        if record.len() != names.len() {
+        if record.len() != self.names.len() {
             return Err(syntax(
                 line,
-                format!("{} fields, the header has {}", record.len(), names.len()),
+                format!(
+                    "{} fields, the header has {}",
+                    record.len(),
+                    self.names.len()
+                ),
             ));
         }
         let number = |col: usize| {
             let field = &record[col];
-            parse_number(field, delimiter).ok_or_else(|| {
+            parse_number(field, self.delimiter).ok_or_else(|| {
                 syntax(
                     line,
                     format!(
                         "column {} ({}): {field:?} is not a finite number",
                         col + 1,
-                        names[col]
+                        self.names[col]
                     ),
                 )
             })
         };
-        curve.points.push((number(u_col)?, number(force_col)?));
-        let weight = match weight_col {
+        let point = (number(self.u)?, number(self.force)?);
+        let weight = match self.weight {
             Some(col) => number(col)?,
             None => 1.0,
         };
@@ -122,12 +165,16 @@ pub fn parse_measured_curve(text: &str) -> Result<MeasuredCurve, InputError> {
                 line,
                 format!(
                     "column {} (weight): {weight} is negative",
-                    weight_col.unwrap_or(0) + 1
+                    self.weight.unwrap_or(0) + 1
                 ),
             ));
         }
-        curve.weights.push(weight);
+        Ok((point, weight))
     }
+}
+
+/// The curve if it can be fitted: two points or more, a weight > 0.
+fn enough(curve: MeasuredCurve, header_line: usize) -> Result<MeasuredCurve, InputError> {
     if curve.points.len() < 2 {
         return Err(syntax(
             header_line,

@@ -13,7 +13,7 @@
 //! meant to change results, with
 //!
 //! ```sh
-//! SOILCUT_BLESS=1 cargo test -p soilcut-io --test golden
+//! SOILCUT_BLESS=1 cargo test -p soilcut-io --test integration golden::
 //! ```
 
 use soilcut_io::{history_columns, read_case};

@@ -2,7 +2,7 @@
 //! the pile stops at it, soil is conserved, and a bin too short for the
 //! travel fails with a clear error.
 
-mod common;
+use crate::common;
 
 use soilcut_model::{Simulation, StepError};
 

@@ -1,6 +1,6 @@
 //! A blade that deepens, or rises, while it cuts (`blade.depth_path`).
 
-mod common;
+use crate::common;
 
 use soilcut_model::FaceFrictionRule;
 use soilcut_model::Simulation;

@@ -11,7 +11,7 @@
 //! (first order where the minimum is a kink of the ramp, second order
 //! inside it).
 
-mod common;
+use crate::common;
 
 use soilcut_model::{Case, FaceFrictionRule, Model, Simulation, StepRecord};
 

@@ -3,7 +3,7 @@
 //! per unit width falls to plane strain as the blade widens, soil spilled
 //! around the edges is conserved, and runs are deterministic.
 
-mod common;
+use crate::common;
 
 use soilcut_model::analytic::Wedge;
 use soilcut_model::{AngleLaw, Case, Simulation};

@@ -5,7 +5,7 @@
 //! is second order in the angle step, so d / v0 = 2000 nodes per depth puts
 //! it below 1e-6.
 
-mod common;
+use crate::common;
 
 use soilcut_model::Simulation;
 

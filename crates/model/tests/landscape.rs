@@ -1,7 +1,7 @@
 //! The landscape of minimum effort: every candidate's force, of which the
 //! increment takes the least.
 
-mod common;
+use crate::common;
 
 use soilcut_model::landscape::near_minimum;
 use soilcut_model::search::TIE_TOLERANCE;

@@ -3,7 +3,7 @@
 //! finite forces and masses. Without them `soil.unit_weight = 1e306` gave
 //! an infinite initial mass (docs/fuzzing.md).
 
-mod common;
+use crate::common;
 
 use common::original;
 use soilcut_model::{Case, Simulation, MAGNITUDE};

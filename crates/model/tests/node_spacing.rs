@@ -3,7 +3,7 @@
 //! nodes. Mass stays exact, the first increment is Coulomb's wedge, and the
 //! results approach the reference grid's as h shrinks.
 
-mod common;
+use crate::common;
 
 use soilcut_model::{Case, Simulation};
 

@@ -1,6 +1,6 @@
 //! The original model's reported features: conservation and softening.
 
-mod common;
+use crate::common;
 
 use soilcut_model::Summary;
 

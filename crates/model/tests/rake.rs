@@ -2,7 +2,7 @@
 //! the literature's trial wedge (FEE), and soil is conserved as it rides up
 //! the face.
 
-mod common;
+use crate::common;
 
 use soilcut_model::{AngleLaw, Case, Simulation};
 

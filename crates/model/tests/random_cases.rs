@@ -7,7 +7,7 @@
 //! driven negative, and a pruning bound that assumed the wrong face
 //! friction for raked blades.
 
-mod common;
+use crate::common;
 
 use proptest::collection::vec;
 use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner};

@@ -1,7 +1,7 @@
 //! The refined model against closed forms, conservation and its reduction
 //! to the original model.
 
-mod common;
+use crate::common;
 
 use soilcut_model::{AngleLaw, Summary};
 

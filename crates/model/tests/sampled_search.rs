@@ -6,7 +6,7 @@
 //! samples that are not local minima. Checked on the paper's softening
 //! cases and on random cases.
 
-mod common;
+use crate::common;
 
 #[test]
 fn the_sampled_search_finds_the_least_force_on_the_softening_paper_cases() {

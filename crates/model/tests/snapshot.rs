@@ -3,7 +3,7 @@
 //! (docs/model.md §17). Bit-for-bit continuation on the shipped cases is
 //! tested in crates/io/tests/snapshots.rs, which reads their files.
 
-mod common;
+use crate::common;
 
 use soilcut_model::simulation::snapshot::{CHECKSUM_BYTES, CRATE_VERSION, FORMAT_VERSION, MAGIC};
 use soilcut_model::{AdvanceError, Case, Simulation, SnapshotError, StepError};

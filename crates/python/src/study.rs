@@ -9,7 +9,7 @@ use pyo3::types::{PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
 use soilcut_io::{baselines, check_landscape_at, landscape_at, landscape_columns};
 use soilcut_model::Simulation;
-use soilcut_study::fit::{measured_width, Compare, Fit, Method, Test};
+use soilcut_study::fit::{measured_width, Compare, Fit, FitResult, Method, Test};
 use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::{check_keys, Sweep, SweepResult};
 use soilcut_study::{no_progress, StudyError};
@@ -274,6 +274,12 @@ pub fn fit<'py>(
     let r = py
         .detach(|| fit.run(&no_progress))
         .map_err(|e| study_error(py, e))?;
+    fit_dict(py, &r, &title)
+}
+
+/// The dict `fit` returns: per key its best value, interval and verdict,
+/// the RMS errors, and the files by name.
+fn fit_dict<'py>(py: Python<'py>, r: &FitResult, title: &str) -> PyResult<Bound<'py, PyDict>> {
     let out = PyDict::new(py);
     let (best, intervals, verdicts) = (PyDict::new(py), PyDict::new(py), PyDict::new(py));
     for (j, p) in r.params.iter().enumerate() {
@@ -287,7 +293,7 @@ pub fn fit<'py>(
     out.set_item("best_rms", r.best.rms)?;
     out.set_item("start_rms", r.start.rms)?;
     let files = PyDict::new(py);
-    for (name, text) in r.files(&title) {
+    for (name, text) in r.files(title) {
         files.set_item(name, text)?;
     }
     out.set_item("files", files)?;

@@ -26,7 +26,8 @@
 mod synthetic;
 
 use rayon::ThreadPool;
-use soilcut_study::csv;
+use soilcut_io::CsvText;
+use soilcut_study::field;
 use soilcut_study::fit::problem::{Point, Problem};
 use soilcut_study::fit::search::{best_of, Search};
 use soilcut_study::fit::Method;
@@ -194,7 +195,7 @@ fn main() {
 }
 
 fn runs_csv(rows: &[Row]) -> String {
-    let mut s = csv::line(&[
+    let mut s = CsvText::named(&[
         "truth",
         "keys",
         "method",
@@ -216,25 +217,25 @@ fn runs_csv(rows: &[Row]) -> String {
             let v: Vec<String> = v.iter().map(|x| format!("{x:.4}")).collect();
             v.join(" ")
         };
-        s.push_str(&csv::line(&[
+        s.fields(&[
             r.truth.to_string(),
             r.keys.to_string(),
             r.method.to_string(),
             r.seed.to_string(),
             r.budget.to_string(),
             r.runs.to_string(),
-            csv::number(r.best_rms),
-            csv::number(r.truth_rms),
-            csv::number(r.best_rms / r.truth_rms),
+            field::number(r.best_rms),
+            field::number(r.truth_rms),
+            field::number(r.best_rms / r.truth_rms),
             r.success.to_string(),
             r.to_one_percent.map_or(String::new(), |n| n.to_string()),
             format!("{:.2}", r.wall_s),
             r.free.clone(),
             four(&r.truth_values),
             four(&r.best),
-        ]));
+        ]);
     }
-    s
+    s.finish()
 }
 
 /// A count of runs, "–" for none.

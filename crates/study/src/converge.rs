@@ -15,14 +15,16 @@
 //! A quantity is called converged when it changes by less than the
 //! tolerance (relative) between the two finest levels.
 
-use crate::csv;
 use crate::error::StudyError;
+use crate::field;
 use crate::figures::{in_window, mean, unit_windows, window_means};
 use crate::fit::interpolate;
 use crate::run::{override_of, BaseCase, RunResult};
 use crate::Progress;
 use rayon::prelude::*;
+use soilcut_io::CsvText;
 use soilcut_model::summary::{band_jumps, JUMP_DEPTHS};
+use soilcut_plot::{draw_panels, Panel, Series};
 use std::fmt::Write as _;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -339,7 +341,7 @@ impl ConvergeResult {
         for k in 0..self.windows() {
             header.push(format!("window_max_{k}_{}", k + 1));
         }
-        let mut out = csv::line(&header);
+        let mut out = CsvText::named(&header);
         for l in &self.levels {
             let mut row = vec![
                 l.level.to_string(),
@@ -348,26 +350,26 @@ impl ConvergeResult {
                 l.steps.to_string(),
                 l.band_jumps.to_string(),
             ];
-            row.extend(QUANTITIES.iter().map(|q| csv::number(q.1(l))));
-            row.extend(l.window_mean.iter().map(|&x| csv::number(x)));
-            row.extend(l.window_max.iter().map(|&x| csv::number(x)));
-            out.push_str(&csv::line(&row));
+            row.extend(QUANTITIES.iter().map(|q| field::number(q.1(l))));
+            row.extend(l.window_mean.iter().map(|&x| field::number(x)));
+            row.extend(l.window_max.iter().map(|&x| field::number(x)));
+            out.fields(&row);
         }
-        out
+        out.finish()
     }
 
     /// `timing.csv`: `level,increment,node_spacing,wall_time_s`.
     pub fn timing_csv(&self) -> String {
-        let mut out = String::from("level,increment,node_spacing,wall_time_s\n");
+        let mut out = CsvText::new("level,increment,node_spacing,wall_time_s");
         for l in &self.levels {
-            out.push_str(&csv::line(&[
+            out.fields(&[
                 l.level.to_string(),
                 l.increment.to_string(),
                 l.node_spacing.to_string(),
                 l.wall_time_s.to_string(),
-            ]));
+            ]);
         }
-        out
+        out.finish()
     }
 
     /// Relative change of every quantity from level k − 1 to level k
@@ -552,72 +554,33 @@ impl ConvergeResult {
     /// `converge.png`: window means and envelope against u/d, the final
     /// surfaces, and the relative changes against the level.
     pub fn draw(&self, path: &Path) -> Result<(), StudyError> {
-        use soilcut_plot::{draw_panels, Panel, Series};
-        let label = |l: &Level| {
-            format!(
-                "level {} (v0 = {}, h = {})",
-                l.level, l.increment, l.node_spacing
-            )
+        let panel = |x_label: &str, y_label: &str, series| Panel {
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            series,
         };
-        let per_window = |values: PerWindow| {
-            self.levels
-                .iter()
-                .map(|l| {
-                    let points = values(l)
-                        .iter()
-                        .enumerate()
-                        .map(|(k, &v)| (k as f64 + 0.5, v))
-                        .collect();
-                    Series::line(&label(l), points)
-                })
-                .collect()
-        };
-        let changes = self.changes();
-        let change_series = [0usize, 1, 2, 3, 5]
-            .iter()
-            .map(|&i| {
-                let points = changes
-                    .iter()
-                    .enumerate()
-                    .map(|(k, row)| ((k + 1) as f64, 100.0 * row[i]))
-                    .collect();
-                Series::line(label_of(&QUANTITIES[i]), points)
-            })
-            .collect();
         let panels = vec![
-            Panel {
-                x_label: "u/d (window midpoint)".into(),
-                y_label: "window mean P/(γ₀d²)".into(),
-                series: per_window(|l| &l.window_mean),
-            },
-            Panel {
-                x_label: "u/d (window midpoint)".into(),
-                y_label: "window max P/(γ₀d²) (envelope)".into(),
-                series: per_window(|l| &l.window_max),
-            },
-            Panel {
-                x_label: "(x − u)/d ahead of the blade".into(),
-                y_label: "final surface y/d".into(),
-                series: self
-                    .levels
-                    .iter()
-                    .map(|l| Series::line(&label(l), l.profile.clone()))
-                    .collect(),
-            },
-            Panel {
-                x_label: "level k (change from level k − 1)".into(),
-                y_label: "relative change (%)".into(),
-                series: change_series,
-            },
-            Panel {
-                x_label: "u/d".into(),
-                y_label: "P/(γ₀d²)".into(),
-                series: self
-                    .levels
-                    .iter()
-                    .map(|l| Series::line(&label(l), l.force.clone()))
-                    .collect(),
-            },
+            panel(
+                "u/d (window midpoint)",
+                "window mean P/(γ₀d²)",
+                self.per_window(|l| &l.window_mean),
+            ),
+            panel(
+                "u/d (window midpoint)",
+                "window max P/(γ₀d²) (envelope)",
+                self.per_window(|l| &l.window_max),
+            ),
+            panel(
+                "(x − u)/d ahead of the blade",
+                "final surface y/d",
+                self.per_level(|l| &l.profile),
+            ),
+            panel(
+                "level k (change from level k − 1)",
+                "relative change (%)",
+                self.change_series(),
+            ),
+            panel("u/d", "P/(γ₀d²)", self.per_level(|l| &l.force)),
         ];
         draw_panels(
             &format!("Convergence with the resolution: {}", self.title),
@@ -627,7 +590,57 @@ impl ConvergeResult {
         )?;
         Ok(())
     }
+
+    /// One line a level of a quantity per unit window, at the windows'
+    /// midpoints.
+    fn per_window(&self, values: PerWindow) -> Vec<Series> {
+        self.levels
+            .iter()
+            .map(|l| {
+                let points = values(l)
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &v)| (k as f64 + 0.5, v))
+                    .collect();
+                Series::line(&level_label(l), points)
+            })
+            .collect()
+    }
+
+    /// One line a level of one of its curves.
+    fn per_level(&self, curve: fn(&Level) -> &Vec<(f64, f64)>) -> Vec<Series> {
+        self.levels
+            .iter()
+            .map(|l| Series::line(&level_label(l), curve(l).clone()))
+            .collect()
+    }
+
+    /// The relative changes (%) of the averaged quantities against the
+    /// level.
+    fn change_series(&self) -> Vec<Series> {
+        let changes = self.changes();
+        [0usize, 1, 2, 3, 5]
+            .iter()
+            .map(|&i| {
+                let points = changes
+                    .iter()
+                    .enumerate()
+                    .map(|(k, row)| ((k + 1) as f64, 100.0 * row[i]))
+                    .collect();
+                Series::line(label_of(&QUANTITIES[i]), points)
+            })
+            .collect()
+    }
 }
+
+/// A level's legend label: its increment and node spacing.
+fn level_label(l: &Level) -> String {
+    format!(
+        "level {} (v0 = {}, h = {})",
+        l.level, l.increment, l.node_spacing
+    )
+}
+
 /// A number of `converge.md`'s tables: four decimals, a dash for none.
 fn cell(x: f64) -> String {
     if x.is_nan() {

@@ -222,21 +222,7 @@ impl Fit {
             let search = self.search(&problem, &|n| progress(n.min(self.evaluations), total));
             let start = search.points[0].clone();
             let mut points = search.points;
-            let all_keys: Vec<usize> = (0..params.len()).collect();
-            let polished = polish(
-                &problem,
-                &problem.scaled(&search.best.x),
-                &all_keys,
-                POLISH_STEP,
-                self.polish_iterations,
-            );
-            points.extend(polished);
-            let mut best = best_of(&points).clone();
-            if !best.rms.is_finite() {
-                return Err(StudyError::Case(
-                    "no set of values within the bounds runs every test".to_string(),
-                ));
-            }
+            let mut best = self.polished_best(&problem, &search.best, &mut points)?;
             let done = self.evaluations + self.polish_iterations as usize;
             progress(done, total);
             let noise = Noise::estimate(&best, &self.counts(), &self.overlaps(), params.len());
@@ -264,6 +250,33 @@ impl Fit {
                 profiled.correlation,
             )
         })
+    }
+
+    /// Polishes the search's best point by Nelder-Mead over every key
+    /// (the points it evaluates join `points`): the best point of all,
+    /// which must run every test.
+    fn polished_best(
+        &self,
+        problem: &Problem,
+        searched: &Point,
+        points: &mut Vec<Point>,
+    ) -> Result<Point, StudyError> {
+        let all_keys: Vec<usize> = (0..problem.params.len()).collect();
+        let polished = polish(
+            problem,
+            &problem.scaled(&searched.x),
+            &all_keys,
+            POLISH_STEP,
+            self.polish_iterations,
+        );
+        points.extend(polished);
+        let best = best_of(points).clone();
+        if !best.rms.is_finite() {
+            return Err(StudyError::Case(
+                "no set of values within the bounds runs every test".to_string(),
+            ));
+        }
+        Ok(best)
     }
 
     /// The profile of each parameter about the best point, with the

@@ -25,9 +25,9 @@
 #![warn(missing_docs)]
 
 pub mod converge;
-pub mod csv;
 pub mod ensemble;
 mod error;
+pub mod field;
 pub mod figures;
 pub mod fit;
 pub mod run;

@@ -5,14 +5,15 @@
 //! only figure that changes between identical runs) and, on request, each
 //! run's usual output folder.
 
-use crate::csv;
 use crate::error::StudyError;
+use crate::field;
 use crate::figures::{Figures, NAMES};
 use crate::run::{override_of, BaseCase};
 use crate::sample::{points, Sample, Vary};
 use crate::Progress;
 use rayon::prelude::*;
 use soilcut_io::Columns;
+use soilcut_io::CsvText;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -148,23 +149,23 @@ impl SweepResult {
         header.extend(self.keys.iter().cloned());
         header.extend(["status".to_string(), "error".to_string()]);
         header.extend(NAMES.iter().map(|n| n.to_string()));
-        let mut out = csv::line(&header);
+        let mut out = CsvText::named(&header);
         for row in &self.rows {
             let mut fields = vec![row.run.to_string()];
-            fields.extend(row.values.iter().map(csv::value));
+            fields.extend(row.values.iter().map(field::value));
             match &row.outcome {
                 Ok(figures) => {
                     fields.extend(["ok".to_string(), String::new()]);
-                    fields.extend(figures.values().iter().map(|&x| csv::number(x)));
+                    fields.extend(figures.values().iter().map(|&x| field::number(x)));
                 }
                 Err(e) => {
                     fields.extend(["failed".to_string(), e.clone()]);
                     fields.extend(NAMES.iter().map(|_| String::new()));
                 }
             }
-            out.push_str(&csv::line(&fields));
+            out.fields(&fields);
         }
-        out
+        out.finish()
     }
 
     /// The figures of every run ([`NAMES`]), row by row; NaN for a run
@@ -183,14 +184,11 @@ impl SweepResult {
 
     /// `timing.csv`: `run,wall_time_s`.
     pub fn timing_csv(&self) -> String {
-        let mut out = String::from("run,wall_time_s\n");
+        let mut out = CsvText::new("run,wall_time_s");
         for row in &self.rows {
-            out.push_str(&csv::line(&[
-                row.run.to_string(),
-                row.wall_time_s.to_string(),
-            ]));
+            out.fields(&[row.run.to_string(), row.wall_time_s.to_string()]);
         }
-        out
+        out.finish()
     }
 
     /// Runs that failed.

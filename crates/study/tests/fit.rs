@@ -4,7 +4,7 @@
 //! anywhere in the bounds ([`synthetic`]). Short travel (1.5 d) at a
 //! coarse increment (d/50) so that it is quick.
 
-mod synthetic;
+use crate::synthetic;
 
 use soilcut_study::fit::problem::Problem;
 use soilcut_study::fit::{FitResult, Method};

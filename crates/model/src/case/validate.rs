@@ -179,9 +179,15 @@ impl Case {
     }
 
     fn validate_soil(&self) -> Result<(), CaseError> {
-        let s = &self.soil;
-        positive("soil.unit_weight", s.unit_weight)?;
-        let f = &s.friction;
+        positive("soil.unit_weight", self.soil.unit_weight)?;
+        self.validate_friction_order()?;
+        self.validate_dilation_and_shear()
+    }
+
+    /// φ + φw < 90° for every friction angle, and the initial and residual
+    /// angles at most the peak.
+    fn validate_friction_order(&self) -> Result<(), CaseError> {
+        let f = &self.soil.friction;
         for (key, v) in self.friction_keys() {
             // β > 0 and β + φ + φw < 90° must leave room for a mechanism.
             if v + self.blade.wall_friction >= 90.0 {
@@ -212,6 +218,13 @@ impl Case {
                 ),
             ));
         }
+        Ok(())
+    }
+
+    /// Dilation angles within ±45°, the shear strains ordered, the angle
+    /// of repose and a band narrower than the blade is deep.
+    fn validate_dilation_and_shear(&self) -> Result<(), CaseError> {
+        let s = &self.soil;
         let d = &s.dilation;
         for (key, v) in [
             ("soil.dilation.initial", d.initial),

@@ -4,11 +4,12 @@
 
 use super::Refine;
 use crate::accuracy::{Agreement, Spread};
-use crate::csv;
 use crate::ensemble::{accuracy_rule, Ensemble, EnsembleResult};
 use crate::error::StudyError;
+use crate::field;
 use crate::run::{override_of, BaseCase};
 use crate::Progress;
+use soilcut_io::CsvText;
 use std::fmt::Write as _;
 
 /// A convergence study of ensembles to run.
@@ -116,7 +117,7 @@ impl EnsembleConvergeResult {
     /// whole run): the ensemble's spread, its deviation from the finest
     /// level's mean, the tolerance and whether it is within it.
     pub fn csv(&self) -> String {
-        let mut out = csv::line(&[
+        let mut out = CsvText::named(&[
             "level",
             "increment",
             "node_spacing",
@@ -140,38 +141,38 @@ impl EnsembleConvergeResult {
                 .map(|(w, (s, v))| (format!("{w}-{}", w + 1), s, v))
                 .chain([("all".to_string(), &e.whole_run, &a.whole_run)]);
             for (window, s, v) in rows {
-                out.push_str(&csv::line(&[
+                out.fields(&[
                     l.level.to_string(),
                     l.increment.to_string(),
                     l.node_spacing.to_string(),
                     window,
                     s.n.to_string(),
-                    csv::number(s.mean),
-                    csv::number(s.std),
-                    csv::number(s.min),
-                    csv::number(s.max),
-                    csv::number(v.deviation),
-                    csv::number(v.tolerance),
+                    field::number(s.mean),
+                    field::number(s.std),
+                    field::number(s.min),
+                    field::number(s.max),
+                    field::number(v.deviation),
+                    field::number(v.tolerance),
                     v.ok().to_string(),
-                ]));
+                ]);
             }
         }
-        out
+        out.finish()
     }
 
     /// `timing.csv`: every member's wall time, s, by level.
     pub fn timing_csv(&self) -> String {
-        let mut out = csv::line(&["level", "k", "wall_time_s"]);
+        let mut out = CsvText::named(&["level", "k", "wall_time_s"]);
         for l in &self.levels {
             for m in &l.ensemble.members {
-                out.push_str(&csv::line(&[
+                out.fields(&[
                     l.level.to_string(),
                     m.k.to_string(),
                     m.run.wall_time_s.to_string(),
-                ]));
+                ]);
             }
         }
-        out
+        out.finish()
     }
 
     /// `converge.md`: per level, the ensemble mean ± sd of every window and

@@ -3,8 +3,9 @@
 
 use super::{member_folder, EnsembleResult, Member};
 use crate::accuracy::{Spread, WHOLE_RUN, WINDOW_CEILING, WINDOW_FLOOR};
-use crate::csv;
+use crate::field;
 use serde_json::{json, Value};
+use soilcut_io::CsvText;
 use soilcut_io::{Columns, OutputError};
 use soilcut_plot::Envelope;
 use std::path::Path;
@@ -41,12 +42,12 @@ impl EnsembleResult {
     /// that does not exist, e.g. the spread of one member, is empty).
     pub fn ensemble_csv(&self) -> String {
         let columns = self.window_columns();
-        let mut out = csv::line(columns.names());
+        let mut out = CsvText::named(columns.names());
         for i in 0..columns.len() {
-            let row: Vec<String> = columns.iter().map(|(_, v)| csv::number(v[i])).collect();
-            out.push_str(&csv::line(&row));
+            let row: Vec<String> = columns.iter().map(|(_, v)| field::number(v[i])).collect();
+            out.fields(&row);
         }
-        out
+        out.finish()
     }
 
     /// The numbers of `ensemble.csv` (NaN where the file is empty).
@@ -127,15 +128,15 @@ impl EnsembleResult {
     /// `timing.csv`: each member's k and the wall time of its simulation, s
     /// (the only figure that changes between identical ensembles).
     pub fn timing_csv(&self) -> String {
-        let mut out = csv::line(&["k", "folder", "wall_time_s"]);
+        let mut out = CsvText::named(&["k", "folder", "wall_time_s"]);
         for m in &self.members {
-            out.push_str(&csv::line(&[
+            out.fields(&[
                 m.k.to_string(),
                 member_folder(m.k),
                 m.run.wall_time_s.to_string(),
-            ]));
+            ]);
         }
-        out
+        out.finish()
     }
 
     /// What the envelope picture draws.

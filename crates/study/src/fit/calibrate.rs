@@ -54,74 +54,33 @@ pub fn threshold(
     let Some(best_r) = &best.residuals else {
         return smooth;
     };
-    let weights = problem.weights();
+    let raw = best_fit_residuals(problem, best);
+    let replicates = sign_flipped(&raw, seed);
+    let replica = Replicas {
+        weights: problem.weights(),
+        best: best_r,
+        variance: &noise.variance,
+        seen: replicates
+            .iter()
+            .map(|r| {
+                let tests = problem.tests.iter().zip(r);
+                tests
+                    .map(|(t, noisy)| seen_noise(problem.compare, t, noisy))
+                    .collect()
+            })
+            .collect(),
+    };
     let feasible: Vec<&Vec<Vec<f64>>> =
         points.iter().filter_map(|p| p.residuals.as_ref()).collect();
-    let raw: Vec<Vec<(f64, f64)>> = problem
-        .tests
-        .iter()
-        .map(|t| {
-            let keys: Vec<String> = problem.params.iter().map(|p| p.key.clone()).collect();
-            match t.run_at(&keys, &best.x) {
-                Ok(run) => t
-                    .measured
-                    .iter()
-                    .map(|&(u, p)| (u, p - interpolate(&force_curve(&run), u)))
-                    .collect(),
-                Err(_) => t.measured.iter().map(|&(u, _)| (u, 0.0)).collect(),
-            }
-        })
-        .collect();
-    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed_ca1b);
-    // The raw noise (u, ±e) of each replicate and test.
-    let replicates: Vec<Vec<Vec<(f64, f64)>>> = (0..REPLICATES)
-        .map(|_| {
-            raw.iter()
-                .map(|e| {
-                    e.iter()
-                        .map(|&(u, e)| (u, if rng.random::<bool>() { e } else { -e }))
-                        .collect()
-                })
-                .collect()
-        })
-        .collect();
-    let noises: Vec<Vec<Vec<f64>>> = replicates
-        .iter()
-        .map(|r| {
-            problem
-                .tests
-                .iter()
-                .zip(r)
-                .map(|(t, noisy)| seen_noise(problem.compare, t, noisy))
-                .collect()
-        })
-        .collect();
-    let chi2 = |r: &[Vec<f64>], e: &[Vec<f64>]| -> f64 {
-        r.iter()
-            .zip(best_r)
-            .zip(e)
-            .zip(weights.iter().zip(&noise.variance))
-            .map(|(((r, r_best), e), (w, var))| {
-                r.iter()
-                    .zip(r_best)
-                    .zip(e)
-                    .zip(w)
-                    .map(|(((r, rb), e), w)| w * (r - rb - e).powi(2))
-                    .sum::<f64>()
-                    / var
-            })
-            .sum()
-    };
     let undercut = |b: usize, refitted: bool| {
-        let e = &noises[b];
         let mut least = feasible
             .iter()
-            .map(|r| chi2(r, e))
+            .map(|r| replica.chi2(b, r))
             .fold(f64::INFINITY, f64::min);
         if refitted {
             least = least.min(refit(problem, best, &raw, &replicates[b], noise));
         }
-        chi2(best_r, e) - least
+        replica.chi2(b, best_r) - least
     };
     let mut lambda: Vec<f64> = (0..REPLICATES)
         .into_par_iter()
@@ -134,6 +93,74 @@ pub fn threshold(
         .map(|b| undercut(b, true))
         .reduce(|| f64::NEG_INFINITY, f64::max);
     lambda[k].max(refitted).max(smooth)
+}
+
+/// The best fit's raw residuals (uᵢ, eᵢ = Pᵢ − f(θ̂, uᵢ)) at each test's
+/// measured points; 0 for a test whose run fails.
+fn best_fit_residuals(problem: &Problem, best: &Point) -> Vec<Vec<(f64, f64)>> {
+    let keys: Vec<String> = problem.params.iter().map(|p| p.key.clone()).collect();
+    problem
+        .tests
+        .iter()
+        .map(|t| match t.run_at(&keys, &best.x) {
+            Ok(run) => t
+                .measured
+                .iter()
+                .map(|&(u, p)| (u, p - interpolate(&force_curve(&run), u)))
+                .collect(),
+            Err(_) => t.measured.iter().map(|&(u, _)| (u, 0.0)).collect(),
+        })
+        .collect()
+}
+
+/// The raw noise (u, vᵢ eᵢ) of each replicate and test, vᵢ = ±1 drawn in
+/// that order from a generator seeded by `seed`.
+fn sign_flipped(raw: &[Vec<(f64, f64)>], seed: u64) -> Vec<Vec<Vec<(f64, f64)>>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed_ca1b);
+    (0..REPLICATES)
+        .map(|_| {
+            raw.iter()
+                .map(|e| {
+                    e.iter()
+                        .map(|&(u, e)| (u, if rng.random::<bool>() { e } else { -e }))
+                        .collect()
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The replicates' curves as the χ² of a point sees them.
+struct Replicas<'a> {
+    /// The comparison's weights per test and point.
+    weights: Vec<Vec<f64>>,
+    /// The best fit's residuals r̂ per test and point.
+    best: &'a [Vec<f64>],
+    /// σ_t² per test.
+    variance: &'a [f64],
+    /// A(v e) per replicate, test and point.
+    seen: Vec<Vec<Vec<f64>>>,
+}
+
+impl Replicas<'_> {
+    /// χ²_b of a point with residuals `r` against replicate `b`:
+    /// Σ_t Σ_i w (rᵢ − r̂ᵢ − A(v e)ᵢ)² / σ_t².
+    fn chi2(&self, b: usize, r: &[Vec<f64>]) -> f64 {
+        r.iter()
+            .zip(self.best)
+            .zip(&self.seen[b])
+            .zip(self.weights.iter().zip(self.variance))
+            .map(|(((r, r_best), e), (w, var))| {
+                r.iter()
+                    .zip(r_best)
+                    .zip(e)
+                    .zip(w)
+                    .map(|(((r, rb), e), w)| w * (r - rb - e).powi(2))
+                    .sum::<f64>()
+                    / var
+            })
+            .sum()
+    }
 }
 
 /// The 95 % quantile of χ² with `dof` degrees of freedom (Wilson-Hilferty

@@ -194,10 +194,31 @@ impl Strategy {
 
     /// One generation's update from the points drawn and their runs.
     fn update(&mut self, samples: &[Vec<f64>], points: &[Point]) {
+        let steps = self.selected_steps(samples, points);
         let n = self.mean.len();
+        let y_w: Vec<f64> = (0..n)
+            .map(|i| self.weights.iter().zip(&steps).map(|(w, y)| w * y[i]).sum())
+            .collect();
+        for (m, y) in self.mean.iter_mut().zip(&y_w) {
+            *m += self.sigma * y;
+        }
+        let (norm, h_sigma) = self.adapt_paths(&y_w);
+        self.adapt_covariance(&steps, h_sigma);
+        self.sigma *= ((self.c_sigma / self.d_sigma) * (norm / self.chi_n - 1.0)).exp();
+        let (values, vectors) = eigen(&self.c);
+        self.d = values
+            .iter()
+            .map(|v| v.max(f64::MIN_POSITIVE).sqrt())
+            .collect();
+        self.b = vectors;
+    }
+
+    /// The steps yₖ = (xₖ − m)/σ of the μ best samples, best first (ties
+    /// by the order drawn).
+    fn selected_steps(&self, samples: &[Vec<f64>], points: &[Point]) -> Vec<Vec<f64>> {
         let mut order: Vec<usize> = (0..samples.len()).collect();
         order.sort_by(|&a, &b| points[a].rms.total_cmp(&points[b].rms).then(a.cmp(&b)));
-        let steps: Vec<Vec<f64>> = order[..self.weights.len()]
+        order[..self.weights.len()]
             .iter()
             .map(|&k| {
                 samples[k]
@@ -206,13 +227,14 @@ impl Strategy {
                     .map(|(x, m)| (x - m) / self.sigma)
                     .collect()
             })
-            .collect();
-        let y_w: Vec<f64> = (0..n)
-            .map(|i| self.weights.iter().zip(&steps).map(|(w, y)| w * y[i]).sum())
-            .collect();
-        for (m, y) in self.mean.iter_mut().zip(&y_w) {
-            *m += self.sigma * y;
-        }
+            .collect()
+    }
+
+    /// Updates the evolution paths p_σ and p_c by the weighted step y_w
+    /// and counts the generation; returns ‖p_σ‖ and h_σ (whether p_σ is
+    /// short enough for p_c to take the step).
+    fn adapt_paths(&mut self, y_w: &[f64]) -> (f64, bool) {
+        let n = self.mean.len();
         // C^−½ y_w = B D⁻¹ Bᵀ y_w.
         let bt_y: Vec<f64> = (0..n)
             .map(|j| (0..n).map(|i| self.b[i][j] * y_w[i]).sum::<f64>() / self.d[j])
@@ -229,9 +251,17 @@ impl Strategy {
             < (1.4 + 2.0 / (n as f64 + 1.0)) * self.chi_n;
         let cc = self.c_c;
         let kc = f64::from(u8::from(h_sigma)) * (cc * (2.0 - cc) * self.mu_eff).sqrt();
-        for (p, y) in self.p_c.iter_mut().zip(&y_w) {
+        for (p, y) in self.p_c.iter_mut().zip(y_w) {
             *p = (1.0 - cc) * *p + kc * y;
         }
+        (norm, h_sigma)
+    }
+
+    /// C ← (1 − c₁ − c_μ + c₁ δ) C + c₁ p_c p_cᵀ + c_μ Σ wₖ yₖ yₖᵀ, with
+    /// δ = c_c (2 − c_c) when h_σ is false.
+    fn adapt_covariance(&mut self, steps: &[Vec<f64>], h_sigma: bool) {
+        let n = self.mean.len();
+        let cc = self.c_c;
         let delta = if h_sigma { 0.0 } else { cc * (2.0 - cc) };
         let keep = 1.0 - self.c_1 - self.c_mu + self.c_1 * delta;
         for i in 0..n {
@@ -239,7 +269,7 @@ impl Strategy {
                 let rank_mu: f64 = self
                     .weights
                     .iter()
-                    .zip(&steps)
+                    .zip(steps)
                     .map(|(w, y)| w * y[i] * y[j])
                     .sum();
                 self.c[i][j] = keep * self.c[i][j]
@@ -247,13 +277,6 @@ impl Strategy {
                     + self.c_mu * rank_mu;
             }
         }
-        self.sigma *= ((cs / self.d_sigma) * (norm / self.chi_n - 1.0)).exp();
-        let (values, vectors) = eigen(&self.c);
-        self.d = values
-            .iter()
-            .map(|v| v.max(f64::MIN_POSITIVE).sqrt())
-            .collect();
-        self.b = vectors;
     }
 
     /// Every coordinate's deviation below the stop width, or C

@@ -215,55 +215,29 @@ fn walk(
     grid: usize,
     threshold: f64,
 ) -> Vec<(f64, Point)> {
-    let free_j = &problem.params[j];
     let others: Vec<usize> = (0..problem.params.len()).filter(|&k| k != j).collect();
-    let iterations = ITERATIONS_PER_KEY * others.len() as u64;
-    let chi2_best = noise.chi2(best);
-    let at = |v: f64, from: &Point| -> Point {
-        let mut z = problem.scaled(&from.x);
-        z[j] = free_j.scaled(v);
-        let tried = polish(problem, &z, &others, STEP, iterations);
-        best_of(&tried).clone()
-    };
-    let n = grid.max(2);
-    let values: Vec<f64> = (0..n)
-        .map(|k| free_j.value(k as f64 / (n - 1) as f64))
-        .collect();
-    let beyond: Vec<f64> = if up {
-        values.into_iter().filter(|&v| v > best.x[j]).collect()
-    } else {
-        values
-            .into_iter()
-            .rev()
-            .filter(|&v| v < best.x[j])
-            .collect()
+    let walk = Walk {
+        problem,
+        j,
+        iterations: ITERATIONS_PER_KEY * others.len() as u64,
+        others,
+        noise,
+        chi2_best: noise.chi2(best),
+        threshold,
     };
     let mut chain: Vec<(f64, Point)> = Vec::new();
     let mut last = (best.x[j], best.clone());
     let mut crossed = false;
-    for v in beyond {
-        let point = at(v, &last.1);
-        if !crossed && noise.chi2(&point) - chi2_best > threshold {
+    for v in grid_beyond(&problem.params[j], best.x[j], up, grid) {
+        let point = walk.at(v, &last.1);
+        if !crossed && walk.outside(&point) {
             crossed = true;
-            let (mut inside, mut outside) = (last.clone(), (v, point.clone()));
-            let accuracy = if free_j.is_angle() {
+            let accuracy = if problem.params[j].is_angle() {
                 ACCURACY_DEG
             } else {
                 ACCURACY_REL * best.x[j].abs()
             };
-            for _ in 0..BISECTIONS {
-                if (outside.0 - inside.0).abs() < 0.25 * accuracy {
-                    break;
-                }
-                let m = 0.5 * (inside.0 + outside.0);
-                let mid = (m, at(m, &inside.1));
-                chain.push(mid.clone());
-                if noise.chi2(&mid.1) - chi2_best > threshold {
-                    outside = mid;
-                } else {
-                    inside = mid;
-                }
-            }
+            walk.bisect(last.clone(), (v, point.clone()), accuracy, &mut chain);
         }
         chain.push((v, point.clone()));
         last = (v, point);
@@ -274,6 +248,72 @@ fn walk(
         chain.sort_by(|a, b| b.0.total_cmp(&a.0));
     }
     chain
+}
+
+/// The values of a `grid`-point grid over the key's bounds beyond `from`,
+/// in the walk's order: up, or down from it.
+fn grid_beyond(free: &Free, from: f64, up: bool, grid: usize) -> Vec<f64> {
+    let n = grid.max(2);
+    let values: Vec<f64> = (0..n)
+        .map(|k| free.value(k as f64 / (n - 1) as f64))
+        .collect();
+    if up {
+        values.into_iter().filter(|&v| v > from).collect()
+    } else {
+        values.into_iter().rev().filter(|&v| v < from).collect()
+    }
+}
+
+/// One key's profile walk: key `j` held at a value, the others
+/// re-optimised.
+struct Walk<'a> {
+    problem: &'a Problem<'a>,
+    j: usize,
+    others: Vec<usize>,
+    iterations: u64,
+    noise: &'a Noise,
+    chi2_best: f64,
+    threshold: f64,
+}
+
+impl Walk<'_> {
+    /// The best point with key `j` at `v`, polished from `from`.
+    fn at(&self, v: f64, from: &Point) -> Point {
+        let mut z = self.problem.scaled(&from.x);
+        z[self.j] = self.problem.params[self.j].scaled(v);
+        let tried = polish(self.problem, &z, &self.others, STEP, self.iterations);
+        best_of(&tried).clone()
+    }
+
+    /// Whether a point's Δχ² from the best is beyond the threshold.
+    fn outside(&self, point: &Point) -> bool {
+        self.noise.chi2(point) - self.chi2_best > self.threshold
+    }
+
+    /// Bisects the crossing between a point `inside` the threshold and one
+    /// `outside` until they are a quarter of `accuracy` apart (at most
+    /// [`BISECTIONS`] times), adding each midpoint to `chain`.
+    fn bisect(
+        &self,
+        mut inside: (f64, Point),
+        mut outside: (f64, Point),
+        accuracy: f64,
+        chain: &mut Vec<(f64, Point)>,
+    ) {
+        for _ in 0..BISECTIONS {
+            if (outside.0 - inside.0).abs() < 0.25 * accuracy {
+                break;
+            }
+            let m = 0.5 * (inside.0 + outside.0);
+            let mid = (m, self.at(m, &inside.1));
+            chain.push(mid.clone());
+            if self.outside(&mid.1) {
+                outside = mid;
+            } else {
+                inside = mid;
+            }
+        }
+    }
 }
 
 /// Pearson correlation of the free keys over the evaluated points within

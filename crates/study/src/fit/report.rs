@@ -4,8 +4,9 @@
 
 use super::objective::{force_curve, interpolate};
 use super::FitResult;
-use crate::csv;
 use crate::error::StudyError;
+use crate::field;
+use soilcut_io::CsvText;
 use soilcut_plot::{draw_panels, Panel, Series};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -83,13 +84,13 @@ impl FitResult {
     /// `fit.csv`: one row per free key: `key,start,lo,hi,best,lower,upper,verdict`
     /// (an interval's end is empty where it reaches the bound).
     pub fn csv(&self) -> String {
-        let mut out = csv::line(&[
+        let mut out = CsvText::named(&[
             "key", "start", "lo", "hi", "best", "lower", "upper", "verdict",
         ]);
         for (j, p) in self.params.iter().enumerate() {
             let end = |e: Option<f64>| e.map_or(String::new(), |x| x.to_string());
             let profile = self.profiles.get(j);
-            out.push_str(&csv::line(&[
+            out.fields(&[
                 p.key.clone(),
                 p.start.to_string(),
                 p.lo.to_string(),
@@ -98,21 +99,21 @@ impl FitResult {
                 end(profile.and_then(|p| p.lower)),
                 end(profile.and_then(|p| p.upper)),
                 self.verdict(j).to_string(),
-            ]));
+            ]);
         }
-        out
+        out.finish()
     }
 
     /// `curves.csv`: for each test and measured point, the measured force,
     /// its weight and the simulated force at the start and at the best
     /// values (empty where the start fails).
     pub fn curves_csv(&self) -> String {
-        let mut out = csv::line(&["test", "u", "measured", "weight", "start", "fitted"]);
+        let mut out = CsvText::named(&["test", "u", "measured", "weight", "start", "fitted"]);
         for (k, t) in self.tests.iter().enumerate() {
             let start = self.start_runs[k].as_ref().map(force_curve);
             let best = force_curve(&self.best_runs[k]);
             for (&(u, p), &w) in t.measured.iter().zip(&t.weights) {
-                out.push_str(&csv::line(&[
+                out.fields(&[
                     t.name.clone(),
                     u.to_string(),
                     p.to_string(),
@@ -121,10 +122,10 @@ impl FitResult {
                         .as_ref()
                         .map_or(String::new(), |c| interpolate(c, u).to_string()),
                     interpolate(&best, u).to_string(),
-                ]));
+                ]);
             }
         }
-        out
+        out.finish()
     }
 
     /// `profiles.csv`: `key,value,delta_chi2,rms`, then the re-optimised
@@ -137,26 +138,26 @@ impl FitResult {
             "rms".into(),
         ];
         header.extend(self.params.iter().map(|p| p.key.clone()));
-        let mut out = csv::line(&header);
+        let mut out = CsvText::named(&header);
         let chi2_min = self.chi2_min();
         for (p, profile) in self.params.iter().zip(&self.profiles) {
             for (v, pt) in &profile.points {
                 let mut row = vec![
                     p.key.clone(),
                     v.to_string(),
-                    csv::number(self.chi2(pt) - chi2_min),
-                    csv::number(pt.rms),
+                    field::number(self.chi2(pt) - chi2_min),
+                    field::number(pt.rms),
                 ];
                 row.extend(pt.x.iter().map(|x| x.to_string()));
-                out.push_str(&csv::line(&row));
+                out.fields(&row);
             }
         }
-        out
+        out.finish()
     }
 
     /// `search.csv`: one row per generation of the search.
     pub fn search_csv(&self) -> String {
-        let mut out = csv::line(&[
+        let mut out = CsvText::named(&[
             "generation",
             "evaluations",
             "best_rms",
@@ -164,15 +165,15 @@ impl FitResult {
             "infeasible",
         ]);
         for (g, gen) in self.generations.iter().enumerate() {
-            out.push_str(&csv::line(&[
+            out.fields(&[
                 g.to_string(),
                 gen.evaluations.to_string(),
                 gen.best_rms.to_string(),
                 gen.median_rms.to_string(),
                 gen.infeasible.to_string(),
-            ]));
+            ]);
         }
-        out
+        out.finish()
     }
 
     fn chi2(&self, point: &super::problem::Point) -> f64 {

@@ -39,6 +39,14 @@ pub(super) struct StateCheck<'a> {
 /// The invariants every increment keeps, which the model indexes by: a
 /// state that breaks one would not continue as any run does.
 pub(super) fn check_state(c: &StateCheck) -> Result<(), SnapshotError> {
+    check_nodes(c)?;
+    check_ground(c)?;
+    check_side_heaps(c)
+}
+
+/// The node columns: of one length, from the face to the end wall at
+/// most, undisturbed from a node among them.
+fn check_nodes(c: &StateCheck) -> Result<(), SnapshotError> {
     let n = c.n;
     if c.lengths.iter().any(|&l| l != n) {
         return Err(SnapshotError::invalid(
@@ -75,6 +83,13 @@ pub(super) fn check_state(c: &StateCheck) -> Result<(), SnapshotError> {
             format!("undisturbed from node {} of {n}", c.pristine_from),
         ));
     }
+    Ok(())
+}
+
+/// The floor below the deepest tip, unit weights > 0, the search's seed
+/// among the nodes.
+fn check_ground(c: &StateCheck) -> Result<(), SnapshotError> {
+    let n = c.n;
     if !(c.floor < 0.0 && -c.floor >= c.case.deepest()) {
         return Err(SnapshotError::invalid(
             "surface floor",
@@ -97,6 +112,13 @@ pub(super) fn check_state(c: &StateCheck) -> Result<(), SnapshotError> {
             format!("node {j} of {n}"),
         ));
     }
+    Ok(())
+}
+
+/// The side heaps: columns of one length within the surface, and none
+/// without a blade width.
+fn check_side_heaps(c: &StateCheck) -> Result<(), SnapshotError> {
+    let n = c.n;
     let side = c.side;
     let m = side.area.len();
     if side.height.len() != m || side.unit_weight.len() != m || m > n {

@@ -1,0 +1,6 @@
+//! The crate's integration tests, one module a file of tests/, built as one
+//! binary (one link instead of one a file): run one file's tests with
+//! `cargo test -p soilcut-bounds --test integration FILE::`.
+
+mod checks;
+mod domain;

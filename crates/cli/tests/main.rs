@@ -1,0 +1,13 @@
+//! The crate's integration tests, one module a file of tests/, built as one
+//! binary (one link instead of one a file): run one file's tests with
+//! `cargo test -p soilcut --test integration FILE::`.
+
+mod analytic;
+mod bounds;
+mod cli;
+mod module_cycles;
+mod plots;
+mod readme;
+mod references;
+mod study;
+mod test_targets;
