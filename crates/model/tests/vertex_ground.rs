@@ -4,7 +4,7 @@
 //! that follows what changes (its vertices do not multiply with the
 //! resolution).
 
-mod common;
+use crate::common;
 
 use soilcut_model::{Simulation, SnapshotError};
 
