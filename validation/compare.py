@@ -15,7 +15,7 @@ by default the yardstick's, `damp0` (the cuts without numerical damping at
 Prints the tables docs/validation.md quotes and, for the yardstick only,
 writes validation/bands.json, the band of soilcut / DEM ratios that
 crates/io/tests/validation.rs holds soilcut to, and the ground pictures
-docs/img/validation_surface_NAME.svg.
+docs/img/validation_surface_<name>.svg.
 
 Definitions (the same for soilcut and the DEM):
 - force: the resultant on the blade's face per unit width over gamma0 d^2

@@ -8,7 +8,7 @@
 # root:   bash validation/run.sh      (a few minutes)
 # The DEM is the yardstick campaign (validation/dem/campaigns.py: `damp0`,
 # the cuts without numerical damping at 20 mm/s; its seed means are
-# validation/dem/results/cut_NAME_damp0_mean.csv, from summarise.py
+# validation/dem/results/cut_<name>_damp0_mean.csv, from summarise.py
 # --campaign damp0).
 #         bash validation/run.sh reference
 # is the "before" record of issue 31: the keys of the damped element tests
@@ -46,7 +46,8 @@ for name in vertical raked30 deep; do
     --set 'title="element-test keys, former face friction rule (sign)"'
 done
 # Calibrate on the vertical cut (friction angles only), predict the others.
-"$soilcut" fit "$cases/vertical.toml" \
+calibrated=vertical
+"$soilcut" fit "$cases/$calibrated.toml" \
   --measured "validation/dem/results/cut_vertical${suffix}_mean.csv" \
   --free soil.friction.initial,soil.friction.peak,soil.friction.residual \
   --objective means:5 --evaluations 160 --polish 20 --profile-points 0 --jobs 2 \

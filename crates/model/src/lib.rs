@@ -30,6 +30,7 @@ pub mod rake;
 pub mod search;
 pub mod simulation;
 pub mod spill;
+pub mod step;
 mod stopping;
 pub mod summary;
 pub mod surface;

@@ -20,10 +20,11 @@ use crate::rake::Rake;
 use crate::search::{Choice, Observer, Search, SearchInput};
 use crate::spill::SideHeaps;
 use crate::surface::Surface;
-use std::fmt;
 
 mod advance;
 pub mod snapshot;
+
+pub use crate::step::{ProfilePoint, StepError, StepRecord};
 
 pub use advance::AdvanceError;
 pub use snapshot::SnapshotError;
@@ -40,115 +41,6 @@ fn fresh_angles(laws: &Laws) -> (f64, f64) {
 const GROW_DEPTHS: f64 = 4.0;
 /// No mechanism reaches further than this many depths ahead of the blade.
 const MAX_REACH_DEPTHS: f64 = 1000.0;
-
-/// What one increment produced. Forces and masses are per unit width, or
-/// per blade for a blade of finite width (`blade.width`). The fields are
-/// the columns of `history.csv`, in its order (soilcut-io's `HISTORY`
-/// names them once for the files and the front ends).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct StepRecord {
-    /// Increment number, from 1.
-    pub step: usize,
-    /// Blade displacement at which the mechanism is evaluated (0 for step 1).
-    pub u: f64,
-    /// u / d, d the reference depth `blade.depth`.
-    pub u_over_d: f64,
-    /// P*: resultant blade force.
-    pub force: f64,
-    /// P* / (γ0 d²), d the reference depth `blade.depth` (P* / (γ0 d² w)
-    /// for a blade of width w).
-    pub force_norm: f64,
-    /// Horizontal (draft) component P* cos φw.
-    pub force_h: f64,
-    /// Vertical component P* sin φw, upward on the blade.
-    pub force_v: f64,
-    /// β*, degrees.
-    pub beta_deg: f64,
-    /// Emergence point of the slip line (lower band boundary).
-    pub x_emergence: f64,
-    /// Weight of soil ahead of the blade after the increment (ground that
-    /// existed at the start).
-    pub mass: f64,
-    /// y of the emergence point.
-    pub y_emergence: f64,
-    /// Friction angle of the chosen mechanism, degrees.
-    pub friction_deg: f64,
-    /// Δut of the band (slip line) in this increment.
-    pub slip: f64,
-    /// Band dilation angle ψ of the chosen mechanism, degrees.
-    pub dilation_deg: f64,
-    /// Area added by the band's dilation in this increment (Δuv A0 / dB).
-    pub dilation_area: f64,
-    /// Depth of the blade tip during the increment.
-    pub depth: f64,
-    /// Weight of soil that has spilled around the blade's edges into the
-    /// side heaps (0 in plane strain): `mass + mass_spilled` is conserved.
-    pub mass_spilled: f64,
-}
-
-/// Why an increment could not be computed.
-#[derive(Clone, Debug, PartialEq)]
-pub enum StepError {
-    /// No candidate satisfies β > 0, β + φ + φw < 90° within reach.
-    NoAdmissibleMechanism {
-        /// The increment, from 1.
-        step: usize,
-        /// Blade displacement at its start.
-        u: f64,
-    },
-    /// No admissible slip line emerges before the end wall (`bin.length`).
-    NoMechanismBeforeWall {
-        /// The increment, from 1.
-        step: usize,
-        /// Blade displacement at its start.
-        u: f64,
-        /// `bin.length`, the wall's distance from the blade's start.
-        length: f64,
-    },
-    /// A step asked for after the case's travel has been reached: the
-    /// caller's mistake, not the soil's (`advance_to` goes further).
-    TravelReached {
-        /// The increments done, all of the case's.
-        steps: usize,
-    },
-}
-
-impl fmt::Display for StepError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            StepError::NoAdmissibleMechanism { step, u } => write!(
-                f,
-                "no admissible mechanism at increment {step} (u = {u}): every candidate violates β > 0 and β + φ + φw < 90°"
-            ),
-            StepError::NoMechanismBeforeWall { step, u, length } => write!(
-                f,
-                "no admissible mechanism at increment {step} (u = {u}) emerges before the end wall at bin.length = {length}: shorten run.travel or lengthen the bin"
-            ),
-            StepError::TravelReached { steps } => write!(
-                f,
-                "the case's travel has been reached ({steps} increments): no step beyond run.travel; advance_to(x) goes further"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for StepError {}
-
-/// A point of the free surface.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ProfilePoint {
-    /// x, physical (the face at x = u for a vertical blade).
-    pub x: f64,
-    /// y: surface height (0: undisturbed ground).
-    pub y: f64,
-    /// ut: shear accumulated by the soil at the node.
-    pub accumulated_shear: f64,
-    /// γ of the node's soil column.
-    pub unit_weight: f64,
-    /// Crest height of the side heaps beside the blade's path (0 in plane
-    /// strain), above the original ground.
-    pub ridge_height: f64,
-}
 
 /// A running simulation of one case.
 #[derive(Clone, Debug)]

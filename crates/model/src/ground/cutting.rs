@@ -14,7 +14,7 @@ use crate::case::{BandShearRule, Case, CaseError, UnitWeightRule};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
 use crate::mechanism::Loads;
-use crate::simulation::{ProfilePoint, StepError, StepRecord};
+use crate::step::{ProfilePoint, StepError, StepRecord};
 
 /// Flat fresh ground appended when the search reaches the end, in d.
 const GROW_DEPTHS: f64 = 4.0;
