@@ -19,19 +19,20 @@ use crate::surface::Surface;
 use std::ops::Range;
 
 /// Violations smaller than this fraction of s are round-off, not slopes.
-const SLOPE_TOLERANCE: f64 = 1e-9;
+pub(crate) const SLOPE_TOLERANCE: f64 = 1e-9;
 /// Alternating passes before giving up on the last round-off residue.
-const MAX_PASSES: usize = 64;
+pub(crate) const MAX_PASSES: usize = 64;
 
 /// A pooled run of nodes: first node, node count, Σw, Σw g and their
 /// quotient, the pool's mean of g (kept, not recomputed per comparison).
+/// The vertex ground's avalanching (`ground::avalanche`) pools the same.
 #[derive(Clone, Copy, Debug)]
-struct Pool {
-    start: usize,
-    len: usize,
-    weight: f64,
-    weighted: f64,
-    mean: f64,
+pub(crate) struct Pool {
+    pub(crate) start: usize,
+    pub(crate) len: usize,
+    pub(crate) weight: f64,
+    pub(crate) weighted: f64,
+    pub(crate) mean: f64,
 }
 
 impl Pool {
@@ -49,7 +50,7 @@ impl Pool {
     }
 
     /// This pool and the run `next` that follows it.
-    fn merge(&mut self, next: &Pool) {
+    pub(crate) fn merge(&mut self, next: &Pool) {
         self.len += next.len;
         self.weight += next.weight;
         self.weighted += next.weighted;

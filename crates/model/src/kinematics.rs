@@ -104,7 +104,11 @@ impl Kinematics {
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         surface.face = advance.face;
         let deepening = advance.deepening;
-        let motion = BandMotion::new(choice, rake, surface.scheme.spacing);
+        let motion = BandMotion::new(
+            (choice.tan_beta, choice.dilation),
+            rake,
+            surface.scheme.spacing,
+        );
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
@@ -256,11 +260,13 @@ impl Kinematics {
 /// The motion of the band's block: rise v0 tan(β + ψ) on the grid, slip
 /// Δut = λ cos ψ with λ = v0 sin α / sin(α + β + ψ) (`Rake`); `None` where
 /// β + ψ ≥ 90°.
+/// The node grid's update and the vertex ground's (`ground::motion`) both
+/// move the soil by it.
 #[derive(Clone, Copy, Debug)]
-struct BandMotion {
-    rise: f64,
-    slip: f64,
-    tan_psi: f64,
+pub(crate) struct BandMotion {
+    pub(crate) rise: f64,
+    pub(crate) slip: f64,
+    pub(crate) tan_psi: f64,
 }
 
 impl BandMotion {
@@ -268,8 +274,7 @@ impl BandMotion {
     /// which on the grid is (v0, v0 tan θ'), a rise of v0 tan θ'; its slip
     /// Δut = v0 cos ψ √(1 + tan² θ) / (1 + cot α tan θ) (M36), for a vertical
     /// blade Δut = v0 cos ψ / cos(β + ψ) with Δuv = Δut tan ψ (M18).
-    fn new(choice: &Choice, rake: &Rake, dx: f64) -> Option<Self> {
-        let (t, psi) = (choice.tan_beta, choice.dilation);
+    pub(crate) fn new((t, psi): (f64, f64), rake: &Rake, dx: f64) -> Option<Self> {
         let tan_psi = psi.tan();
         let run = 1.0 - t * tan_psi;
         if run <= 0.0 {
@@ -285,10 +290,9 @@ impl BandMotion {
 
     /// The slip line's motion: the block slides along it, rise v0 tan β
     /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
-    fn slip_line(choice: &Choice, rake: &Rake, v0: f64) -> Self {
-        let t = choice.tan_beta;
+    pub(crate) fn slip_line((grid_slope, t): (f64, f64), rake: &Rake, v0: f64) -> Self {
         BandMotion {
-            rise: v0 * choice.grid_slope,
+            rise: v0 * grid_slope,
             slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
             tan_psi: 0.0,
         }
@@ -301,7 +305,11 @@ impl BandMotion {
 /// M22).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
     let j = choice.node;
-    let BandMotion { rise, slip, .. } = BandMotion::slip_line(choice, rake, surface.scheme.spacing);
+    let BandMotion { rise, slip, .. } = BandMotion::slip_line(
+        (choice.grid_slope, choice.tan_beta),
+        rake,
+        surface.scheme.spacing,
+    );
     let h = &mut surface.height;
     // y'_{i+1} = y_i + v0 tan β*, b ≤ i < j (M14).
     h.copy_within(blade..j, blade + 1);

@@ -18,6 +18,9 @@
 //! A mechanism is admissible only for β > 0 and β + φ + φw < 90°, i.e. for
 //! t > 0 and a positive denominator.
 
+use crate::case::Case;
+use crate::rake::Rake;
+
 /// Eq. (1) for one friction angle φ and wall friction φw, precomputed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ForceFactor {
@@ -198,6 +201,29 @@ pub struct Loads {
 }
 
 impl Loads {
+    /// The loads of `case`'s blade whose face holds soil to `rise` above
+    /// the tip (a face Lb = rise / sin α long, reaching rise cot α behind
+    /// the tip; M8).
+    pub fn at_face(case: &Case, rake: &Rake, rise: f64) -> Self {
+        let sin_alpha = if case.blade.rake == 90.0 {
+            1.0
+        } else {
+            case.blade.rake.to_radians().sin()
+        };
+        let offset = rake.offset;
+        Loads {
+            surcharge: case.soil.surcharge,
+            adhesion: case.blade.adhesion * rise / sin_alpha,
+            cohesion: case.soil.cohesion,
+            face_run: rise * rake.cot,
+            rake_offset: if offset == 0.0 {
+                (0.0, 1.0)
+            } else {
+                offset.sin_cos()
+            },
+        }
+    }
+
     /// P of a candidate of weight W whose slip line runs `length` ahead of
     /// the tip, at tan β: Eq. (1) with cohesion, adhesion and surcharge
     /// (M8), divided through by cos β. Each added term is ≥ 0 (adhesion: validated), so

@@ -201,26 +201,9 @@ impl Simulation {
 
     /// Cohesion, adhesion and surcharge for this increment's face contact.
     fn loads(&self) -> Loads {
-        let c = &self.case;
-        // The face from the tip to the surface: y_b + d high, Lb long.
+        // The face from the tip to the surface: y_b + d high.
         let rise = self.surface.height[self.surface.face.node] + self.tip_depth();
-        let sin_alpha = if c.blade.rake == 90.0 {
-            1.0
-        } else {
-            c.blade.rake.to_radians().sin()
-        };
-        let offset = self.rake.offset;
-        Loads {
-            surcharge: c.soil.surcharge,
-            adhesion: c.blade.adhesion * rise / sin_alpha,
-            cohesion: c.soil.cohesion,
-            face_run: rise * self.rake.cot,
-            rake_offset: if offset == 0.0 {
-                (0.0, 1.0)
-            } else {
-                offset.sin_cos()
-            },
-        }
+        Loads::at_face(&self.case, &self.rake, rise)
     }
 
     /// P / (γ0 d²), d the reference depth `blade.depth`, for P per unit

@@ -148,9 +148,18 @@ fn random_depth_paths_run_and_conserve() {
 /// state physical, and the pruned search's force that of the unpruned
 /// landscape (every seventh increment).
 fn runs_and_conserves(case: &Case) {
+    // The least, or a near-tie nearer the blade (`search`).
+    runs_and_keeps(case, |force, least| {
+        force >= least && force <= least * (1.0 + TIE_TOLERANCE)
+    });
+}
+
+/// Runs `case` to the end: positive finite forces, mass kept, every node's
+/// or piece's state physical, and `chosen(force, least)` for the force of
+/// every seventh increment against the least of its landscape.
+fn runs_and_keeps(case: &Case, chosen: impl Fn(f64, f64) -> bool) {
     let fail = |e: &dyn std::fmt::Display| -> ! { panic!("{e}: {case:?}") };
     let mut sim = Simulation::new(case).unwrap_or_else(|e| fail(&e));
-    let mut history = Vec::new();
     while !sim.is_done() {
         let least = sim.steps_done().is_multiple_of(7).then(|| {
             let candidates = sim.landscape().unwrap_or_else(|e| fail(&e));
@@ -160,21 +169,23 @@ fn runs_and_conserves(case: &Case) {
                 .fold(f64::INFINITY, f64::min)
         });
         let record = sim.step().unwrap_or_else(|e| fail(&e));
+        let force = record.force;
+        assert!(force.is_finite() && force > 0.0, "{record:?}: {case:?}");
         if let Some(least) = least {
-            // The least, or a near-tie nearer the blade (`search`).
-            let tied = record.force >= least && record.force <= least * (1.0 + TIE_TOLERANCE);
-            assert!(tied, "step {}: {} vs {least}", record.step, record.force);
+            let step = record.step;
+            assert!(
+                chosen(force, least),
+                "step {step}: {force} vs {least}: {case:?}"
+            );
         }
-        history.push(record);
     }
-    assert!(
-        history.iter().all(|r| r.force.is_finite() && r.force > 0.0),
-        "a force not positive and finite: {case:?}"
-    );
     let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
     assert!(drift.abs() < 1e-9, "mass drift {drift:e}: {case:?}");
     for p in sim.profile() {
-        assert!(p.unit_weight > 0.3 && p.unit_weight < 3.0, "γ {p:?}");
+        assert!(
+            p.unit_weight > 0.3 && p.unit_weight < 3.0,
+            "γ {p:?}: {case:?}"
+        );
         assert!(p.accumulated_shear >= 0.0, "ut {p:?}");
     }
 }
@@ -236,7 +247,6 @@ fn ensemble(case: &Case, windows: usize) -> (Vec<Spread>, Spread) {
     ((0..windows).map(spread).collect(), spread(windows))
 }
 
-/// `case` at `increment` and `node_spacing`.
 /// `case` at `increment` and `node_spacing`, with `samples` per band width
 /// in the search (0: every node).
 fn at(case: &Case, increment: f64, node_spacing: f64, samples: f64) -> Case {
@@ -291,35 +301,6 @@ fn random_cases_on_the_vertex_ground_run_and_conserve() {
         case.blade.depth_path.clear();
         case.blade.adhesion = 0.0;
         case.run.vertex_spacing = case.blade.depth / rng.uniform(25.0, 100.0);
-        let fail = |e: &dyn std::fmt::Display| -> ! { panic!("{e}: {case:?}") };
-        let mut sim = Simulation::new(&case).unwrap_or_else(|e| fail(&e));
-        while !sim.is_done() {
-            let least = sim.steps_done().is_multiple_of(7).then(|| {
-                let candidates = sim.landscape().unwrap_or_else(|e| fail(&e));
-                candidates
-                    .iter()
-                    .map(|c| c.force)
-                    .fold(f64::INFINITY, f64::min)
-            });
-            let record = sim.step().unwrap_or_else(|e| fail(&e));
-            assert!(record.force.is_finite() && record.force > 0.0, "{record:?}");
-            if let Some(least) = least {
-                let within = record.force <= least * (1.0 + 1e-3 + 1e-12);
-                assert!(
-                    within,
-                    "step {}: {} vs {least}: {case:?}",
-                    record.step, record.force
-                );
-            }
-        }
-        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
-        assert!(drift.abs() < 1e-9, "mass drift {drift:e}: {case:?}");
-        for p in sim.profile() {
-            assert!(
-                p.unit_weight > 0.3 && p.unit_weight < 3.0,
-                "γ {p:?}: {case:?}"
-            );
-            assert!(p.accumulated_shear >= 0.0, "ut {p:?}");
-        }
+        runs_and_keeps(&case, |force, least| force <= least * (1.0 + 1e-3 + 1e-12));
     });
 }

@@ -18,23 +18,7 @@
 //! conserved exactly.
 
 use super::Ground;
-
-/// Violations smaller than this fraction of s times the piece are
-/// round-off, not slopes.
-const SLOPE_TOLERANCE: f64 = 1e-9;
-/// Alternating passes before giving up on the last round-off residue.
-const MAX_PASSES: usize = 64;
-
-/// A pooled run of vertices: the first, the count, Σ w, Σ w g and their
-/// quotient.
-#[derive(Clone, Copy, Debug)]
-struct Pool {
-    start: usize,
-    len: usize,
-    weight: f64,
-    weighted: f64,
-    mean: f64,
-}
+use crate::avalanche::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 
 impl Ground {
     /// Relaxes every piece steeper than the angle of repose (`tan_repose`,
@@ -117,15 +101,9 @@ impl Ground {
                 if last.mean - pool.mean <= SLOPE_TOLERANCE * gap {
                     break;
                 }
-                let last = pools.pop().expect("a pool");
-                pool = Pool {
-                    start: last.start,
-                    len: last.len + pool.len,
-                    weight: last.weight + pool.weight,
-                    weighted: last.weighted + pool.weighted,
-                    mean: 0.0,
-                };
-                pool.mean = pool.weighted / pool.weight;
+                let mut last = pools.pop().expect("a pool");
+                last.merge(&pool);
+                pool = last;
                 pooled = true;
             }
             pools.push(pool);

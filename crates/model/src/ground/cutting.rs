@@ -11,9 +11,11 @@ use super::motion::Cut;
 use super::search::{Pick, Scan, VertexSearch};
 use super::Ground;
 use crate::case::{BandShearRule, Case, CaseError, UnitWeightRule};
+use crate::kinematics::BandMotion;
 use crate::landscape::Candidate;
 use crate::laws::Laws;
 use crate::mechanism::Loads;
+use crate::rake::Rake;
 use crate::step::{ProfilePoint, StepError, StepRecord};
 
 /// Flat fresh ground appended when the search reaches the end, in d.
@@ -28,6 +30,7 @@ const MAX_REACH_DEPTHS: f64 = 1000.0;
 pub struct Cutting {
     case: Case,
     laws: Laws,
+    rake: Rake,
     ground: Ground,
     search: VertexSearch,
     done: usize,
@@ -47,6 +50,7 @@ impl Cutting {
         let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
         Ok(Cutting {
             laws: Laws::new(case),
+            rake: Rake::new(case.blade.rake),
             ground,
             search: VertexSearch::default(),
             done: 0,
@@ -62,6 +66,7 @@ impl Cutting {
         search.evaluations = evaluations;
         Cutting {
             laws: Laws::new(case),
+            rake: Rake::new(case.blade.rake),
             ground,
             search,
             done,
@@ -138,7 +143,7 @@ impl Cutting {
             Some(moved) => moved,
             None => self
                 .ground
-                .apply(&slip_line(&cut, pick.tan_beta))
+                .apply(&slip_line(&cut, pick.tan_beta, &self.rake))
                 .expect("a slip line always moves"),
         };
         let tan_repose = self.case.soil.repose.to_radians().tan();
@@ -182,7 +187,7 @@ impl Cutting {
         };
         let scan = Scan {
             laws: &self.laws,
-            loads: loads(c, self.ground.y[0] + d),
+            loads: Loads::at_face(c, &self.rake, self.ground.y[0] + d),
             face,
             depth: d,
             band_width,
@@ -209,7 +214,7 @@ impl Cutting {
     fn cut(&self, pick: &Pick) -> Cut {
         let (c, t) = (&self.case, pick.tan_beta);
         let v0 = c.run.increment;
-        let band = Cut {
+        let line = Cut {
             depth: c.blade.depth,
             emergence: pick.x,
             thickness: c.soil.band_width * (1.0 + t * t).sqrt(),
@@ -219,41 +224,29 @@ impl Cutting {
             advance: v0,
             rise: 0.0,
             slip: 0.0,
-            tan_psi: pick.angles.dilation.tan(),
+            tan_psi: 0.0,
         };
-        let run = 1.0 - t * band.tan_psi;
-        if band.thickness == 0.0 || run <= 0.0 {
-            return slip_line(&band, t);
-        }
-        let rho = (t + band.tan_psi) / run;
-        Cut {
-            rise: v0 * rho,
-            slip: v0 * pick.angles.dilation.cos() * (1.0 + rho * rho).sqrt(),
-            ..band
+        match BandMotion::new((t, pick.angles.dilation), &self.rake, v0) {
+            Some(m) if line.thickness > 0.0 => Cut {
+                rise: m.rise,
+                slip: m.slip,
+                tan_psi: m.tan_psi,
+                ..line
+            },
+            _ => slip_line(&line, t, &self.rake),
         }
     }
 }
 
 /// The slip line of `band`'s lower boundary (M14, M15).
-fn slip_line(band: &Cut, tan_beta: f64) -> Cut {
+fn slip_line(band: &Cut, tan_beta: f64, rake: &Rake) -> Cut {
+    let motion = BandMotion::slip_line((tan_beta, tan_beta), rake, band.advance);
     Cut {
         thickness: 0.0,
-        rise: band.advance * tan_beta,
-        slip: band.advance * (1.0 + tan_beta * tan_beta).sqrt(),
-        tan_psi: 0.0,
+        rise: motion.rise,
+        slip: motion.slip,
+        tan_psi: motion.tan_psi,
         ..*band
-    }
-}
-
-/// The loads of a vertical blade whose face holds soil to `rise` above
-/// the tip (M8).
-fn loads(case: &Case, rise: f64) -> Loads {
-    Loads {
-        surcharge: case.soil.surcharge,
-        adhesion: case.blade.adhesion * rise,
-        cohesion: case.soil.cohesion,
-        face_run: 0.0,
-        rake_offset: (0.0, 1.0),
     }
 }
 

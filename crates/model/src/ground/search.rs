@@ -308,12 +308,12 @@ impl VertexSearch {
         let run = x - ground.x[0];
         let e = scan.band_width * (1.0 + t * t).sqrt();
         let flat = (e / t).min(run);
-        let back = piece_before(ground, k, x - flat);
+        let back = ground.piece_at(x - flat).min(k);
         let s = (y - ground.height_on(back, x - flat)) / flat;
         let length = if t > s { (e / (t - s)).min(run) } else { run };
         let rear = x - length;
         let hi = self.integral(ground, k, x);
-        let lo = self.integral(ground, piece_before(ground, k, rear), rear);
+        let lo = self.integral(ground, ground.piece_at(rear).min(k), rear);
         let mean = |i: usize| (hi[i] - lo[i]) / length;
         BandAngles {
             friction: mean(0),
@@ -398,10 +398,4 @@ impl VertexSearch {
             pb
         }
     }
-}
-
-/// The piece holding x among pieces 0..=k (x ≤ x_{k+1}), by bisection:
-/// a footprint's rear may lie dozens of short pieces behind its front.
-fn piece_before(ground: &Ground, k: usize, x: f64) -> usize {
-    ground.x[1..=k].partition_point(|&v| v <= x)
 }

@@ -43,7 +43,8 @@ impl Kinematics {
         let area_before = region_area(surface, b, j + 1);
         self.save(surface, b, j);
         let old_face = (surface.x(b), surface.segment(b));
-        let band_motion = BandMotion::new(choice, rake, v0).filter(|_| band.thickness > 0.0);
+        let band_motion = BandMotion::new((choice.tan_beta, choice.dilation), rake, v0)
+            .filter(|_| band.thickness > 0.0);
         let traced =
             band_motion.and_then(|m| self.trace_image(surface, band, m.rise, v0).map(|x| (m, x)));
         let (motion, last_block_x, thickness) = match traced {
@@ -53,7 +54,7 @@ impl Kinematics {
                     thickness: 0.0,
                     ..*band
                 };
-                let m = BandMotion::slip_line(choice, rake, v0);
+                let m = BandMotion::slip_line((choice.grid_slope, choice.tan_beta), rake, v0);
                 let x = self
                     .trace_image(surface, &slip_line, m.rise, v0)
                     .expect("a slip line's image");
