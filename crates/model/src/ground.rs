@@ -140,6 +140,26 @@ impl Ground {
         k.saturating_sub(1).min(self.pieces() - 1)
     }
 
+    /// `piece_at(x)`, found by walking from piece `hint`: the search's
+    /// footprints move along the ground a little at a time, so a short walk
+    /// beats the binary search, whose cache misses were a fifth of a run.
+    /// A walk longer than `NEAR` falls back to the binary search.
+    pub fn piece_near(&self, hint: usize, x: f64) -> usize {
+        const NEAR: usize = 8;
+        let last = self.pieces() - 1;
+        let mut k = hint.min(last);
+        for _ in 0..NEAR {
+            if k > 0 && self.x[k] > x {
+                k -= 1;
+            } else if k < last && self.x[k + 1] <= x {
+                k += 1;
+            } else {
+                return k;
+            }
+        }
+        self.piece_at(x)
+    }
+
     /// Height of the surface at x, on the straight piece holding it.
     pub fn height_at(&self, x: f64) -> f64 {
         self.height_on(self.piece_at(x), x)

@@ -36,6 +36,9 @@ const SLACK: f64 = 0.02;
 /// A vertex near the least's emergence point takes the band if its force
 /// is within this fraction of the least.
 const SNAP_SLACK: f64 = 1e-3;
+/// Every LEAD-th sample is evaluated first: a bar near the least before
+/// the rest (`fill_samples`).
+const LEAD: usize = 8;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
 
@@ -75,6 +78,15 @@ pub(crate) struct Pick {
     pub(crate) angles: BandAngles,
 }
 
+/// A first-stage candidate: its emergence point, piece and force (NaN
+/// until evaluated, infinite if inadmissible or pruned).
+#[derive(Clone, Copy, Debug)]
+struct Sample {
+    x: f64,
+    piece: usize,
+    force: f64,
+}
+
 /// Prefix sums at vertex k: the integrals from the face to x_k.
 #[derive(Clone, Copy, Debug, Default)]
 struct Row {
@@ -92,11 +104,13 @@ pub(crate) struct VertexSearch {
     rows: Vec<Row>,
     /// φ, ψ of each piece scanned (radians).
     angles: Vec<(f64, f64)>,
-    samples: Vec<(f64, f64)>,
+    samples: Vec<Sample>,
     /// The least φ of the pieces scanned and Eq. (1) at it: a band's mean
     /// φ is no less, so W (P/W)(β, φ_least) bounds its force (as on the
     /// node grid, `Lower::can_beat`).
     least: Option<(f64, Lower)>,
+    /// The pieces of the last footprint's two ends (`Ground::piece_near`).
+    hints: [usize; 2],
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
     /// Every candidate the first stage evaluates, unpruned, when set
@@ -108,6 +122,7 @@ impl VertexSearch {
     /// The least-force mechanism, if any is admissible before `scan.reach`.
     pub(crate) fn run(&mut self, ground: &mut Ground, scan: &Scan) -> Option<Pick> {
         self.start();
+        let stride = if self.observed.is_some() { 1 } else { LEAD };
         let mut best: Option<Pick> = None;
         let mut k = 0;
         loop {
@@ -121,9 +136,10 @@ impl VertexSearch {
             if self.beyond_reach(ground, scan, k, best.as_ref()) {
                 break;
             }
-            self.sample_piece(ground, scan, k, &mut best);
+            self.sample_piece(ground, scan, (k, stride), &mut best);
             k += 1;
         }
+        self.fill_samples(ground, scan, &mut best);
         let best = self.narrow(ground, scan, best?);
         Some(self.snap(ground, scan, best))
     }
@@ -156,6 +172,7 @@ impl VertexSearch {
         self.angles.clear();
         self.samples.clear();
         self.least = None;
+        self.hints = [0, 0];
         self.rows.push(Row {
             least_slope: f64::INFINITY,
             ..Row::default()
@@ -206,30 +223,75 @@ impl VertexSearch {
     }
 
     /// The first stage on piece k: candidates from x_k (not the face) at
-    /// spacing `scan.sample`.
-    fn sample_piece(&mut self, ground: &Ground, scan: &Scan, k: usize, best: &mut Option<Pick>) {
+    /// spacing `scan.sample`, of which every `stride`-th along the ground
+    /// is evaluated now (the lead) and the rest by `fill_samples`.
+    fn sample_piece(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        (k, stride): (usize, usize),
+        best: &mut Option<Pick>,
+    ) {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
         let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
         for i in usize::from(k == 0)..n {
             let x = xa + (xb - xa) * i as f64 / n as f64;
-            let bar = match (&self.observed, &*best) {
-                (None, Some(b)) => b.force * (1.0 + SLACK),
-                _ => f64::INFINITY,
+            let force = if self.samples.len() % stride == 0 {
+                self.sample(ground, scan, (k, x), best)
+            } else {
+                f64::NAN
             };
-            let force = match self.evaluate(ground, scan, (k, x), bar) {
-                Some(pick) => {
-                    if let Some(observed) = &mut self.observed {
-                        observed.push(pick);
-                    }
-                    if best.is_none_or(|b| pick.force < b.force) {
-                        *best = Some(pick);
-                    }
-                    pick.force
-                }
-                None => f64::INFINITY,
-            };
-            self.samples.push((x, force));
+            self.samples.push(Sample { x, piece: k, force });
         }
+    }
+
+    /// The samples the lead left, in order along the ground, against the
+    /// best force so far: with the lead's best as the bar from the start,
+    /// the samples short of the least are mostly pruned, where scanning
+    /// from the face made each of them the best so far in turn. Samples
+    /// beyond the stopping rule (M31) under the best found are dropped.
+    fn fill_samples(&mut self, ground: &Ground, scan: &Scan, best: &mut Option<Pick>) {
+        let mut samples = std::mem::take(&mut self.samples);
+        let mut piece = usize::MAX;
+        for i in 0..samples.len() {
+            let k = samples[i].piece;
+            if k != piece {
+                piece = k;
+                if self.beyond_reach(ground, scan, k, best.as_ref()) {
+                    samples.truncate(i);
+                    break;
+                }
+            }
+            if samples[i].force.is_nan() {
+                samples[i].force = self.sample(ground, scan, (k, samples[i].x), best);
+            }
+        }
+        self.samples = samples;
+    }
+
+    /// One first-stage candidate: its force (infinite if inadmissible or
+    /// pruned), taken as the best if it is.
+    fn sample(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        (k, x): (usize, f64),
+        best: &mut Option<Pick>,
+    ) -> f64 {
+        let bar = match (&self.observed, &*best) {
+            (None, Some(b)) => b.force * (1.0 + SLACK),
+            _ => f64::INFINITY,
+        };
+        let Some(pick) = self.evaluate(ground, scan, (k, x), bar) else {
+            return f64::INFINITY;
+        };
+        if let Some(observed) = &mut self.observed {
+            observed.push(pick);
+        }
+        if best.is_none_or(|b| pick.force < b.force) {
+            *best = Some(pick);
+        }
+        pick.force
     }
 
     /// The candidate emerging at x on piece k (M49; the prefix sums must
@@ -287,7 +349,7 @@ impl VertexSearch {
     /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
     /// M17); for a slip line, piece k's.
     fn footprint_angles(
-        &self,
+        &mut self,
         ground: &Ground,
         scan: &Scan,
         k: usize,
@@ -308,12 +370,14 @@ impl VertexSearch {
         let run = x - ground.x[0];
         let e = scan.band_width * (1.0 + t * t).sqrt();
         let flat = (e / t).min(run);
-        let back = ground.piece_at(x - flat).min(k);
+        self.hints[0] = ground.piece_near(self.hints[0], x - flat);
+        let back = self.hints[0].min(k);
         let s = (y - ground.height_on(back, x - flat)) / flat;
         let length = if t > s { (e / (t - s)).min(run) } else { run };
         let rear = x - length;
         let hi = self.integral(ground, k, x);
-        let lo = self.integral(ground, ground.piece_at(rear).min(k), rear);
+        self.hints[1] = ground.piece_near(self.hints[1], rear);
+        let lo = self.integral(ground, self.hints[1].min(k), rear);
         let mean = |i: usize| (hi[i] - lo[i]) / length;
         BandAngles {
             friction: mean(0),
@@ -343,18 +407,18 @@ impl VertexSearch {
         let bar = best.force * (1.0 + SLACK);
         let samples = std::mem::take(&mut self.samples);
         for i in 0..samples.len() {
-            let (x, f) = samples[i];
+            let Sample { x, force: f, .. } = samples[i];
             let left = if i == 0 {
                 f64::INFINITY
             } else {
-                samples[i - 1].1
+                samples[i - 1].force
             };
-            let right = samples.get(i + 1).map_or(f64::INFINITY, |s| s.1);
+            let right = samples.get(i + 1).map_or(f64::INFINITY, |s| s.force);
             if !(f <= bar && f <= left && f <= right) {
                 continue;
             }
-            let lo = if i == 0 { x } else { samples[i - 1].0 };
-            let hi = samples.get(i + 1).map_or(x, |s| s.0);
+            let lo = if i == 0 { x } else { samples[i - 1].x };
+            let hi = samples.get(i + 1).map_or(x, |s| s.x);
             if let Some(pick) = self.golden(ground, scan, (lo, hi), bar) {
                 if pick.force < best.force {
                     best = pick;
