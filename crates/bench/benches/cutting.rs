@@ -11,13 +11,13 @@ fn main() {
     divan::main();
 }
 
-/// Whole run of `cases/paper/fig5.toml` at increments d/200 to d/2000
-/// with the default search (`docs/performance.md`: run time against the
-/// increment).
+/// Whole run of `cases/paper/fig5.toml` on the node grid (nodes every
+/// increment) at increments d/200 to d/2000 with the default search
+/// (`docs/performance.md`: run time against the increment).
 #[divan::bench(args = [200, 250, 500, 1000, 2000], sample_count = 3, sample_size = 1)]
 fn fig5_run(bencher: Bencher, per_depth: u32) {
     let increment = format!("run.increment={}", 20.0 / per_depth as f64);
-    let case = shipped_case("paper/fig5.toml", &[&increment]);
+    let case = shipped_case("paper/fig5.toml", &[&increment, "run.vertex_spacing=0"]);
     let evaluations = run(&case);
     bencher
         .counter(ItemsCount::new(evaluations))
@@ -49,17 +49,16 @@ fn fig5_run_vertices(bencher: Bencher, per_depth: u32) {
         .bench(|| run(divan::black_box(&case)));
 }
 
-/// Whole run of each refined paper case on the vertex ground at the
-/// default increment, vertices d/50 apart.
+/// Whole run of each paper case whose default ground is the vertex ground
+/// on the node grid instead, at the node grid's default increment (d/1250):
+/// the defaults before the vertex ground, beside `paper_case_at_defaults`.
 #[divan::bench(
-    args = ["table1-s", "fig8b", "table1-hs", "fig5"],
+    args = ["table1-s", "table1-hs", "fig5"],
     sample_count = 3,
     sample_size = 1
 )]
-fn paper_case_on_vertices(bencher: Bencher, name: &str) {
-    let case = shipped_case(&format!("paper/{name}.toml"), &[]);
-    let spacing = format!("run.vertex_spacing={}", case.blade.depth / 50.0);
-    let case = shipped_case(&format!("paper/{name}.toml"), &[&spacing]);
+fn paper_case_on_nodes(bencher: Bencher, name: &str) {
+    let case = shipped_case(&format!("paper/{name}.toml"), &["run.vertex_spacing=0"]);
     let evaluations = run(&case);
     bencher
         .counter(ItemsCount::new(evaluations))
@@ -109,10 +108,14 @@ fn fig5_step_on_vertices(bencher: Bencher) {
         });
 }
 
-/// One `step()` of fig5 at d/1000 on the pile developed after 3 d of travel.
+/// One `step()` of fig5 at d/1000 on the node grid, on the pile developed
+/// after 3 d of travel.
 #[divan::bench(sample_count = 20, sample_size = 20)]
 fn fig5_step_on_developed_pile(bencher: Bencher) {
-    let case = shipped_case("paper/fig5.toml", &["run.increment=0.02"]);
+    let case = shipped_case(
+        "paper/fig5.toml",
+        &["run.increment=0.02", "run.vertex_spacing=0"],
+    );
     let developed = developed(&case, 3.0);
     let mut probe = Simulation::clone(&developed);
     let before = probe.evaluations();
@@ -128,15 +131,19 @@ fn fig5_step_on_developed_pile(bencher: Bencher) {
 }
 
 /// A planner's branch of fig5 at d/1000 on the pile developed after 3 d of
-/// travel (`docs/performance.md`, "Snapshots"): copying the state, writing
-/// it as bytes and restoring it; the counter is the snapshot's bytes.
+/// travel on the node grid (`docs/performance.md`, "Snapshots"): copying
+/// the state, writing it as bytes and restoring it; the counter is the
+/// snapshot's bytes.
 mod snapshot {
     use super::*;
     use divan::counter::BytesCount;
     use std::sync::LazyLock;
 
     static DEVELOPED: LazyLock<Simulation> = LazyLock::new(|| {
-        let case = shipped_case("paper/fig5.toml", &["run.increment=0.02"]);
+        let case = shipped_case(
+            "paper/fig5.toml",
+            &["run.increment=0.02", "run.vertex_spacing=0"],
+        );
         developed(&case, 3.0)
     });
 

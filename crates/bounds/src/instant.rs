@@ -17,7 +17,7 @@ use crate::problem::InputError;
 use crate::problem::{Domain, Face, Ground, Problem, Soil, MIN_RAKE};
 use crate::strength::Strength;
 use soilcut_model::material::Material;
-use soilcut_model::{Case, CaseError, Simulation, StepError, StepRecord};
+use soilcut_model::{Case, CaseError, ProfilePoint, Simulation, StepError, StepRecord};
 
 /// What lies below the tip level.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -117,28 +117,24 @@ pub fn advance_to(sim: &mut Simulation, at: f64) -> Result<(), StepError> {
 /// The ground of `sim` as it stands, as a bound problem.
 pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem {
     let case = sim.case();
-    let surface = sim.surface();
-    let first = surface.face.node;
     let profile = sim.profile();
     let c = case.soil.cohesion;
-    let soil = |i: usize, unit_weight: f64| {
+    // φ(ut) and ψ(ut) of the profile's state, as the model's laws give them
+    // (on the node grid the surface's angles are these, cached).
+    let fresh = Material::new(&case.soil);
+    let soil = |p: &ProfilePoint| {
         let own = Soil {
-            friction_deg: surface.friction[first + i].to_degrees(),
+            friction_deg: fresh.friction.at(p.accumulated_shear).to_degrees(),
             cohesion: c,
-            unit_weight,
+            unit_weight: p.unit_weight,
         };
-        strength.apply(own, surface.dilation[first + i].to_degrees())
+        strength.apply(own, fresh.dilation.at(p.accumulated_shear).to_degrees())
     };
     let ground = Ground {
         x: profile.iter().map(|p| p.x).collect(),
         y: profile.iter().map(|p| p.y).collect(),
-        soil: profile
-            .iter()
-            .enumerate()
-            .map(|(i, p)| soil(i, p.unit_weight))
-            .collect(),
+        soil: profile.iter().map(soil).collect(),
     };
-    let fresh = Material::new(&case.soil);
     let below = strength.apply(
         Soil {
             friction_deg: fresh.friction.at(0.0).to_degrees(),
@@ -161,17 +157,19 @@ pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem
         surcharge: case.soil.surcharge,
         domain: Domain::default(),
     };
-    p.domain = domain(&p, sim, floor);
+    p.domain = domain(&p, &profile, case.soil.unit_weight, floor);
     p
 }
 
 /// The default domain, reaching 2 face heights past the disturbed ground
-/// (the pile and the bands behind it) if that is further.
-fn domain(p: &Problem, sim: &Simulation, floor: Floor) -> Domain {
-    let surface = sim.surface();
+/// (the pile and the bands behind it: the last point of the profile whose
+/// height or state is not the fresh flat ground's) if that is further.
+fn domain(p: &Problem, profile: &[ProfilePoint], unit_weight: f64, floor: Floor) -> Domain {
     let h = p.face_height();
-    let last = surface.pristine_from.min(surface.len() - 1);
-    let disturbed = (surface.x(last) - p.face.tip_x) / h;
+    let fresh =
+        |q: &ProfilePoint| q.y == 0.0 && q.accumulated_shear == 0.0 && q.unit_weight == unit_weight;
+    let last = profile.iter().rposition(|q| !fresh(q)).map_or(0, |i| i + 1);
+    let disturbed = (profile[last.min(profile.len() - 1)].x - p.face.tip_x) / h;
     let base = Domain::default();
     Domain {
         reach: base.reach.max(disturbed + 2.0).min(100.0),

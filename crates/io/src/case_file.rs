@@ -9,9 +9,9 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    default_increment, default_node_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade,
-    Case, CaseError, Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, UnitWeightRule,
-    DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_node_spacing, default_vertex_spacing, AngleLaw, BandAngleRule,
+    BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule, Model, Run,
+    SnapshotError, Soil, UnitWeightRule, DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -523,21 +523,11 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         ModelName::Refined => Model::Refined,
     };
     let soil = resolve_soil(&mut file.soil, model)?;
-    // The grid's defaults depend on the class of case: the model and
-    // whether its soil softens (soilcut_model::default_increment).
-    let increment = *file
-        .run
-        .increment
-        .get_or_insert_with(|| default_increment(model, &soil, depth));
     let choices_file = file.choices.get_or_insert_with(ChoicesFile::default);
     let choices = match model {
         Model::Original => choices_file.original()?,
         Model::Refined => choices_file.refined(),
     };
-    let node_spacing = *file
-        .run
-        .node_spacing
-        .get_or_insert_with(|| default_node_spacing(&soil, depth, increment));
     let samples_per_band = *file
         .run
         .samples_per_band
@@ -557,21 +547,50 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         soil,
         run: Run {
             travel: file.run.travel,
-            increment,
-            node_spacing,
+            increment: 0.0,
+            node_spacing: 0.0,
             samples_per_band,
-            vertex_spacing: file.run.vertex_spacing.unwrap_or(0.0),
+            vertex_spacing: 0.0,
         },
         bin: Bin {
             length: file.bin.map(|b| b.length),
         },
         choices,
     };
+    let case = with_grid(case, &mut file.run);
     case.validate().map_err(|e| key_as_written(e, &file))?;
     Ok(LoadedCase {
         case,
         resolved: file,
     })
+}
+
+/// `case` on the ground and at the increment its file gives, or else the
+/// defaults of its class of case (soilcut_model::default_vertex_spacing,
+/// default_increment, default_node_spacing), written into `run`: the
+/// vertex ground where the file names neither ground and the class is
+/// the vertex ground's, the node grid where it names node spacing.
+fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
+    let depth = case.blade.depth;
+    let node_spacing_given = run.node_spacing.is_some();
+    let vertex_spacing = *run.vertex_spacing.get_or_insert_with(|| {
+        if node_spacing_given {
+            0.0
+        } else {
+            default_vertex_spacing(&case)
+        }
+    });
+    let on_vertices = vertex_spacing > 0.0;
+    let increment = *run
+        .increment
+        .get_or_insert_with(|| default_increment(case.model, &case.soil, depth, on_vertices));
+    let node_spacing = *run
+        .node_spacing
+        .get_or_insert_with(|| default_node_spacing(&case.soil, depth, increment));
+    case.run.vertex_spacing = vertex_spacing;
+    case.run.increment = increment;
+    case.run.node_spacing = node_spacing;
+    case
 }
 
 /// The soil of a case file, its defaults written into `soil`: the repose
@@ -725,6 +744,12 @@ mod tests {
     /// The increment and node spacing `text` resolves to with `overrides`,
     /// checked to be written into the resolved file.
     fn resolved_grid(text: &str, overrides: &[&str]) -> (f64, f64, f64) {
+        let (d, v0, h, _) = resolved_ground(text, overrides);
+        (d, v0, h)
+    }
+
+    /// `resolved_grid` and `run.vertex_spacing` (0: the node grid).
+    fn resolved_ground(text: &str, overrides: &[&str]) -> (f64, f64, f64, f64) {
         let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
         let loaded = parse_case(text, &overrides).unwrap();
         let run = &loaded.case.run;
@@ -732,10 +757,12 @@ mod tests {
         for line in [
             format!("increment = {:?}", run.increment),
             format!("node_spacing = {:?}", run.node_spacing),
+            format!("vertex_spacing = {:?}", run.vertex_spacing),
         ] {
             assert!(resolved.contains(&line), "{line} not in {resolved}");
         }
-        (loaded.case.blade.depth, run.increment, run.node_spacing)
+        let d = loaded.case.blade.depth;
+        (d, run.increment, run.node_spacing, run.vertex_spacing)
     }
 
     #[test]
@@ -749,10 +776,18 @@ mod tests {
         assert_eq!(h, v0);
         let (d, v0, h) = resolved_grid(&original, &["soil.friction.residual=35"]);
         assert_eq!((v0, h), (d / 250.0, 10.0 * (d / 250.0)));
-        // The refined model in softening soil: d/1250, nodes every
-        // increment.
-        let (d, v0, h) = resolved_grid(&refined, &[]);
-        assert_eq!((v0, h), (d / 1250.0, d / 1250.0));
+        // The refined model in softening soil, a vertical blade at constant
+        // depth: d/500 on the vertex ground, vertices d/50 apart; on nodes
+        // (given node spacing, or no vertices, or a raked blade that the
+        // vertex ground does not take) d/1250, nodes every increment.
+        let (d, v0, _, vertices) = resolved_ground(&refined, &[]);
+        assert_eq!((v0, vertices), (d / 500.0, d / 50.0));
+        for nodes in ["run.vertex_spacing=0", "blade.rake=70"] {
+            let (d, v0, h, vertices) = resolved_ground(&refined, &[nodes]);
+            assert_eq!((v0, h, vertices), (d / 1250.0, d / 1250.0, 0.0), "{nodes}");
+        }
+        let given = ["run.node_spacing=0.04", "run.increment=0.04"];
+        assert_eq!(resolved_ground(&refined, &given).3, 0.0);
         // The refined model in soil that never softens (Fig. 8b's kind):
         // d/500 on the coarse grid, h = d/25 in whole increments.
         let (d, v0, h) = resolved_grid(&refined, &["soil.friction.residual=35"]);
@@ -766,8 +801,8 @@ mod tests {
         // An increment given keeps the class's grid rule at that increment.
         let (_, v0, h) = resolved_grid(&original, &["run.increment=0.05"]);
         assert_eq!((v0, h), (0.05, 0.05));
-        let (_, v0, h) = resolved_grid(&refined, &["run.increment=0.02"]);
-        assert_eq!((v0, h), (0.02, 0.02));
+        let (_, v0, h, vertices) = resolved_ground(&refined, &["run.increment=0.02"]);
+        assert_eq!((v0, h, vertices), (0.02, 0.02, 20.0 / 50.0));
         let given = ["soil.friction.residual=35", "run.increment=0.2"];
         let (_, v0, h) = resolved_grid(&refined, &given);
         assert_eq!(v0, 0.2);

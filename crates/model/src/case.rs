@@ -9,12 +9,14 @@
 mod defaults;
 mod error;
 mod validate;
+mod vertex_ground;
 mod warnings;
 
 pub use defaults::{
-    default_increment, default_increments_per_depth, default_node_spacing, COARSE_NODES_PER_DEPTH,
-    DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH,
-    SOFTENING_INCREMENTS_PER_DEPTH,
+    default_increment, default_increments_per_depth, default_node_spacing, default_vertex_spacing,
+    COARSE_NODES_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH,
+    ORIGINAL_INCREMENTS_PER_DEPTH, SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH,
+    VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
 pub use validate::{MAGNITUDE, MAX_NODES, THINNEST_WIDTH};
@@ -143,7 +145,8 @@ pub struct Run {
     pub samples_per_band: f64,
     /// h of the vertex ground (0: the node grid; docs/model.md §19):
     /// vertices every h on flat ground, and a band's points snap to a
-    /// vertex within h/2 (experimental, issue 28).
+    /// vertex within h/2 (issue 28; the default of its class of case,
+    /// `default_vertex_spacing`).
     pub vertex_spacing: f64,
 }
 

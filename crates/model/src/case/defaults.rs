@@ -1,11 +1,13 @@
-//! The defaults of `run.increment` and `run.node_spacing`: each a claim,
+//! The defaults of `run.increment`, `run.node_spacing` and
+//! `run.vertex_spacing`: each a claim,
 //! chosen by the ensemble rule (docs/model.md §9, §12.1) and rechosen
 //! whenever the model's numbers change (`docs/studies/ensemble-accuracy/`).
 //! They depend on the class of case (issue 28): the model, and whether its
-//! soil ever softens. `default_increment` and `default_node_spacing` are
-//! the one place that decides them.
+//! soil ever softens, and whether the vertex ground can run it.
+//! `default_vertex_spacing`, `default_increment` and `default_node_spacing`
+//! are the one place that decides them.
 
-use super::{Model, Soil};
+use super::{Case, Model, Soil};
 
 /// `run.increment` of the original model (one slip line) when a case does
 /// not give it: v0 = d / 250, the coarsest increment the study tries, is
@@ -39,6 +41,22 @@ pub const NON_SOFTENING_INCREMENTS_PER_DEPTH: f64 = 500.0;
 /// `docs/studies/ensemble-accuracy/`).
 pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 
+/// `run.increment` on the vertex ground when a case does not give it:
+/// v0 = d / 500 with vertices `VERTICES_PER_DEPTH` apart is accurate by the
+/// ensemble rule on every paper case of the refined model in softening
+/// soil against the reference grid's ensemble at d/2000 (worst window /
+/// tolerance: Fig. 5 0.86, Table 1 HS 0.24, Table 1 S 0.24;
+/// `docs/studies/vertex-ground/`), at two and a half times the node grid's
+/// increment (`SOFTENING_INCREMENTS_PER_DEPTH`); d/250 is not on Fig. 5
+/// (2.63).
+pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 500.0;
+
+/// Vertex spacings per blade depth of the default vertex ground: h = d/50
+/// at d/500 is accurate on Fig. 5, where h = d/25 is not (1.48 at d/1250)
+/// and d/100 is no more accurate (0.88 against 0.83 at d/1250;
+/// `docs/studies/vertex-ground/`).
+pub const VERTICES_PER_DEPTH: f64 = 50.0;
+
 /// `run.samples_per_band` when a case does not give it: the search's first
 /// stage evaluates 8 candidates per band width (`Case::search_stride`,
 /// docs/model.md §2.8), its second every node near their local minima.
@@ -63,9 +81,32 @@ pub fn default_increments_per_depth(model: Model, soil: &Soil) -> f64 {
 }
 
 /// `run.increment` when a case does not give it: d over
-/// `default_increments_per_depth`.
-pub fn default_increment(model: Model, soil: &Soil, depth: f64) -> f64 {
+/// `default_increments_per_depth` on the node grid, over
+/// `VERTEX_INCREMENTS_PER_DEPTH` on the vertex ground.
+pub fn default_increment(model: Model, soil: &Soil, depth: f64, on_vertices: bool) -> f64 {
+    if on_vertices {
+        return depth / VERTEX_INCREMENTS_PER_DEPTH;
+    }
     depth / default_increments_per_depth(model, soil)
+}
+
+/// `run.vertex_spacing` when a case gives neither it nor
+/// `run.node_spacing`: d / `VERTICES_PER_DEPTH` for the refined model in
+/// softening soil where the vertex ground runs the case
+/// (`Case::vertex_ground_supports`), as there it is accurate at fewer
+/// increments than the node grid and its cost grows as the increments do,
+/// not as their square (docs/performance.md); else 0, the node grid, which
+/// is accurate at d/250 or d/500 in the other classes, where the vertex
+/// ground is not faster (Fig. 8b: 0.63 of the tolerance at d/500 and three
+/// times the time of the coarse node grid). Reads the case's model, soil,
+/// blade, bin, choices and `run.samples_per_band`.
+pub fn default_vertex_spacing(case: &Case) -> f64 {
+    let class = case.model == Model::Refined && case.soil.softens();
+    if class && case.vertex_ground_supports().is_ok() {
+        case.blade.depth / VERTICES_PER_DEPTH
+    } else {
+        0.0
+    }
 }
 
 /// `run.node_spacing` when a case does not give it, for the increment v0:

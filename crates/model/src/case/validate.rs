@@ -341,6 +341,9 @@ impl Case {
         self.validate_node_spacing()?;
         non_negative("run.samples_per_band", self.run.samples_per_band)?;
         non_negative("run.vertex_spacing", self.run.vertex_spacing)?;
+        if self.run.vertex_spacing > 0.0 {
+            self.vertex_ground_supports()?;
+        }
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
             return Err(CaseError::new(

@@ -5,12 +5,13 @@
 //!
 //! For a vertical blade at constant depth in plane strain, under the
 //! default choices (the full band shear, the band's uniform unit weight);
-//! `Cutting::new` refuses other cases with the key that is not supported.
+//! `Case::validate` refuses other cases with the key that is not supported
+//! (`Case::vertex_ground_supports`).
 
 use super::motion::Cut;
 use super::search::{Pick, Scan, VertexSearch};
 use super::Ground;
-use crate::case::{BandShearRule, Case, CaseError, UnitWeightRule};
+use crate::case::{Case, CaseError};
 use crate::kinematics::BandMotion;
 use crate::landscape::Candidate;
 use crate::laws::Laws;
@@ -43,7 +44,6 @@ impl Cutting {
     /// piece would spread thin over all of it).
     pub fn new(case: &Case) -> Result<Self, CaseError> {
         case.validate()?;
-        supported(case)?;
         let d = case.blade.depth;
         let length = case.run.travel + 8.0 * d;
         let spacing = case.run.vertex_spacing;
@@ -104,12 +104,19 @@ impl Cutting {
 
     /// Every candidate the next increment's first stage evaluates, without
     /// pruning: its samples every dB / K along the ground, up to where the
-    /// stopping rule ends the scan (the least force found then).
+    /// stopping rule ends the scan (the least force found then), and the
+    /// one the increment takes, which the second stage may have found
+    /// between them (so that the least is the force the step records).
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
         self.search.observed = Some(Vec::new());
-        let scan_done = self.search_next().map(|_| ());
-        let picks = self.search.observed.take().unwrap_or_default();
-        scan_done?;
+        let chosen = self.search_next();
+        let mut picks = self.search.observed.take().unwrap_or_default();
+        let chosen = chosen?;
+        if !picks.contains(&chosen) {
+            // In order along the ground, as the samples are.
+            let at = picks.partition_point(|p| p.x < chosen.x);
+            picks.insert(at, chosen);
+        }
         let scale = self.case.force_scale();
         Ok(picks
             .iter()
@@ -146,6 +153,9 @@ impl Cutting {
                 .apply(&slip_line(&cut, pick.tan_beta, &self.rake))
                 .expect("a slip line always moves"),
         };
+        // The face at exactly n v0 after n increments, as on the node grid,
+        // not a sum of n increments' rounding.
+        self.ground.x[0] = (self.done + 1) as f64 * self.case.run.increment;
         let tan_repose = self.case.soil.repose.to_radians().tan();
         self.ground.relax(tan_repose, self.case.run.vertex_spacing);
         self.done += 1;
@@ -180,11 +190,8 @@ impl Cutting {
         let u = self.ground.x[0];
         let face = self.laws.face.for_climb(0.0);
         let band_width = c.soil.band_width;
-        let per_band = if c.run.samples_per_band > 0.0 {
-            c.run.samples_per_band
-        } else {
-            crate::case::DEFAULT_SAMPLES_PER_BAND
-        };
+        // Above 0: `Case::vertex_ground_supports`.
+        let per_band = c.run.samples_per_band;
         let scan = Scan {
             laws: &self.laws,
             loads: Loads::at_face(c, &self.rake, self.ground.y[0] + d),
@@ -248,36 +255,4 @@ fn slip_line(band: &Cut, tan_beta: f64, rake: &Rake) -> Cut {
         tan_psi: motion.tan_psi,
         ..*band
     }
-}
-
-/// Refuses what the vertex ground does not do yet, naming the key.
-fn supported(case: &Case) -> Result<(), CaseError> {
-    let unsupported = |key: &str, why: &str| {
-        Err(CaseError::new(
-            key,
-            format!("{why}: not supported on the vertex ground (run.vertex_spacing > 0) yet"),
-        ))
-    };
-    if case.blade.rake != 90.0 {
-        return unsupported("blade.rake", "a raked blade");
-    }
-    if !case.blade.depth_path.is_empty() {
-        return unsupported("blade.depth_path", "a depth path");
-    }
-    if case.blade.width.is_some() {
-        return unsupported("blade.width", "a blade of finite width");
-    }
-    if case.bin.length.is_some() {
-        return unsupported("bin.length", "an end wall");
-    }
-    if case.choices.band_shear != BandShearRule::Full {
-        return unsupported("choices.band_shear", "a band shear other than full");
-    }
-    if case.choices.unit_weight != UnitWeightRule::BandUniform {
-        return unsupported(
-            "choices.unit_weight",
-            "a unit weight rule other than the band's",
-        );
-    }
-    Ok(())
 }

@@ -1,0 +1,51 @@
+//! What the vertex ground (docs/model.md §19) does not do yet: the one
+//! list, which both refuses such a case on the vertex ground
+//! (`Case::validate`, so also a depth path that `advance_to` steers in)
+//! and keeps it on the node grid by default (`default_vertex_spacing`).
+
+use super::{BandShearRule, Case, CaseError, UnitWeightRule};
+
+impl Case {
+    /// Whether the vertex ground can run this case: a vertical blade at
+    /// constant depth in plane strain, no end wall, under the default
+    /// choices and a sampled search (`run.samples_per_band` > 0); else the first key it cannot take.
+    pub fn vertex_ground_supports(&self) -> Result<(), CaseError> {
+        let unsupported = |key: &str, why: &str| {
+            Err(CaseError::new(
+                key,
+                format!(
+                    "{why}: not supported on the vertex ground (run.vertex_spacing > 0) yet; \
+                     run.vertex_spacing = 0 runs it on the node grid"
+                ),
+            ))
+        };
+        if self.blade.rake != 90.0 {
+            return unsupported("blade.rake", "a raked blade");
+        }
+        if !self.blade.depth_path.is_empty() {
+            return unsupported("blade.depth_path", "a depth path");
+        }
+        if self.blade.width.is_some() {
+            return unsupported("blade.width", "a blade of finite width");
+        }
+        if self.bin.length.is_some() {
+            return unsupported("bin.length", "an end wall");
+        }
+        if self.choices.band_shear != BandShearRule::Full {
+            return unsupported("choices.band_shear", "a band shear other than full");
+        }
+        if self.choices.unit_weight != UnitWeightRule::BandUniform {
+            return unsupported(
+                "choices.unit_weight",
+                "a unit weight rule other than the band's",
+            );
+        }
+        if self.run.samples_per_band == 0.0 {
+            return unsupported(
+                "run.samples_per_band",
+                "the exhaustive search (0; give 1 or more)",
+            );
+        }
+        Ok(())
+    }
+}
