@@ -17,6 +17,7 @@ use crate::problem::InputError;
 use crate::problem::{Domain, Face, Ground, Problem, Soil, MIN_RAKE};
 use crate::strength::Strength;
 use soilcut_model::material::Material;
+use soilcut_model::surface::Surface;
 use soilcut_model::{Case, CaseError, Simulation, StepError, StepRecord};
 
 /// What lies below the tip level.
@@ -78,6 +79,9 @@ pub enum InstantError {
     /// The case's rake is below the bounds' range (its mesh's columns
     /// parallel to the face would lie too flat).
     Rake(f64),
+    /// The case runs on the vertex ground (`run.vertex_spacing`), whose
+    /// ground the bounds do not read yet: they take the node grid's.
+    VertexGround(f64),
 }
 
 impl std::fmt::Display for InstantError {
@@ -93,6 +97,10 @@ impl std::fmt::Display for InstantError {
             InstantError::Rake(a) => write!(
                 f,
                 "blade.rake = {a}: the bounds take a rake in [{MIN_RAKE}, 90] degrees"
+            ),
+            InstantError::VertexGround(h) => write!(
+                f,
+                "run.vertex_spacing = {h}: the bounds take the node grid's ground; remove run.vertex_spacing"
             ),
         }
     }
@@ -114,10 +122,16 @@ pub fn advance_to(sim: &mut Simulation, at: f64) -> Result<(), StepError> {
     Ok(())
 }
 
-/// The ground of `sim` as it stands, as a bound problem.
-pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem {
+/// The ground of `sim` as it stands, as a bound problem (on the node grid).
+pub fn problem_of(
+    sim: &Simulation,
+    floor: Floor,
+    strength: Strength,
+) -> Result<Problem, InstantError> {
     let case = sim.case();
-    let surface = sim.surface();
+    let surface = sim
+        .surface()
+        .ok_or(InstantError::VertexGround(case.run.vertex_spacing))?;
     let first = surface.face.node;
     let profile = sim.profile();
     let c = case.soil.cohesion;
@@ -161,14 +175,13 @@ pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem
         surcharge: case.soil.surcharge,
         domain: Domain::default(),
     };
-    p.domain = domain(&p, sim, floor);
-    p
+    p.domain = domain(&p, surface, floor);
+    Ok(p)
 }
 
 /// The default domain, reaching 2 face heights past the disturbed ground
 /// (the pile and the bands behind it) if that is further.
-fn domain(p: &Problem, sim: &Simulation, floor: Floor) -> Domain {
-    let surface = sim.surface();
+fn domain(p: &Problem, surface: &Surface, floor: Floor) -> Domain {
     let h = p.face_height();
     let last = surface.pristine_from.min(surface.len() - 1);
     let disturbed = (surface.x(last) - p.face.tip_x) / h;
@@ -183,13 +196,17 @@ fn domain(p: &Problem, sim: &Simulation, floor: Floor) -> Domain {
     }
 }
 
-/// A case the bounds can take: plane strain, a rake in their range.
+/// A case the bounds can take: plane strain, a rake in their range, on
+/// the node grid.
 fn check(case: &Case) -> Result<(), InstantError> {
     if let Some(w) = case.blade.width {
         return Err(InstantError::FiniteWidth(w));
     }
     if case.blade.rake < MIN_RAKE {
         return Err(InstantError::Rake(case.blade.rake));
+    }
+    if case.run.vertex_spacing > 0.0 {
+        return Err(InstantError::VertexGround(case.run.vertex_spacing));
     }
     Ok(())
 }
@@ -223,7 +240,7 @@ pub fn every(case: &Case, every: f64, options: Options) -> Result<Vec<Instant>, 
 /// The bracket of `sim`'s ground as it stands and soilcut's next increment
 /// on it (which advances `sim` by one increment).
 pub fn instant(sim: &mut Simulation, options: Options) -> Result<Instant, InstantError> {
-    let problem = problem_of(sim, options.floor, options.strength);
+    let problem = problem_of(sim, options.floor, options.strength)?;
     let bracket = bracket(&problem, options.mesh).map_err(InstantError::Bounds)?;
     let record = sim.step().map_err(InstantError::Step)?;
     Ok(Instant {

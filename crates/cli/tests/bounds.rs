@@ -152,4 +152,8 @@ fn bad_input_is_refused_naming_the_key_and_range() {
         &["--at", "0", "--set", "blade.width=40"],
         "blade.width = 40",
     );
+    assert_refused(
+        &["--at", "0", "--set", "run.vertex_spacing=0.4"],
+        "run.vertex_spacing = 0.4: the bounds take the node grid's ground",
+    );
 }

@@ -10,9 +10,7 @@ use soilcut_model::{Simulation, SnapshotError};
 
 /// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
 fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
-    let mut case = common::refined("table1-s", travel_depths, per_depth);
-    case.run.vertex_spacing = case.blade.depth / 50.0;
-    case
+    common::on_vertices(common::refined("table1-s", travel_depths, per_depth), 50.0)
 }
 
 #[test]
@@ -31,7 +29,7 @@ fn wedge_within(per_depth: f64, tolerance: f64) {
         case.soil.friction.peak = phi;
         case.soil.friction.residual = phi;
         case.blade.wall_friction = phi_w;
-        case.run.vertex_spacing = case.blade.depth / per_depth;
+        let case = common::on_vertices(case, per_depth);
         let got = Simulation::new(&case).unwrap().step().unwrap().force_norm;
         let expected = 0.5 * common::coulomb_kp(phi, phi_w);
         let rel = (got - expected) / expected;
@@ -95,6 +93,12 @@ fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
     let mut raked = table1_s(1.0, 250.0);
     raked.blade.rake = 60.0;
     assert_eq!(Simulation::new(&raked).unwrap_err().key, "blade.rake");
+    // The vertex ground has no exhaustive search to fall back on.
+    let mut exhaustive = table1_s(1.0, 250.0);
+    exhaustive.run.samples_per_band = 0.0;
+    let e = exhaustive.validate().unwrap_err();
+    assert_eq!(e.key, "run.samples_per_band");
+    assert!(e.message.contains("run.vertex_spacing > 0"), "{e}");
 }
 
 #[test]

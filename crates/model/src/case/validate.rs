@@ -1,7 +1,7 @@
 //! The allowed range of every key of a case (README, "Case files"): a value
 //! outside it is an error naming the key and the range, never clamped.
 
-use super::{Case, CaseError, INITIAL_REACH_DEPTHS};
+use super::{BandShearRule, Case, CaseError, UnitWeightRule, INITIAL_REACH_DEPTHS};
 
 /// Largest number of surface nodes a case may need at the start (memory
 /// guard: five f64 per node).
@@ -82,7 +82,54 @@ impl Case {
         self.validate_soil()?;
         self.validate_loads()?;
         self.validate_run()?;
-        self.validate_bin()
+        self.validate_bin()?;
+        self.validate_vertex_ground()
+    }
+
+    /// What the vertex ground (`run.vertex_spacing` > 0, docs/model.md §19)
+    /// does not do, refused by its key: here, so that `soilcut check`
+    /// refuses it as `run` does, and a case steered by
+    /// `Simulation::advance_to` is held to it.
+    fn validate_vertex_ground(&self) -> Result<(), CaseError> {
+        if self.run.vertex_spacing == 0.0 {
+            return Ok(());
+        }
+        let unsupported = |key: &str, why: &str| {
+            Err(CaseError::new(
+                key,
+                format!("{why}: not supported on the vertex ground (run.vertex_spacing > 0) yet"),
+            ))
+        };
+        if self.blade.rake != 90.0 {
+            return unsupported("blade.rake", "a raked blade");
+        }
+        if !self.blade.depth_path.is_empty() {
+            return unsupported("blade.depth_path", "a depth path");
+        }
+        if self.blade.width.is_some() {
+            return unsupported("blade.width", "a blade of finite width");
+        }
+        if self.bin.length.is_some() {
+            return unsupported("bin.length", "an end wall");
+        }
+        if self.choices.band_shear != BandShearRule::Full {
+            return unsupported("choices.band_shear", "a band shear other than full");
+        }
+        if self.choices.unit_weight != UnitWeightRule::BandUniform {
+            return unsupported(
+                "choices.unit_weight",
+                "a unit weight rule other than the band's",
+            );
+        }
+        // The vertex ground samples the ground (M49): it has no exhaustive
+        // search to fall back on.
+        if self.run.samples_per_band == 0.0 {
+            return Err(CaseError::new(
+                "run.samples_per_band",
+                "must be > 0 with run.vertex_spacing > 0 (got 0): 0, the exhaustive search, is the node grid's; the vertex ground samples K points per band width (8 by default)",
+            ));
+        }
+        Ok(())
     }
 
     /// The end wall must leave the blade room to travel and a mechanism

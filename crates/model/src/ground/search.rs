@@ -99,14 +99,22 @@ pub(crate) struct VertexSearch {
     least: Option<(f64, Lower)>,
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
-    /// Every candidate the first stage evaluates, unpruned, when set
-    /// (`Cutting::landscape`).
-    pub(crate) observed: Option<Vec<Pick>>,
 }
 
+/// Is handed every candidate the first stage evaluates, which then prunes
+/// none (a landscape, as the node grid's `search::Observer`).
+pub(crate) type PickObserver<'o> = &'o mut dyn FnMut(&Pick);
+
 impl VertexSearch {
-    /// The least-force mechanism, if any is admissible before `scan.reach`.
-    pub(crate) fn run(&mut self, ground: &mut Ground, scan: &Scan) -> Option<Pick> {
+    /// The least-force mechanism, if any is admissible before `scan.reach`;
+    /// with `observer`, the first stage prunes nothing and hands it every
+    /// candidate it evaluates.
+    pub(crate) fn run(
+        &mut self,
+        ground: &mut Ground,
+        scan: &Scan,
+        mut observer: Option<PickObserver>,
+    ) -> Option<Pick> {
         self.start();
         let mut best: Option<Pick> = None;
         let mut k = 0;
@@ -121,7 +129,7 @@ impl VertexSearch {
             if self.beyond_reach(ground, scan, k, best.as_ref()) {
                 break;
             }
-            self.sample_piece(ground, scan, k, &mut best);
+            self.sample_piece(ground, scan, k, &mut best, &mut observer);
             k += 1;
         }
         let best = self.narrow(ground, scan, best?);
@@ -206,20 +214,28 @@ impl VertexSearch {
     }
 
     /// The first stage on piece k: candidates from x_k (not the face) at
-    /// spacing `scan.sample`.
-    fn sample_piece(&mut self, ground: &Ground, scan: &Scan, k: usize, best: &mut Option<Pick>) {
+    /// spacing `scan.sample`, unpruned and each handed to `observer` if
+    /// there is one.
+    fn sample_piece(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        k: usize,
+        best: &mut Option<Pick>,
+        observer: &mut Option<PickObserver>,
+    ) {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
         let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
         for i in usize::from(k == 0)..n {
             let x = xa + (xb - xa) * i as f64 / n as f64;
-            let bar = match (&self.observed, &*best) {
+            let bar = match (observer.as_ref(), &*best) {
                 (None, Some(b)) => b.force * (1.0 + SLACK),
                 _ => f64::INFINITY,
             };
             let force = match self.evaluate(ground, scan, (k, x), bar) {
                 Some(pick) => {
-                    if let Some(observed) = &mut self.observed {
-                        observed.push(pick);
+                    if let Some(observe) = observer {
+                        observe(&pick);
                     }
                     if best.is_none_or(|b| pick.force < b.force) {
                         *best = Some(pick);
