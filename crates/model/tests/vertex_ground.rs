@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use soilcut_model::{Simulation, SnapshotError};
+use soilcut_model::{AdvanceError, Simulation, SnapshotError};
 
 /// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
 fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
@@ -146,5 +146,27 @@ fn the_landscape_holds_the_first_stage_and_the_step_refines_it() {
     assert!(
         (chosen / least - 1.0).abs() < 0.01,
         "{chosen} vs samples' {least}"
+    );
+}
+
+#[test]
+fn advance_to_goes_beyond_the_travel_and_refuses_a_depth_path() {
+    let case = table1_s(0.5, 250.0);
+    let mut sim = Simulation::new(&case).unwrap();
+    let beyond = case.run.travel + 1.0;
+    let records = sim.advance_to(beyond, None).unwrap();
+    assert_eq!(records.len(), sim.steps_done());
+    assert!(
+        sim.blade_position() >= beyond - 1e-9,
+        "{}",
+        sim.blade_position()
+    );
+    // Steering the tip makes a depth path, which the vertex ground refuses.
+    let e = sim
+        .advance_to(beyond + 1.0, Some(0.9 * case.blade.depth))
+        .unwrap_err();
+    assert!(
+        matches!(&e, AdvanceError::Case(c) if c.key == "blade.depth_path"),
+        "{e}"
     );
 }
