@@ -3,7 +3,9 @@
 //! A snapshot holds everything that determines the rest of the run: the
 //! case (as `advance_to` may have steered it), the surface's nodes and
 //! counters, the search's seed (the previous increment's emergence node)
-//! and evaluation count, the side heaps and the increments done (`Body`).
+//! and evaluation count, the side heaps and the increments done (`Body`);
+//! on the vertex ground, its vertices and evaluation count instead of the
+//! node grid's fields, which are then written empty.
 //! What the case determines (the laws, the rake's grid, the node scheme,
 //! the face's node, which follows from the increments done) is rebuilt
 //! from it; the search's, kinematics' and avalanche's scratch is rebuilt
