@@ -112,6 +112,23 @@ fn missing_key() {
     assert_bad_input(&BASE.replace("name = \"base\"\n", ""), &[], "name: ");
 }
 
+/// What the vertex ground does not do is refused by `run` and `check`
+/// alike, naming its key (docs/model.md §19).
+#[test]
+fn the_vertex_ground_refuses_what_it_does_not_do() {
+    let vertices = "run.vertex_spacing=0.4";
+    assert_bad_input(
+        REFINED,
+        &[vertices, "run.samples_per_band=0"],
+        "run.samples_per_band: must be > 0 with run.vertex_spacing > 0 (got 0)",
+    );
+    assert_bad_input(
+        REFINED,
+        &[vertices, "blade.rake=60"],
+        "blade.rake: a raked blade: not supported on the vertex ground",
+    );
+}
+
 #[test]
 fn unknown_key_in_file() {
     let case = BASE.replace("[blade]", "[blade]\nheight = 100.0");

@@ -26,7 +26,7 @@ use crate::surface::compensated_sum;
 use serde::{Deserialize, Serialize};
 
 mod avalanche;
-pub mod cutting;
+pub(crate) mod cutting;
 pub mod motion;
 pub(crate) mod search;
 

@@ -17,6 +17,7 @@ pub mod avalanche;
 pub mod band;
 pub mod case;
 pub mod crescent;
+mod discretisation;
 pub mod face_friction;
 pub mod grid;
 pub mod ground;

@@ -46,6 +46,14 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
     }
 }
 
+/// `case` on the vertex ground (docs/model.md §19), vertices d/`per_depth`
+/// apart, with the sampled search's default K (it has no exhaustive one).
+pub fn on_vertices(mut case: Case, per_depth: f64) -> Case {
+    case.run.vertex_spacing = case.blade.depth / per_depth;
+    case.run.samples_per_band = soilcut_model::DEFAULT_SAMPLES_PER_BAND;
+    case
+}
+
 /// Coulomb's passive coefficient with wall friction (angles in degrees).
 pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
     let (p, w) = (phi.to_radians(), phi_w.to_radians());

@@ -314,8 +314,7 @@ fn random_cases_on_the_vertex_ground_run_and_conserve() {
         case.blade.rake = 90.0;
         case.blade.depth_path.clear();
         case.blade.adhesion = 0.0;
-        case.run.vertex_spacing = case.blade.depth / rng.uniform(25.0, 100.0);
-        case.run.samples_per_band = DEFAULT_SAMPLES_PER_BAND;
+        let case = common::on_vertices(case, rng.uniform(25.0, 100.0));
         runs_and_keeps(&case, |force, least| force <= least * (1.0 + 1e-3 + 1e-12));
     });
 }

@@ -29,7 +29,7 @@ fn mass_is_conserved_and_area_grows_by_the_band_dilation() {
         assert!(drift.abs() < 1e-9, "{which}: mass drift {drift:e}");
         let d = case.blade.depth;
         let initial_area = sim.initial_mass() / case.soil.unit_weight;
-        let area = sim.surface().area(sim.steps_done());
+        let area = sim.surface().expect("the node grid").area(sim.steps_done());
         let dilation: f64 = history.iter().map(|r| r.dilation_area).sum();
         assert!(
             dilation.abs() > 1e-3 * d * d,
@@ -49,7 +49,8 @@ fn without_dilation_area_is_conserved() {
     case.soil.dilation = AngleLaw::constant(0.0);
     let (history, sim) = common::run(&case);
     let initial_area = sim.initial_mass() / case.soil.unit_weight;
-    let drift = (sim.surface().area(sim.steps_done()) - initial_area) / initial_area;
+    let drift = (sim.surface().expect("the node grid").area(sim.steps_done()) - initial_area)
+        / initial_area;
     assert!(drift.abs() < 1e-12, "area drift {drift:e}");
     assert!(history.iter().all(|r| r.dilation_area == 0.0));
 }
@@ -180,7 +181,7 @@ fn area_gain_is_the_dilation_and_converges_with_the_increment() {
         let case = common::refined("table1-s", 2.0, per_depth);
         let (history, sim) = common::run(&case);
         let initial_area = sim.initial_mass() / case.soil.unit_weight;
-        let gained = sim.surface().area(sim.steps_done()) - initial_area;
+        let gained = sim.surface().expect("the node grid").area(sim.steps_done()) - initial_area;
         let dilation: f64 = history.iter().map(|r| r.dilation_area).sum();
         assert!(
             (gained - dilation).abs() < 1e-9 * initial_area,

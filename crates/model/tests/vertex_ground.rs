@@ -6,14 +6,11 @@
 
 use crate::common;
 
-use soilcut_model::{AdvanceError, Simulation, SnapshotError, DEFAULT_SAMPLES_PER_BAND};
+use soilcut_model::{AdvanceError, Simulation, SnapshotError};
 
 /// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
 fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
-    let mut case = common::refined("table1-s", travel_depths, per_depth);
-    case.run.vertex_spacing = case.blade.depth / 50.0;
-    case.run.samples_per_band = DEFAULT_SAMPLES_PER_BAND;
-    case
+    common::on_vertices(common::refined("table1-s", travel_depths, per_depth), 50.0)
 }
 
 #[test]
@@ -32,8 +29,7 @@ fn wedge_within(per_depth: f64, tolerance: f64) {
         case.soil.friction.peak = phi;
         case.soil.friction.residual = phi;
         case.blade.wall_friction = phi_w;
-        case.run.vertex_spacing = case.blade.depth / per_depth;
-        case.run.samples_per_band = DEFAULT_SAMPLES_PER_BAND;
+        let case = common::on_vertices(case, per_depth);
         let got = Simulation::new(&case).unwrap().step().unwrap().force_norm;
         let expected = 0.5 * common::coulomb_kp(phi, phi_w);
         let rel = (got - expected) / expected;
@@ -97,22 +93,12 @@ fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
     let mut raked = table1_s(1.0, 250.0);
     raked.blade.rake = 60.0;
     assert_eq!(Simulation::new(&raked).unwrap_err().key, "blade.rake");
+    // The vertex ground has no exhaustive search to fall back on.
     let mut exhaustive = table1_s(1.0, 250.0);
     exhaustive.run.samples_per_band = 0.0;
-    let e = Simulation::new(&exhaustive).unwrap_err();
+    let e = exhaustive.validate().unwrap_err();
     assert_eq!(e.key, "run.samples_per_band");
-    assert!(
-        e.message.contains("run.vertex_spacing = 0"),
-        "{}",
-        e.message
-    );
-    // A depth path steered in is refused, the simulation left as it was.
-    let mut sim = Simulation::new(&table1_s(1.0, 250.0)).unwrap();
-    match sim.advance_to(5.0, Some(15.0)) {
-        Err(AdvanceError::Case(e)) => assert_eq!(e.key, "blade.depth_path"),
-        other => panic!("{other:?}"),
-    }
-    assert_eq!(sim.steps_done(), 0);
+    assert!(e.message.contains("run.vertex_spacing > 0"), "{e}");
 }
 
 #[test]
@@ -159,4 +145,26 @@ fn the_landscape_holds_the_first_stage_and_the_step_refines_it() {
     // finds may snap to a vertex: the landscape holds that candidate too,
     // so its least is the force the step records.
     assert_eq!(least, chosen);
+}
+
+#[test]
+fn advance_to_goes_beyond_the_travel_and_refuses_a_depth_path() {
+    let case = table1_s(0.5, 250.0);
+    let mut sim = Simulation::new(&case).unwrap();
+    let beyond = case.run.travel + 1.0;
+    let records = sim.advance_to(beyond, None).unwrap();
+    assert_eq!(records.len(), sim.steps_done());
+    assert!(
+        sim.blade_position() >= beyond - 1e-9,
+        "{}",
+        sim.blade_position()
+    );
+    // Steering the tip makes a depth path, which the vertex ground refuses.
+    let e = sim
+        .advance_to(beyond + 1.0, Some(0.9 * case.blade.depth))
+        .unwrap_err();
+    assert!(
+        matches!(&e, AdvanceError::Case(c) if c.key == "blade.depth_path"),
+        "{e}"
+    );
 }

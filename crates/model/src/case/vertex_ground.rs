@@ -40,11 +40,13 @@ impl Case {
                 "a unit weight rule other than the band's",
             );
         }
+        // The vertex ground samples the ground (M49): it has no exhaustive
+        // search to fall back on.
         if self.run.samples_per_band == 0.0 {
-            return unsupported(
+            return Err(CaseError::new(
                 "run.samples_per_band",
-                "the exhaustive search (0; give 1 or more)",
-            );
+                "must be > 0 with run.vertex_spacing > 0 (got 0): 0, the exhaustive search, is the node grid's (run.vertex_spacing = 0); the vertex ground samples K points per band width (8 by default)",
+            ));
         }
         Ok(())
     }

@@ -1,20 +1,20 @@
 //! The cut on the vertex ground: each increment searches the least-force
 //! mechanism anywhere on the ground (`search`), moves the soil by it
 //! (`motion`) and lets the slopes avalanche (`avalanche`), as the node
-//! grid's `Simulation::step` does (docs/model.md §1).
+//! grid's increment does (docs/model.md §1).
 //!
 //! For a vertical blade at constant depth in plane strain, under the
-//! default choices (the full band shear, the band's uniform unit weight);
-//! `Case::validate` refuses other cases with the key that is not supported
-//! (`Case::vertex_ground_supports`).
+//! default choices (the full band shear, the band's uniform unit weight)
+//! and the sampled search; the case validation refuses other cases with
+//! the key that is not supported (`Case::validate`, docs/model.md §19).
 
 use super::motion::Cut;
-use super::search::{Pick, Scan, VertexSearch};
+use super::search::{Pick, PickObserver, Scan, VertexSearch};
 use super::Ground;
-use crate::case::{Case, CaseError};
+use crate::case::Case;
+use crate::discretisation::{Context, Discretisation};
 use crate::kinematics::BandMotion;
 use crate::landscape::Candidate;
-use crate::laws::Laws;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::step::{ProfilePoint, StepError, StepRecord};
@@ -29,48 +29,34 @@ const MAX_REACH_DEPTHS: f64 = 1000.0;
 /// A cut simulated on the vertex ground.
 #[derive(Clone, Debug)]
 pub struct Cutting {
-    case: Case,
-    laws: Laws,
     rake: Rake,
     ground: Ground,
     search: VertexSearch,
-    done: usize,
 }
 
 impl Cutting {
-    /// The cut of `case` on flat ground of fresh soil from the face to the
-    /// travel plus 8 d ahead, in pieces `run.vertex_spacing` long (where
-    /// the soil that avalanches ahead of a band lands; a heap on one long
-    /// piece would spread thin over all of it).
-    pub fn new(case: &Case) -> Result<Self, CaseError> {
-        case.validate()?;
+    /// The cut of a validated `case` on flat ground of fresh soil from the
+    /// face to the travel plus 8 d ahead, in pieces `run.vertex_spacing`
+    /// long (where the soil that avalanches ahead of a band lands; a heap
+    /// on one long piece would spread thin over all of it).
+    pub fn new(case: &Case) -> Self {
         let d = case.blade.depth;
         let length = case.run.travel + 8.0 * d;
         let spacing = case.run.vertex_spacing;
         let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
-        Ok(Cutting {
-            laws: Laws::new(case),
-            rake: Rake::new(case.blade.rake),
-            ground,
-            search: VertexSearch::default(),
-            done: 0,
-            case: case.clone(),
-        })
+        Self::resumed(case, ground, 0)
     }
 
-    /// The cut of `case` resumed on `ground` after `done` increments and
-    /// `evaluations` Eq. (1) evaluations (a restored snapshot; the search
-    /// keeps no state from one increment to the next).
-    pub(crate) fn resumed(case: &Case, ground: Ground, done: usize, evaluations: u64) -> Self {
+    /// The cut of `case` resumed on `ground` after `evaluations` Eq. (1)
+    /// evaluations (a restored snapshot; the search keeps no state from
+    /// one increment to the next).
+    pub(crate) fn resumed(case: &Case, ground: Ground, evaluations: u64) -> Self {
         let mut search = VertexSearch::default();
         search.evaluations = evaluations;
         Cutting {
-            laws: Laws::new(case),
             rake: Rake::new(case.blade.rake),
             ground,
             search,
-            done,
-            case: case.clone(),
         }
     }
 
@@ -79,127 +65,24 @@ impl Cutting {
         &self.ground
     }
 
-    /// Eq. (1) evaluations so far.
-    pub fn evaluations(&self) -> u64 {
-        self.search.evaluations
-    }
-
-    /// The surface at the vertices from the face on, each with the state
-    /// of the piece that starts there (the last, of the piece it ends).
-    pub fn profile(&self) -> Vec<ProfilePoint> {
-        let g = &self.ground;
-        (0..g.x.len())
-            .map(|k| {
-                let piece = k.min(g.pieces() - 1);
-                ProfilePoint {
-                    x: g.x[k],
-                    y: g.y[k],
-                    accumulated_shear: g.accumulated_shear[piece],
-                    unit_weight: g.unit_weight[piece],
-                    ridge_height: 0.0,
-                }
-            })
-            .collect()
-    }
-
-    /// Every candidate the next increment's first stage evaluates, without
-    /// pruning: its samples every dB / K along the ground, up to where the
-    /// stopping rule ends the scan (the least force found then), and the
-    /// one the increment takes, which the second stage may have found
-    /// between them (so that the least is the force the step records).
-    pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
-        self.search.observed = Some(Vec::new());
-        let chosen = self.search_next();
-        let mut picks = self.search.observed.take().unwrap_or_default();
-        let chosen = chosen?;
-        if !picks.contains(&chosen) {
-            // In order along the ground, as the samples are.
-            let at = picks.partition_point(|p| p.x < chosen.x);
-            picks.insert(at, chosen);
-        }
-        let scale = self.case.force_scale();
-        Ok(picks
-            .iter()
-            .map(|p| Candidate {
-                x_emergence: p.x,
-                y_emergence: p.y,
-                beta_deg: p.tan_beta.atan().to_degrees(),
-                force: p.force,
-                force_norm: p.force / scale,
-                friction_deg: p.angles.friction.to_degrees(),
-                dilation_deg: p.angles.dilation.to_degrees(),
-            })
-            .collect())
-    }
-
-    /// Whether the case's travel is done.
-    pub fn is_done(&self) -> bool {
-        self.done >= self.case.steps()
-    }
-
-    /// Advances the blade by one increment.
-    pub fn step(&mut self) -> Result<StepRecord, StepError> {
-        if self.is_done() {
-            return Err(StepError::TravelReached { steps: self.done });
-        }
-        let pick = self.search_next()?;
-        let (d, u) = (self.case.blade.depth, self.ground.x[0]);
-        let face = self.laws.face.for_climb(0.0);
-        let cut = self.cut(&pick);
-        let moved = match self.ground.apply(&cut) {
-            Some(moved) => moved,
-            None => self
-                .ground
-                .apply(&slip_line(&cut, pick.tan_beta, &self.rake))
-                .expect("a slip line always moves"),
-        };
-        // The face at exactly n v0 after n increments, as on the node grid,
-        // not a sum of n increments' rounding.
-        self.ground.x[0] = (self.done + 1) as f64 * self.case.run.increment;
-        let tan_repose = self.case.soil.repose.to_radians().tan();
-        self.ground.relax(tan_repose, self.case.run.vertex_spacing);
-        self.done += 1;
-        let omega = self
-            .laws
-            .face
-            .angle(face.mobilisation(pick.tan_beta, pick.angles.dilation));
-        Ok(StepRecord {
-            step: self.done,
-            u,
-            u_over_d: u / d,
-            force: pick.force,
-            force_norm: pick.force / self.case.force_scale(),
-            force_h: pick.force * omega.cos(),
-            force_v: pick.force * omega.sin(),
-            beta_deg: pick.tan_beta.atan().to_degrees(),
-            x_emergence: pick.x,
-            mass: self.ground.mass(),
-            y_emergence: pick.y,
-            friction_deg: pick.angles.friction.to_degrees(),
-            slip: cut.slip,
-            dilation_deg: pick.angles.dilation.to_degrees(),
-            dilation_area: moved.dilation_area,
-            depth: d,
-            mass_spilled: 0.0,
-        })
-    }
-
-    /// The least-force mechanism of the next increment (§2 on the ground).
-    fn search_next(&mut self) -> Result<Pick, StepError> {
-        let (c, d) = (&self.case, self.case.blade.depth);
+    /// The least-force mechanism of the next increment (§2 on the ground),
+    /// every first-stage candidate handed to `observer` if there is one.
+    fn search_next(
+        &mut self,
+        at: &Context,
+        observer: Option<PickObserver>,
+    ) -> Result<Pick, StepError> {
+        let (c, d) = (at.case, at.case.blade.depth);
         let u = self.ground.x[0];
-        let face = self.laws.face.for_climb(0.0);
         let band_width = c.soil.band_width;
-        // Above 0: `Case::vertex_ground_supports`.
-        let per_band = c.run.samples_per_band;
         let scan = Scan {
-            laws: &self.laws,
+            laws: at.laws,
             loads: Loads::at_face(c, &self.rake, self.ground.y[0] + d),
-            face,
+            face: at.laws.face.for_climb(0.0),
             depth: d,
             band_width,
             sample: if band_width > 0.0 {
-                band_width / per_band
+                band_width / c.run.samples_per_band
             } else {
                 SLIP_LINE_SAMPLES * d
             },
@@ -209,17 +92,17 @@ impl Cutting {
             reach: u + MAX_REACH_DEPTHS * d,
         };
         self.search
-            .run(&mut self.ground, &scan)
+            .run(&mut self.ground, &scan, observer)
             .ok_or(StepError::NoAdmissibleMechanism {
-                step: self.done + 1,
+                step: at.done + 1,
                 u,
             })
     }
 
     /// The motion of the band `pick` (M18, M35): rise v0 tan(β + ψ), slip
     /// Δut = v0 cos ψ / cos(β + ψ); a slip line's v0 tan β and v0 / cos β.
-    fn cut(&self, pick: &Pick) -> Cut {
-        let (c, t) = (&self.case, pick.tan_beta);
+    fn cut(&self, case: &Case, pick: &Pick) -> Cut {
+        let (c, t) = (case, pick.tan_beta);
         let v0 = c.run.increment;
         let line = Cut {
             depth: c.blade.depth,
@@ -242,6 +125,119 @@ impl Cutting {
             },
             _ => slip_line(&line, t, &self.rake),
         }
+    }
+}
+
+impl Discretisation for Cutting {
+    fn blade_position(&self) -> f64 {
+        self.ground.x[0]
+    }
+
+    fn mass(&self) -> f64 {
+        self.ground.mass()
+    }
+
+    /// No side heaps: a blade of finite width is refused.
+    fn mass_spilled(&self) -> f64 {
+        0.0
+    }
+
+    fn evaluations(&self) -> u64 {
+        self.search.evaluations
+    }
+
+    fn floor(&self) -> f64 {
+        self.ground.floor
+    }
+
+    /// The surface at the vertices from the face on, each with the state
+    /// of the piece that starts there (the last, of the piece it ends).
+    fn profile(&self, _: &Context) -> Vec<ProfilePoint> {
+        let g = &self.ground;
+        (0..g.x.len())
+            .map(|k| {
+                let piece = k.min(g.pieces() - 1);
+                ProfilePoint {
+                    x: g.x[k],
+                    y: g.y[k],
+                    accumulated_shear: g.accumulated_shear[piece],
+                    unit_weight: g.unit_weight[piece],
+                    ridge_height: 0.0,
+                }
+            })
+            .collect()
+    }
+
+    /// Every candidate the next increment's first stage evaluates, without
+    /// pruning: its samples every dB / K along the ground, up to where the
+    /// stopping rule ends the scan (the least force found then), and the
+    /// one the increment takes, which the second stage may have found
+    /// between them (so that the least is the force the step records).
+    fn landscape(&mut self, at: &Context) -> Result<Vec<Candidate>, StepError> {
+        let mut picks = Vec::new();
+        let chosen = self.search_next(at, Some(&mut |p: &Pick| picks.push(*p)))?;
+        if !picks.contains(&chosen) {
+            // In order along the ground, as the samples are.
+            let at = picks.partition_point(|p| p.x < chosen.x);
+            picks.insert(at, chosen);
+        }
+        let scale = at.case.force_scale();
+        Ok(picks
+            .iter()
+            .map(|p| Candidate {
+                x_emergence: p.x,
+                y_emergence: p.y,
+                beta_deg: p.tan_beta.atan().to_degrees(),
+                force: p.force,
+                force_norm: p.force / scale,
+                friction_deg: p.angles.friction.to_degrees(),
+                dilation_deg: p.angles.dilation.to_degrees(),
+            })
+            .collect())
+    }
+
+    /// The increment (M48, M49, M50), its force components by (M12).
+    fn step(&mut self, at: &Context) -> Result<StepRecord, StepError> {
+        let c = at.case;
+        let pick = self.search_next(at, None)?;
+        let (d, u) = (c.blade.depth, self.ground.x[0]);
+        let face = at.laws.face.for_climb(0.0);
+        let cut = self.cut(c, &pick);
+        let moved = match self.ground.apply(&cut) {
+            Some(moved) => moved,
+            None => self
+                .ground
+                .apply(&slip_line(&cut, pick.tan_beta, &self.rake))
+                .expect("a slip line always moves"),
+        };
+        // The face at exactly n v0 after n increments, as on the node grid,
+        // not a sum of n increments' rounding.
+        self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
+        let tan_repose = c.soil.repose.to_radians().tan();
+        self.ground.relax(tan_repose, c.run.vertex_spacing);
+        let omega = at
+            .laws
+            .face
+            .angle(face.mobilisation(pick.tan_beta, pick.angles.dilation));
+        Ok(StepRecord {
+            step: at.done + 1,
+            u,
+            u_over_d: u / d,
+            force: pick.force,
+            force_norm: pick.force / c.force_scale(),
+            force_h: pick.force * omega.cos(),
+            force_v: pick.force * omega.sin(),
+            beta_deg: pick.tan_beta.atan().to_degrees(),
+            x_emergence: pick.x,
+            mass: self.ground.mass(),
+            y_emergence: pick.y,
+            friction_deg: pick.angles.friction.to_degrees(),
+            slip: cut.slip,
+            dilation_deg: pick.angles.dilation.to_degrees(),
+            dilation_area: moved.dilation_area,
+            depth: d,
+            mass_spilled: 0.0,
+        })
     }
 }
 

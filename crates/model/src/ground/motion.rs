@@ -355,19 +355,11 @@ impl Snapshot {
     /// Mean ut of the old pieces over [xa, xb] (the last old piece reaches
     /// beyond its end).
     fn mean_shear(&self, xa: f64, xb: f64) -> f64 {
-        let last = self.shear.len() - 1;
         // The old pieces before the one holding xa lie before it.
-        let first = self.x[1..=last].partition_point(|&x| x <= xa);
+        let first = self.x[1..self.shear.len()].partition_point(|&x| x <= xa);
         let mut sum = 0.0;
-        for k in first..=last {
-            if self.x[k] >= xb {
-                break;
-            }
-            let hi = if k == last { xb } else { self.x[k + 1].min(xb) };
-            let lo = self.x[k].max(xa);
-            if hi > lo {
-                sum += self.shear[k] * (hi - lo);
-            }
+        for (k, lo, hi) in self.overlaps(first, (xa, xb), true) {
+            sum += self.shear[k] * (hi - lo);
         }
         sum / (xb - xa)
     }
@@ -377,15 +369,32 @@ impl Snapshot {
     /// now over [xa, xb]; the old pieces before `first` lie before xa.
     fn weight_below(&self, first: usize, xa: f64, xb: f64, height: impl Fn(f64) -> f64) -> f64 {
         let mut weight = 0.0;
-        for k in first..self.unit_weight.len() {
-            if self.x[k] >= xb {
-                break;
-            }
-            let (s0, s1) = (self.x[k].max(xa), self.x[k + 1].min(xb));
-            if s1 > s0 {
-                weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));
-            }
+        for (k, s0, s1) in self.overlaps(first, (xa, xb), false) {
+            weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));
         }
         weight
+    }
+
+    /// The old pieces k from `first` on that overlap [xa, xb], each with
+    /// the overlap (k, lo, hi), lo < hi, in order of x; with `open_end`
+    /// the last old piece reaches to xb, beyond its end.
+    fn overlaps(
+        &self,
+        first: usize,
+        (xa, xb): (f64, f64),
+        open_end: bool,
+    ) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
+        let last = self.unit_weight.len() - 1;
+        (first..=last)
+            .take_while(move |&k| self.x[k] < xb)
+            .map(move |k| {
+                let hi = if open_end && k == last {
+                    xb
+                } else {
+                    self.x[k + 1].min(xb)
+                };
+                (k, self.x[k].max(xa), hi)
+            })
+            .filter(|&(_, lo, hi)| hi > lo)
     }
 }

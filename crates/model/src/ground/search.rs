@@ -113,16 +113,24 @@ pub(crate) struct VertexSearch {
     hints: [usize; 2],
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
-    /// Every candidate the first stage evaluates, unpruned, when set
-    /// (`Cutting::landscape`).
-    pub(crate) observed: Option<Vec<Pick>>,
 }
 
+/// Is handed every candidate the first stage evaluates, which then prunes
+/// none (a landscape, as the node grid's `search::Observer`).
+pub(crate) type PickObserver<'o> = &'o mut dyn FnMut(&Pick);
+
 impl VertexSearch {
-    /// The least-force mechanism, if any is admissible before `scan.reach`.
-    pub(crate) fn run(&mut self, ground: &mut Ground, scan: &Scan) -> Option<Pick> {
+    /// The least-force mechanism, if any is admissible before `scan.reach`;
+    /// with `observer`, the first stage prunes nothing and hands it every
+    /// candidate it evaluates.
+    pub(crate) fn run(
+        &mut self,
+        ground: &mut Ground,
+        scan: &Scan,
+        mut observer: Option<PickObserver>,
+    ) -> Option<Pick> {
         self.start();
-        let stride = if self.observed.is_some() { 1 } else { LEAD };
+        let stride = if observer.is_some() { 1 } else { LEAD };
         let mut best: Option<Pick> = None;
         let mut k = 0;
         loop {
@@ -136,7 +144,7 @@ impl VertexSearch {
             if self.beyond_reach(ground, scan, k, best.as_ref()) {
                 break;
             }
-            self.sample_piece(ground, scan, (k, stride), &mut best);
+            self.sample_piece(ground, scan, (k, stride), &mut best, &mut observer);
             k += 1;
         }
         self.fill_samples(ground, scan, &mut best);
@@ -224,20 +232,22 @@ impl VertexSearch {
 
     /// The first stage on piece k: candidates from x_k (not the face) at
     /// spacing `scan.sample`, of which every `stride`-th along the ground
-    /// is evaluated now (the lead) and the rest by `fill_samples`.
+    /// is evaluated now (the lead) and the rest by `fill_samples`; each
+    /// handed to `observer` if there is one.
     fn sample_piece(
         &mut self,
         ground: &Ground,
         scan: &Scan,
         (k, stride): (usize, usize),
         best: &mut Option<Pick>,
+        observer: &mut Option<PickObserver>,
     ) {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
         let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
         for i in usize::from(k == 0)..n {
             let x = xa + (xb - xa) * i as f64 / n as f64;
-            let force = if self.samples.len() % stride == 0 {
-                self.sample(ground, scan, (k, x), best)
+            let force = if self.samples.len().is_multiple_of(stride) {
+                self.sample(ground, scan, (k, x), best, observer)
             } else {
                 f64::NAN
             };
@@ -263,30 +273,31 @@ impl VertexSearch {
                 }
             }
             if samples[i].force.is_nan() {
-                samples[i].force = self.sample(ground, scan, (k, samples[i].x), best);
+                samples[i].force = self.sample(ground, scan, (k, samples[i].x), best, &mut None);
             }
         }
         self.samples = samples;
     }
 
     /// One first-stage candidate: its force (infinite if inadmissible or
-    /// pruned), taken as the best if it is.
+    /// pruned), taken as the best if it is, and handed to `observer`.
     fn sample(
         &mut self,
         ground: &Ground,
         scan: &Scan,
         (k, x): (usize, f64),
         best: &mut Option<Pick>,
+        observer: &mut Option<PickObserver>,
     ) -> f64 {
-        let bar = match (&self.observed, &*best) {
+        let bar = match (observer.as_ref(), &*best) {
             (None, Some(b)) => b.force * (1.0 + SLACK),
             _ => f64::INFINITY,
         };
         let Some(pick) = self.evaluate(ground, scan, (k, x), bar) else {
             return f64::INFINITY;
         };
-        if let Some(observed) = &mut self.observed {
-            observed.push(pick);
+        if let Some(observe) = observer {
+            observe(&pick);
         }
         if best.is_none_or(|b| pick.force < b.force) {
             *best = Some(pick);

@@ -142,7 +142,7 @@ impl Simulation {
             value: depth,
             message,
         };
-        let floor = -self.surface.floor;
+        let floor = -self.ground.get().floor();
         // A depth path's rule (`Case::validate`): deeper than an increment
         // and the band.
         let least = self.case.run.increment.max(self.case.soil.band_width);

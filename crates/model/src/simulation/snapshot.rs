@@ -3,7 +3,9 @@
 //! A snapshot holds everything that determines the rest of the run: the
 //! case (as `advance_to` may have steered it), the surface's nodes and
 //! counters, the search's seed (the previous increment's emergence node)
-//! and evaluation count, the side heaps and the increments done (`Body`).
+//! and evaluation count, the side heaps and the increments done (`Body`);
+//! on the vertex ground, its vertices and evaluation count instead of the
+//! node grid's fields, which are then written empty.
 //! What the case determines (the laws, the rake's grid, the node scheme,
 //! the face's node, which follows from the increments done) is rebuilt
 //! from it; the search's, kinematics' and avalanche's scratch is rebuilt
@@ -22,8 +24,10 @@ mod error;
 
 pub use error::SnapshotError;
 
-use super::{fresh_angles, Simulation};
+use super::node_grid::{fresh_angles, scheme, NodeGrid};
+use super::{Discretised, Simulation};
 use crate::case::Case;
+use crate::discretisation::Discretisation;
 use crate::grid::FaceNode;
 use crate::ground::cutting::Cutting;
 use crate::ground::Ground;
@@ -46,7 +50,8 @@ pub const CHECKSUM_BYTES: usize = 4;
 
 /// The body of a snapshot (docs/model.md §17.1): borrowed from the
 /// simulation when written, owned when read. Its fields are the state in
-/// the order the layout keeps; adding one raises `FORMAT_VERSION`.
+/// the order the layout keeps (postcard writes `nodes`' fields in place,
+/// as if they were this struct's); adding one raises `FORMAT_VERSION`.
 #[derive(Serialize, Deserialize)]
 struct Body<'a> {
     case: Cow<'a, Case>,
@@ -55,6 +60,16 @@ struct Body<'a> {
     /// Increments done; the face follows from them.
     done: usize,
     initial_mass: f64,
+    /// The node grid; empty on the vertex ground, and not read there.
+    nodes: NodeBody<'a>,
+    /// The vertex ground and its evaluations, where the case has one
+    /// (docs/model.md §19).
+    vertices: Option<(Cow<'a, Ground>, u64)>,
+}
+
+/// The node grid's state in a snapshot.
+#[derive(Default, Serialize, Deserialize)]
+struct NodeBody<'a> {
     /// The surface's floor y, where the undisturbed ground begins, and the
     /// trench's and the appended ground's weights and area.
     floor: f64,
@@ -76,9 +91,6 @@ struct Body<'a> {
     side_area: Cow<'a, [f64]>,
     side_height: Cow<'a, [f64]>,
     side_unit_weight: Cow<'a, [f64]>,
-    /// The vertex ground and its evaluations, where the case has one
-    /// (docs/model.md §19).
-    vertices: Option<(Cow<'a, Ground>, u64)>,
 }
 
 impl Simulation {
@@ -122,12 +134,47 @@ impl Simulation {
     }
 
     fn body<'a>(&'a self, note: &'a [u8]) -> Body<'a> {
-        let (s, side) = (&self.surface, &self.side);
+        let (nodes, vertices) = match &self.ground {
+            Discretised::Nodes(grid) => (NodeBody::of(grid), None),
+            Discretised::Vertices(cutting) => (
+                NodeBody::default(),
+                Some((Cow::Borrowed(cutting.ground()), cutting.evaluations())),
+            ),
+        };
         Body {
             case: Cow::Borrowed(&self.case),
             note: Cow::Borrowed(note),
             done: self.done,
             initial_mass: self.initial_mass,
+            nodes,
+            vertices,
+        }
+    }
+
+    /// The simulation a decoded body describes, once its numbers are
+    /// finite and its state one that runs reach (`check_state`).
+    fn restore(b: Body) -> Result<Simulation, SnapshotError> {
+        let case = b.case.into_owned();
+        let initial_mass = finite("initial mass", b.initial_mass)?;
+        let laws = Laws::new(&case);
+        let ground = match resumed_vertices(&case, b.vertices)? {
+            Some(cutting) => Discretised::Vertices(Box::new(cutting)),
+            None => Discretised::Nodes(Box::new(b.nodes.restore(&case, &laws, b.done)?)),
+        };
+        Ok(Simulation {
+            laws,
+            case,
+            ground,
+            done: b.done,
+            initial_mass,
+        })
+    }
+}
+
+impl<'a> NodeBody<'a> {
+    fn of(grid: &'a NodeGrid) -> Self {
+        let (s, side) = (&grid.surface, &grid.side);
+        NodeBody {
             floor: s.floor,
             pristine_from: s.pristine_from,
             trench_mass: s.trench_mass,
@@ -138,78 +185,68 @@ impl Simulation {
             unit_weight: Cow::Borrowed(&s.unit_weight),
             friction: Cow::Borrowed(&s.friction),
             dilation: Cow::Borrowed(&s.dilation),
-            seed: self.search.previous(),
-            evaluations: self.search.evaluations,
+            seed: grid.search.previous(),
+            evaluations: grid.search.evaluations,
             spilled: side.spilled,
             side_area: Cow::Borrowed(&side.area),
             side_height: Cow::Borrowed(&side.height),
             side_unit_weight: Cow::Borrowed(&side.unit_weight),
-            vertices: self
-                .vertices
-                .as_ref()
-                .map(|c| (Cow::Borrowed(c.ground()), c.evaluations())),
         }
     }
 
-    /// The simulation a decoded body describes, once its numbers are
-    /// finite and its state one that runs reach (`check_state`).
-    fn restore(b: Body) -> Result<Simulation, SnapshotError> {
-        let case = b.case.into_owned();
-        let initial_mass = finite("initial mass", b.initial_mass)?;
-        let floor = finite("surface floor", b.floor)?;
+    /// The node grid of `case` after `done` increments, once the numbers
+    /// are finite and the state one that runs reach (`check_state`).
+    fn restore(self, case: &Case, laws: &Laws, done: usize) -> Result<NodeGrid, SnapshotError> {
+        let floor = finite("surface floor", self.floor)?;
         let column = |what, v: Cow<[f64]>| finite_all(what, v.into_owned());
-        let height = column("surface heights", b.height)?;
-        let accumulated_shear = column("accumulated shear", b.accumulated_shear)?;
-        let unit_weight = column("unit weights", b.unit_weight)?;
-        let friction = column("friction angles", b.friction)?;
-        let dilation = column("dilation angles", b.dilation)?;
+        let height = column("surface heights", self.height)?;
+        let accumulated_shear = column("accumulated shear", self.accumulated_shear)?;
+        let unit_weight = column("unit weights", self.unit_weight)?;
+        let friction = column("friction angles", self.friction)?;
+        let dilation = column("dilation angles", self.dilation)?;
         let mut side = SideHeaps::default();
-        side.spilled = finite("mass spilled", b.spilled)?;
-        side.area = column("side heaps", b.side_area)?;
-        side.height = column("side heaps", b.side_height)?;
-        side.unit_weight = column("side heaps", b.side_unit_weight)?;
+        side.spilled = finite("mass spilled", self.spilled)?;
+        side.area = column("side heaps", self.side_area)?;
+        side.height = column("side heaps", self.side_height)?;
+        side.unit_weight = column("side heaps", self.side_unit_weight)?;
         let k = case.increments_per_node();
         // The face follows from the increments done (`Scheme::face_after`).
         let face = FaceNode {
-            node: b.done / k,
-            offset: (b.done % k) as f64 / k as f64,
+            node: done / k,
+            offset: (done % k) as f64 / k as f64,
         };
         check_state(&StateCheck {
-            case: &case,
+            case,
             n: height.len(),
             lengths: [&accumulated_shear, &unit_weight, &friction, &dilation].map(Vec::len),
             face: face.node,
             floor,
-            pristine_from: b.pristine_from,
-            seed: b.seed,
+            pristine_from: self.pristine_from,
+            seed: self.seed,
             side: &side,
             unit_weight: &unit_weight,
         })?;
-        let laws = Laws::new(&case);
         let mut s = Surface::flat(
-            Self::scheme(&case),
+            scheme(case),
             -floor,
             case.soil.unit_weight,
-            fresh_angles(&laws),
+            fresh_angles(laws),
             0,
         );
         s.face = face;
-        s.pristine_from = b.pristine_from;
-        s.trench_mass = finite("trench mass", b.trench_mass)?;
-        s.appended_mass = finite("appended mass", b.appended_mass)?;
-        s.appended_area = finite("appended area", b.appended_area)?;
+        s.pristine_from = self.pristine_from;
+        s.trench_mass = finite("trench mass", self.trench_mass)?;
+        s.appended_mass = finite("appended mass", self.appended_mass)?;
+        s.appended_area = finite("appended area", self.appended_area)?;
         s.height = height;
         s.accumulated_shear = accumulated_shear;
         s.unit_weight = unit_weight;
         s.friction = friction;
         s.dilation = dilation;
-        let vertices = resumed_vertices(&case, b.vertices, b.done)?;
-        let mut sim = Simulation::assemble(case, laws, s, initial_mass);
-        sim.search = Search::resumed(b.seed, b.evaluations);
-        sim.side = side;
-        sim.done = b.done;
-        sim.vertices = vertices;
-        Ok(sim)
+        let mut grid = NodeGrid::on(case, s);
+        grid.search = Search::resumed(self.seed, self.evaluations);
+        grid.side = side;
+        Ok(grid)
     }
 }
 
@@ -218,8 +255,7 @@ impl Simulation {
 fn resumed_vertices(
     case: &Case,
     vertices: Option<(Cow<Ground>, u64)>,
-    done: usize,
-) -> Result<Option<Box<Cutting>>, SnapshotError> {
+) -> Result<Option<Cutting>, SnapshotError> {
     let wanted = case.run.vertex_spacing > 0.0;
     match vertices {
         None if !wanted => Ok(None),
@@ -228,12 +264,7 @@ fn resumed_vertices(
             if let Some(defect) = ground.defect() {
                 return Err(SnapshotError::invalid("vertex ground", defect));
             }
-            Ok(Some(Box::new(Cutting::resumed(
-                case,
-                ground,
-                done,
-                evaluations,
-            ))))
+            Ok(Some(Cutting::resumed(case, ground, evaluations)))
         }
         _ => Err(SnapshotError::invalid(
             "vertex ground",
@@ -358,6 +389,14 @@ mod tests {
         Simulation::from_snapshot(&s.snapshot()).unwrap_err()
     }
 
+    /// The node grid `sim` runs on.
+    fn nodes(sim: &mut Simulation) -> &mut NodeGrid {
+        match &mut sim.ground {
+            Discretised::Nodes(grid) => grid,
+            Discretised::Vertices(_) => panic!("a case on the node grid"),
+        }
+    }
+
     fn about(e: SnapshotError) -> &'static str {
         match e {
             SnapshotError::Invalid { what, .. } => what,
@@ -368,21 +407,21 @@ mod tests {
 
     #[test]
     fn states_no_run_reaches_are_refused_by_name() {
-        let e = restored(|s| s.surface.height.truncate(3));
+        let e = restored(|s| nodes(s).surface.height.truncate(3));
         assert_eq!(about(e), "surface");
-        let e = restored(|s| s.surface.friction.push(0.5));
+        let e = restored(|s| nodes(s).surface.friction.push(0.5));
         assert_eq!(about(e), "surface");
         let e = restored(|s| s.done = 10_000);
         assert_eq!(about(e), "increments done");
-        let e = restored(|s| s.surface.height[3] = f64::NAN);
+        let e = restored(|s| nodes(s).surface.height[3] = f64::NAN);
         assert_eq!(about(e), "surface heights");
-        let e = restored(|s| s.surface.unit_weight[5] = 0.0);
+        let e = restored(|s| nodes(s).surface.unit_weight[5] = 0.0);
         assert_eq!(about(e), "unit weights");
-        let e = restored(|s| s.surface.floor = -1.0);
+        let e = restored(|s| nodes(s).surface.floor = -1.0);
         assert_eq!(about(e), "surface floor");
-        let e = restored(|s| s.search = Search::resumed(Some(1 << 40), 0));
+        let e = restored(|s| nodes(s).search = Search::resumed(Some(1 << 40), 0));
         assert_eq!(about(e), "search seed");
-        let e = restored(|s| s.side.area = vec![0.0; 3]);
+        let e = restored(|s| nodes(s).side.area = vec![0.0; 3]);
         assert_eq!(about(e), "side heaps");
         let e = restored(|s| s.case.soil.unit_weight = -1.0);
         assert_eq!(about(e), "case");
