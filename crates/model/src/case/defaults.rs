@@ -45,7 +45,7 @@ pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 /// v0 = d / 500 with vertices `VERTICES_PER_DEPTH` apart is accurate by the
 /// ensemble rule on every paper case of the refined model in softening
 /// soil against the reference grid's ensemble at d/2000 (worst window /
-/// tolerance: Fig. 5 0.86, Table 1 HS 0.24, Table 1 S 0.24;
+/// tolerance: Fig. 5 0.89, Table 1 HS 0.30, Table 1 S 0.22;
 /// `docs/studies/vertex-ground/`), at two and a half times the node grid's
 /// increment (`SOFTENING_INCREMENTS_PER_DEPTH`); d/250 is not on Fig. 5
 /// (2.63).
