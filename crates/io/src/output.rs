@@ -184,7 +184,7 @@ pub fn band_jump_rule() -> String {
 /// The rule of `sheared_fraction`, in words.
 pub fn sheared_fraction_rule() -> String {
     format!(
-        "fraction of surface nodes within {SHEARED_REACH_DEPTHS} d ahead of the blade's final position whose accumulated shear exceeds {SHEARED_THRESHOLD} ur"
+        "fraction of the surface's length within {SHEARED_REACH_DEPTHS} d ahead of the blade's final position whose accumulated shear exceeds {SHEARED_THRESHOLD} ur"
     )
 }
 

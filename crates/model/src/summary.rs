@@ -13,7 +13,7 @@ pub const PEAK_PROMINENCE: f64 = 0.05;
 pub const JUMP_DEPTHS: f64 = 0.25;
 
 /// Accumulated shear above this fraction of `soil.residual_shear` counts a
-/// surface node as sheared (`sheared_fraction`).
+/// piece of the surface as sheared (`sheared_fraction`).
 pub const SHEARED_THRESHOLD: f64 = 0.05;
 
 /// Length ahead of the blade's final position, in blade depths, over which
@@ -105,20 +105,31 @@ pub fn band_jumps(history: &[StepRecord], length: f64) -> Vec<usize> {
         .collect()
 }
 
-/// Fraction of the surface nodes within `SHEARED_REACH_DEPTHS` depths ahead
-/// of the blade whose accumulated shear exceeds `SHEARED_THRESHOLD` ur:
-/// high where successive bands gave the appearance of continuous shearing,
-/// low where bands stayed at distinct locations.
+/// Fraction of the length of the surface within `SHEARED_REACH_DEPTHS`
+/// depths ahead of the blade whose accumulated shear exceeds
+/// `SHEARED_THRESHOLD` ur, each piece between two profile points taking
+/// the state of its first (the vertex ground's pieces, and the node grid's
+/// nodes to the next): high where successive bands gave the appearance of
+/// continuous shearing, low where bands stayed at distinct locations. By
+/// length, not by points, because the vertex ground's points crowd where
+/// bands emerged.
 pub fn sheared_fraction(case: &Case, profile: &[ProfilePoint]) -> f64 {
     let Some(face) = profile.first() else {
         return f64::NAN;
     };
     let reach = face.x + SHEARED_REACH_DEPTHS * case.blade.depth;
     let threshold = SHEARED_THRESHOLD * case.soil.residual_shear;
-    let ahead: Vec<&ProfilePoint> = profile.iter().filter(|p| p.x <= reach).collect();
-    let sheared = ahead
-        .iter()
-        .filter(|p| p.accumulated_shear > threshold)
-        .count();
-    sheared as f64 / ahead.len() as f64
+    let (mut sheared, mut total) = (0.0, 0.0);
+    for pair in profile.windows(2) {
+        let (a, b) = (&pair[0], &pair[1]);
+        if a.x >= reach {
+            break;
+        }
+        let length = b.x.min(reach) - a.x;
+        total += length;
+        if a.accumulated_shear > threshold {
+            sheared += length;
+        }
+    }
+    sheared / total
 }

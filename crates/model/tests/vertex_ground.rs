@@ -6,6 +6,7 @@
 
 use crate::common;
 
+use soilcut_model::summary::sheared_fraction;
 use soilcut_model::{AdvanceError, Simulation, SnapshotError};
 
 /// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
@@ -56,7 +57,7 @@ fn a_run_keeps_its_mass_and_follows_the_node_grid() {
     }
     let mut nodes = common::refined("table1-s", 3.0, 250.0);
     nodes.run.samples_per_band = 0.0;
-    let (reference, _) = common::run(&nodes);
+    let (reference, node_sim) = common::run(&nodes);
     // Both keep the band's state where it was; they differ in where a band
     // may emerge (anywhere, or at nodes) and in the avalanches' vertices.
     let (ours, theirs) = (
@@ -66,6 +67,11 @@ fn a_run_keeps_its_mass_and_follows_the_node_grid() {
     for (w, (a, b)) in ours.iter().zip(&theirs).enumerate() {
         assert!((a - b).abs() < 0.015 * b, "window {w}: {a} vs {b}");
     }
+    // The sheared fraction is one of length, not of points, which crowd
+    // where the bands emerged on the vertex ground: both grounds agree.
+    let sheared = |s: &Simulation| sheared_fraction(s.case(), &s.profile());
+    let (a, b) = (sheared(&sim), sheared(&node_sim));
+    assert!((a - b).abs() < 0.03, "sheared fraction {a} vs {b}");
 }
 
 #[test]

@@ -11,15 +11,18 @@ use soilcut_study::fit::{FitResult, Method};
 use soilcut_study::no_progress;
 use synthetic::{recovered, Case};
 
-/// d = 20 over 1.5 d at d/50, with the face friction rule the recovery was
-/// established on. Under the mobilised rule (issue 20) two of the three
-/// truths fall outside their profile intervals at this coarse increment
-/// (seed 1: the truth's Δχ² 12.7 against the threshold 9.49): an open
-/// question of that rule's smoothness in the keys at coarse increments,
-/// not of the fit's machinery, which this test checks.
-const COARSE: [&str; 3] = [
+/// d = 20 over 1.5 d at d/50, with the face friction rule and the ground
+/// the recovery was established on. Under the mobilised rule (issue 20)
+/// two of the three truths fall outside their profile intervals at this
+/// coarse increment (seed 1: the truth's Δχ² 12.7 against the threshold
+/// 9.49); on the vertex ground (issue 28: the default of these softening
+/// cases since) one of the eight determined keys does (seed 1's φr 30.13
+/// outside 30.27-31.22, its truth's Δχ² 14.2 against 9.49): open questions of the smoothness in the keys at
+/// coarse increments, not of the fit's machinery, which this test checks.
+const COARSE: [&str; 4] = [
     "run.travel=30",
     "run.increment=0.4",
+    "run.vertex_spacing=0",
     "choices.face_friction=sign",
 ];
 
