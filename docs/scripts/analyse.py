@@ -6,13 +6,12 @@ Usage: python3 docs/scripts/analyse.py OUTDIR [OUTDIR ...]
 For each run folder (written by `soilcut run`) prints the summary figures,
 the mean normalised force over each unit of u/d, the initial-stage β* swings,
 the longest stay of the band at one location, far-band excursions, the band
-jump nearest each peak, the slope of the window means, the sheared fraction by
-length and, for a variant, its window means against the shipped run's.
+jump nearest each peak, the slope of the window means and, for a variant, its
+window means against the shipped run's.
 """
 import csv
 import json
 import sys
-import tomllib
 from pathlib import Path
 
 
@@ -124,32 +123,6 @@ def peak_jumps(s, h, depth, after=0.4):
     return rows
 
 
-def sheared_length_fraction(run, reach_depths=5.0, threshold=0.05):
-    """The summary's `sheared_fraction` by length instead of by count: the
-    fraction of the ground's length within `reach_depths` depths ahead of the
-    face whose accumulated shear exceeds `threshold` ur, each point of
-    profile.csv standing for the ground up to the next one (on the vertex
-    ground the piece that starts at the vertex, whose state the vertex
-    carries). On the node grid's evenly spaced nodes it is the summary's
-    count to about 0.01; on the vertex ground, whose vertices crowd where bands emerged, the
-    count is not a fraction of the ground."""
-    run = Path(run)
-    case = tomllib.loads((run / "case.resolved.toml").read_text())
-    reach_len = reach_depths * case["blade"]["depth"]
-    limit = threshold * case["soil"]["residual_shear"]
-    pts = [(float(r["x"]), float(r["accumulated_shear"]))
-           for r in csv.DictReader((run / "profile.csv").open())]
-    reach = pts[0][0] + reach_len
-    total = sheared = 0.0
-    for (xa, ta), (xb, _) in zip(pts, pts[1:]):
-        if xa >= reach:
-            break
-        length = min(xb, reach) - xa
-        total += length
-        sheared += length if ta > limit else 0.0
-    return sheared / total
-
-
 def window_slopes(means):
     """Change of the mean force from each unit window of u/d to the next (per d)."""
     return [b - a for a, b in zip(means, means[1:])]
@@ -198,7 +171,6 @@ def main():
             print("  at each peak: " + "; ".join(parts))
         slopes = " ".join(f"{d:.2f}" for d in window_slopes(window_means(h)))
         print(f"  slope of the window means (per d): {slopes}")
-        print(f"  sheared fraction by length (5 d ahead of the face): {sheared_length_fraction(run):.2f}")
         cmp = against_shipped(run, window_means(h))
         if cmp:
             base, rel = cmp
