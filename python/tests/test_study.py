@@ -208,7 +208,9 @@ def test_fit_width_divides_the_measured_force(refined):
     total = soilcut.fit(
         case, (truth["u"], 50 * truth["force"]), ["soil.friction.peak"], width=50, **budget
     )
-    assert per_width.start_rms == total.start_rms == 0.0
+    # (50 P) / 50 is P to an ulp, not always exactly.
+    assert per_width.start_rms == 0.0
+    assert total.start_rms < 1e-12
     with pytest.raises(ValueError, match="width"):
         soilcut.fit(case, (truth["u"], truth["force"]), ["soil.friction.peak"], width=0)
 
