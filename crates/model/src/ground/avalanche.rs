@@ -20,6 +20,11 @@
 use super::Ground;
 use crate::avalanche::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 
+/// A run of changed pieces balances when its net area change is within
+/// this fraction of its gross change (the pooling keeps the area to
+/// round-off).
+const BALANCE: f64 = 1e-9;
+
 impl Ground {
     /// Relaxes every piece steeper than the angle of repose (`tan_repose`,
     /// s = tan θr) (M28, M50); returns whether any soil moved. The pieces next
@@ -130,9 +135,7 @@ impl Ground {
                 k += 1;
                 continue;
             }
-            let end = (k..change.len())
-                .find(|&i| change[i] == 0.0)
-                .unwrap_or(change.len());
+            let end = run_end(&change, k);
             self.deposit_run(k..end, &change, before);
             k = end;
         }
@@ -161,5 +164,38 @@ impl Ground {
                 (own * self.accumulated_shear[k] + gamma * change[k] * ut) / total;
             self.unit_weight[k] = total / (before[k] + change[k]);
         }
+    }
+}
+
+/// The end of the run of changed pieces from `start`: the first unchanged
+/// piece where the run's area balances (what its pieces lost, the others
+/// gained, to round-off). A piece through which soil runs can keep its
+/// area exactly, losing at one end what it gains at the other; ending the
+/// run there would deposit one side's soil on nothing and the other's
+/// gain with no soil, so mass would not be kept.
+fn run_end(change: &[f64], start: usize) -> usize {
+    let (mut net, mut gross) = (0.0_f64, 0.0_f64);
+    for (i, &c) in change.iter().enumerate().skip(start) {
+        if c == 0.0 && net.abs() <= BALANCE * gross {
+            return i;
+        }
+        net += c;
+        gross += c.abs();
+    }
+    change.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::run_end;
+
+    #[test]
+    fn a_run_ends_where_its_area_balances_not_at_a_piece_soil_ran_through() {
+        // Piece 1 loses at one end what it gains at the other: the soil
+        // piece 0 lost lands on piece 2, one run.
+        assert_eq!(run_end(&[-1.0, 0.0, 1.0, 0.0], 0), 3);
+        // Two avalanches of their own, each balanced, apart.
+        assert_eq!(run_end(&[-1.0, 1.0, 0.0, -2.0, 2.0], 0), 2);
+        assert_eq!(run_end(&[-1.0, 1.0, 0.0, -2.0, 2.0], 3), 5);
     }
 }
