@@ -71,13 +71,20 @@ def ensemble(soilcut, case, depth, scheme, folder, jobs):
 
 def resolved_grid(folder, depth):
     """d/v0, d/h (of the vertices on the vertex ground, else of the nodes),
-    run.samples_per_band and the ground's name ("vertices" or "h") of the
-    ensemble's middle member, as its case.resolved.toml gives them."""
-    run = tomllib.loads((folder / "k+0" / "case.resolved.toml").read_text())["run"]
+    run.samples_per_band and the defaults' label of the ensemble's middle
+    member, as its case.resolved.toml gives them."""
+    resolved = tomllib.loads((folder / "k+0" / "case.resolved.toml").read_text())
+    run = resolved["run"]
     per_v0 = round(depth / run["increment"])
     vertices = run.get("vertex_spacing", 0.0)
     spacing, ground = (vertices, "vertices") if vertices > 0 else (run["node_spacing"], "h")
-    return per_v0, round(depth / spacing), round(run["samples_per_band"]), ground
+    per_h, samples = round(depth / spacing), round(run["samples_per_band"])
+    # A slip line (the original model) has no band width to sample.
+    search = "exhaustive" if resolved["model"] == "original" else f"K {samples}"
+    label = f"{DEFAULTS} (d/{per_v0}, {ground} d/{per_h}, {search}"
+    if run.get("time_scheme", "explicit") != "explicit":
+        label += f", {run['time_scheme']}"
+    return per_v0, per_h, samples, label + ")"
 
 
 def median_wall_time(folder):
@@ -130,8 +137,7 @@ def main():
             folder = runs / name / tag
             folder = ensemble(args.soilcut, case, d, (per_v0, per_h, samples), folder, args.jobs)
             if per_v0 is None:
-                per_v0, per_h, samples, ground = resolved_grid(folder, d)
-                scheme = f"{DEFAULTS} (d/{per_v0}, {ground} d/{per_h}, K {samples})"
+                per_v0, per_h, samples, scheme = resolved_grid(folder, d)
             verdict = judge(args.soilcut, folder, ref)
             whole = json.loads((folder / "summary.json").read_text())["mean_force_norm"]
             rows.append(

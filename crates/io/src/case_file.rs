@@ -9,9 +9,9 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    default_increment, default_node_spacing, default_vertex_spacing, AngleLaw, BandAngleRule,
-    BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule, Model, Run,
-    SnapshotError, Soil, UnitWeightRule, DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_node_spacing, default_time_scheme, default_vertex_spacing, AngleLaw,
+    BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule, Model,
+    Run, SnapshotError, Soil, TimeScheme, UnitWeightRule, DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -104,6 +104,16 @@ enum FaceFrictionName {
     #[default]
     Mobilised,
     Sign,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(
+    rename_all = "kebab-case",
+    expecting = "\"explicit\" or \"midpoint-force\""
+)]
+enum TimeSchemeName {
+    Explicit,
+    MidpointForce,
 }
 
 impl ChoicesFile {
@@ -207,7 +217,7 @@ struct AngleFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing }"
+    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing, time_scheme }"
 )]
 struct RunFile {
     travel: f64,
@@ -219,6 +229,8 @@ struct RunFile {
     samples_per_band: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     vertex_spacing: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time_scheme: Option<TimeSchemeName>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -551,6 +563,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             node_spacing: 0.0,
             samples_per_band,
             vertex_spacing: 0.0,
+            time_scheme: TimeScheme::Explicit,
         },
         bin: Bin {
             length: file.bin.map(|b| b.length),
@@ -565,9 +578,10 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     })
 }
 
-/// `case` on the ground and at the increment its file gives, or else the
-/// defaults of its class of case (soilcut_model::default_vertex_spacing,
-/// default_increment, default_node_spacing), written into `run`: the
+/// `case` on the ground and at the increment and time scheme its file
+/// gives, or else the defaults of its class of case
+/// (soilcut_model::default_vertex_spacing, default_increment,
+/// default_node_spacing, default_time_scheme), written into `run`: the
 /// vertex ground where the file names neither ground and the class is
 /// the vertex ground's, the node grid where it names node spacing.
 fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
@@ -587,6 +601,14 @@ fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
     let node_spacing = *run
         .node_spacing
         .get_or_insert_with(|| default_node_spacing(&case.soil, depth, increment));
+    let default_scheme = match default_time_scheme(on_vertices) {
+        TimeScheme::Explicit => TimeSchemeName::Explicit,
+        TimeScheme::MidpointForce => TimeSchemeName::MidpointForce,
+    };
+    case.run.time_scheme = match *run.time_scheme.get_or_insert(default_scheme) {
+        TimeSchemeName::Explicit => TimeScheme::Explicit,
+        TimeSchemeName::MidpointForce => TimeScheme::MidpointForce,
+    };
     case.run.vertex_spacing = vertex_spacing;
     case.run.increment = increment;
     case.run.node_spacing = node_spacing;
@@ -777,11 +799,11 @@ mod tests {
         let (d, v0, h) = resolved_grid(&original, &["soil.friction.residual=35"]);
         assert_eq!((v0, h), (d / 250.0, 10.0 * (d / 250.0)));
         // The refined model in softening soil, a vertical blade at constant
-        // depth: d/500 on the vertex ground, vertices d/50 apart; on nodes
+        // depth: d/350 on the vertex ground, vertices d/50 apart; on nodes
         // (given node spacing, or no vertices, or a raked blade that the
         // vertex ground does not take) d/1250, nodes every increment.
         let (d, v0, _, vertices) = resolved_ground(&refined, &[]);
-        assert_eq!((v0, vertices), (d / 500.0, d / 50.0));
+        assert_eq!((v0, vertices), (d / 350.0, d / 50.0));
         for nodes in ["run.vertex_spacing=0", "blade.rake=70"] {
             let (d, v0, h, vertices) = resolved_ground(&refined, &[nodes]);
             assert_eq!((v0, h, vertices), (d / 1250.0, d / 1250.0, 0.0), "{nodes}");
@@ -812,6 +834,32 @@ mod tests {
         assert_eq!(coarse.case.run.increment, 0.08);
         let e = key_error(&original, &["run.node_spacing=0.03"]);
         assert_eq!(e.key, "run.node_spacing");
+    }
+
+    #[test]
+    fn the_time_scheme_defaults_by_the_ground_and_midpoint_needs_vertices() {
+        let refined = without_increment(REFINED);
+        let scheme = |overrides: &[&str]| {
+            let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
+            let loaded = parse_case(&refined, &overrides).unwrap();
+            let resolved = loaded.resolved_toml();
+            (loaded.case.run.time_scheme, resolved)
+        };
+        let (on_vertices, resolved) = scheme(&[]);
+        assert_eq!(on_vertices, TimeScheme::MidpointForce);
+        assert!(
+            resolved.contains("time_scheme = \"midpoint-force\""),
+            "{resolved}"
+        );
+        assert_eq!(scheme(&["run.vertex_spacing=0"]).0, TimeScheme::Explicit);
+        let given = scheme(&["run.time_scheme=\"explicit\""]);
+        assert_eq!(given.0, TimeScheme::Explicit);
+        let e = key_error(
+            &refined,
+            &["run.vertex_spacing=0", "run.time_scheme=\"midpoint-force\""],
+        );
+        assert_eq!(e.key, "run.time_scheme");
+        assert!(e.message.contains("vertex ground only"), "{e}");
     }
 
     #[test]

@@ -13,10 +13,10 @@ mod vertex_ground;
 mod warnings;
 
 pub use defaults::{
-    default_increment, default_increments_per_depth, default_node_spacing, default_vertex_spacing,
-    COARSE_NODES_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH,
-    ORIGINAL_INCREMENTS_PER_DEPTH, SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH,
-    VERTICES_PER_DEPTH,
+    default_increment, default_increments_per_depth, default_node_spacing, default_time_scheme,
+    default_vertex_spacing, COARSE_NODES_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND,
+    NON_SOFTENING_INCREMENTS_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH,
+    SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
 pub use validate::{MAGNITUDE, MAX_NODES, THINNEST_WIDTH};
@@ -148,6 +148,24 @@ pub struct Run {
     /// vertex within h/2 (issue 28; the default of its class of case,
     /// `default_vertex_spacing`).
     pub vertex_spacing: f64,
+    /// When in the increment a band's strength is taken (docs/model.md §19;
+    /// the default of its ground, `default_time_scheme`).
+    pub time_scheme: TimeScheme,
+}
+
+/// When in the increment the chosen band's strength is taken.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum TimeScheme {
+    /// At the start of the increment, the state the search saw (the
+    /// paper's, and the node grid's only scheme).
+    #[default]
+    Explicit,
+    /// The search's band kept; its force and angles taken on its own
+    /// state half an increment on, ut + ½ Δut, wherever its footprint
+    /// holds soil a band has sheared (on fresh soil, as explicit, so the
+    /// first increment is Coulomb's wedge). The vertex ground only
+    /// (docs/model.md §19).
+    MidpointForce,
 }
 
 /// How a candidate band takes its angles from the nodes it touches.

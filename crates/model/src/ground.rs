@@ -27,6 +27,7 @@ use serde::{Deserialize, Serialize};
 
 mod avalanche;
 pub(crate) mod cutting;
+mod midpoint;
 pub mod motion;
 pub(crate) mod search;
 

@@ -1,7 +1,7 @@
 //! Shared case builders for the model's integration tests.
 #![allow(dead_code)]
 
-use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil};
+use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil, TimeScheme};
 
 /// The paper's original-model case (docs/model.md §13), shortened to
 /// `travel_depths` depths at increment d / `per_depth`.
@@ -40,6 +40,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             node_spacing: d / per_depth,
             samples_per_band: 0.0,
             vertex_spacing: 0.0,
+            time_scheme: TimeScheme::Explicit,
         },
         bin: Default::default(),
         choices: Default::default(),

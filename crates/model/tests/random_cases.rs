@@ -14,8 +14,8 @@ use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner
 use soilcut_model::accuracy::{agreement, Spread};
 use soilcut_model::search::TIE_TOLERANCE;
 use soilcut_model::{
-    default_increment, default_node_spacing, default_vertex_spacing, AngleLaw, Case, Model,
-    Simulation, DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_node_spacing, default_time_scheme, default_vertex_spacing, AngleLaw,
+    Case, Model, Simulation, DEFAULT_SAMPLES_PER_BAND,
 };
 
 /// Fractions in [0, 1) drawn in turn: the random choices of one case.
@@ -259,7 +259,7 @@ fn at(case: &Case, increment: f64, node_spacing: f64, samples: f64) -> Case {
 
 /// At the default ground, grid and search for the class of case
 /// (`default_vertex_spacing`, `default_increment`, `default_node_spacing`,
-/// `DEFAULT_SAMPLES_PER_BAND`)
+/// `default_time_scheme`, `DEFAULT_SAMPLES_PER_BAND`)
 /// the ensembles of random cases it was not chosen on are accurate by the
 /// ensemble rule (M40) against the reference grid's ensemble at d/2000,
 /// over the first 1.5 depths of travel; where the soil does not soften,
@@ -292,6 +292,7 @@ fn the_default_grid_is_accurate_on_random_cases() {
             assert_eq!(h > v0, !case.soil.softens());
             default = at(&default, v0, h, DEFAULT_SAMPLES_PER_BAND);
             default.run.vertex_spacing = vertices;
+            default.run.time_scheme = default_time_scheme(vertices > 0.0);
             let (windows, whole) = ensemble(&default, 1);
             let fine = d / 2000.0;
             let (ref_windows, ref_whole) = ensemble(&at(&case, fine, fine, 0.0), 1);

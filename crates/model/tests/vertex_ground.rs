@@ -7,7 +7,7 @@
 use crate::common;
 
 use soilcut_model::summary::sheared_fraction;
-use soilcut_model::{AdvanceError, Simulation, SnapshotError};
+use soilcut_model::{AdvanceError, Simulation, SnapshotError, TimeScheme};
 
 /// Table 1 S (softening only) on the vertex ground, vertices d/50 apart.
 fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
@@ -173,4 +173,63 @@ fn advance_to_goes_beyond_the_travel_and_refuses_a_depth_path() {
         matches!(&e, AdvanceError::Case(c) if c.key == "blade.depth_path"),
         "{e}"
     );
+}
+
+/// The increments of `which` on vertices d/50 apart at d/250 under the
+/// explicit and the midpoint rule, in step up to the first that differs
+/// (until then the two states are the same): the records before it, and
+/// the pair at it.
+fn until_they_part(which: &str) -> (usize, soilcut_model::StepRecord, soilcut_model::StepRecord) {
+    let case = common::on_vertices(common::refined(which, 0.5, 250.0), 50.0);
+    let mut midpoint = case.clone();
+    midpoint.run.time_scheme = TimeScheme::MidpointForce;
+    let (mut e, mut m) = (
+        Simulation::new(&case).unwrap(),
+        Simulation::new(&midpoint).unwrap(),
+    );
+    for same in 0.. {
+        let (a, b) = (e.step().unwrap(), m.step().unwrap());
+        if a != b {
+            return (same, a, b);
+        }
+        assert!(!e.is_done(), "{which}: the two rules never part");
+    }
+    unreachable!()
+}
+
+#[test]
+fn the_midpoint_force_keeps_the_band_and_takes_the_state_half_an_increment_on() {
+    // Softening from the start (Table 1 S) and hardening only (Fig. 8b):
+    // the first band that shears soil an earlier one sheared has, half an
+    // increment on, a lower, or higher, strength than at the start.
+    for (which, softens) in [("table1-s", true), ("fig8b", false)] {
+        let (same, e, m) = until_they_part(which);
+        // Fresh soil: the first increment is the explicit one, Coulomb's
+        // wedge, bit for bit.
+        assert!(same >= 1, "{which}");
+        // The same state, so the same band; only its strength moves.
+        assert_eq!((e.x_emergence, e.beta_deg), (m.x_emergence, m.beta_deg));
+        assert_eq!(
+            m.friction_deg < e.friction_deg,
+            softens,
+            "{which}: {m:?} vs {e:?}"
+        );
+        assert_eq!(m.force < e.force, softens, "{which}: {m:?} vs {e:?}");
+        // Every point of the footprint half an increment's shear on: the
+        // mean φ moves by no more than the law's steepest slope times it.
+        let soil = common::refined(which, 0.5, 250.0).soil;
+        let f = soil.friction;
+        let hardening = if soil.peak_shear > 0.0 {
+            (f.peak - f.initial).abs() / soil.peak_shear
+        } else {
+            0.0
+        };
+        let softening = (f.peak - f.residual) / (soil.residual_shear - soil.peak_shear);
+        let steepest = hardening.max(softening);
+        let moved = (m.friction_deg - e.friction_deg).abs();
+        assert!(
+            moved > 0.0 && moved <= steepest * 0.5 * e.slip * (1.0 + 1e-9),
+            "{which}: {moved} degrees"
+        );
+    }
 }

@@ -7,7 +7,7 @@
 //! `default_vertex_spacing`, `default_increment` and `default_node_spacing`
 //! are the one place that decides them.
 
-use super::{Case, Model, Soil};
+use super::{Case, Model, Soil, TimeScheme};
 
 /// `run.increment` of the original model (one slip line) when a case does
 /// not give it: v0 = d / 250, the coarsest increment the study tries, is
@@ -42,19 +42,23 @@ pub const NON_SOFTENING_INCREMENTS_PER_DEPTH: f64 = 500.0;
 pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 
 /// `run.increment` on the vertex ground when a case does not give it:
-/// v0 = d / 500 with vertices `VERTICES_PER_DEPTH` apart is accurate by the
-/// ensemble rule on every paper case of the refined model in softening
-/// soil against the reference grid's ensemble at d/2000 (worst window /
-/// tolerance: Fig. 5 0.89, Table 1 HS 0.30, Table 1 S 0.22;
-/// `docs/studies/vertex-ground/`), at two and a half times the node grid's
-/// increment (`SOFTENING_INCREMENTS_PER_DEPTH`); d/250 is not on Fig. 5
-/// (2.63).
-pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 500.0;
+/// v0 = d / 350 with vertices `VERTICES_PER_DEPTH` apart and the midpoint
+/// force (`default_time_scheme`) is accurate by the ensemble rule on every
+/// paper case of the refined model in softening soil against the
+/// reference grid's ensemble at d/2000 (worst window / tolerance: Fig. 5
+/// 0.73, Table 1 HS 0.36, Table 1 S 0.06; with vertices d/100 apart 0.77,
+/// 0.33, 0.15; `docs/studies/vertex-ground/`). Of d/250, d/300, d/350,
+/// d/400 and d/500 it is the coarsest that passes at both vertex
+/// spacings: d/250 fails Fig. 5 (2.61) and Table 1 HS (1.21), d/300 Fig. 5
+/// with vertices d/100 apart. The explicit rule needs d/500 (Fig. 5 2.63
+/// at d/250).
+pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
 
 /// Vertex spacings per blade depth of the default vertex ground: h = d/50
-/// at d/500 is accurate on Fig. 5, where h = d/25 is not (1.48 at d/1250)
-/// and d/100 is no more accurate (0.88 against 0.83 at d/1250;
-/// `docs/studies/vertex-ground/`).
+/// is accurate on every case of its class, where h = d/25 is not (Table 1
+/// S 1.28 at the default d/350 with the midpoint force; Fig. 5 1.48 at
+/// d/1250 explicit) and d/100 is no more accurate (Fig. 5 0.77 against
+/// 0.73 at d/350; `docs/studies/vertex-ground/`).
 pub const VERTICES_PER_DEPTH: f64 = 50.0;
 
 /// `run.samples_per_band` when a case does not give it: the search's first
@@ -106,6 +110,18 @@ pub fn default_vertex_spacing(case: &Case) -> f64 {
         case.blade.depth / VERTICES_PER_DEPTH
     } else {
         0.0
+    }
+}
+
+/// `run.time_scheme` when a case does not give it: `MidpointForce` on the
+/// vertex ground, where it is accurate by the ensemble rule at coarser
+/// increments than `Explicit` (`VERTEX_INCREMENTS_PER_DEPTH`), and
+/// `Explicit` on the node grid, the only scheme it has.
+pub fn default_time_scheme(on_vertices: bool) -> TimeScheme {
+    if on_vertices {
+        TimeScheme::MidpointForce
+    } else {
+        TimeScheme::Explicit
     }
 }
 

@@ -1,7 +1,7 @@
 //! The allowed range of every key of a case (README, "Case files"): a value
 //! outside it is an error naming the key and the range, never clamped.
 
-use super::{Case, CaseError, INITIAL_REACH_DEPTHS};
+use super::{Case, CaseError, TimeScheme, INITIAL_REACH_DEPTHS};
 
 /// Largest number of surface nodes a case may need at the start (memory
 /// guard: five f64 per node).
@@ -92,6 +92,13 @@ impl Case {
     /// `Simulation::advance_to` is held to it.
     fn validate_vertex_ground(&self) -> Result<(), CaseError> {
         if self.run.vertex_spacing == 0.0 {
+            if self.run.time_scheme == TimeScheme::MidpointForce {
+                return Err(CaseError::new(
+                    "run.time_scheme",
+                    "\"midpoint-force\" runs on the vertex ground only (run.vertex_spacing > 0); \
+                     the node grid takes \"explicit\"",
+                ));
+            }
             return Ok(());
         }
         self.vertex_ground_supports()

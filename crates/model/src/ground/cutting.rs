@@ -1,6 +1,7 @@
 //! The cut on the vertex ground: each increment searches the least-force
-//! mechanism anywhere on the ground (`search`), moves the soil by it
-//! (`motion`) and lets the slopes avalanche (`avalanche`), as the node
+//! mechanism anywhere on the ground (`search`), takes its force at the
+//! time scheme's state (`midpoint`), moves the soil by it (`motion`) and
+//! lets the slopes avalanche (`avalanche`), as the node
 //! grid's increment does (docs/model.md §1).
 //!
 //! For a vertical blade at constant depth in plane strain, under the
@@ -8,10 +9,11 @@
 //! and the sampled search; the case validation refuses other cases with
 //! the key that is not supported (`Case::validate`, docs/model.md §19).
 
+use super::midpoint::midpoint_force;
 use super::motion::Cut;
 use super::search::{Pick, PickObserver, Scan, VertexSearch};
 use super::Ground;
-use crate::case::Case;
+use crate::case::{Case, TimeScheme};
 use crate::discretisation::{Context, Discretisation};
 use crate::kinematics::BandMotion;
 use crate::landscape::Candidate;
@@ -72,10 +74,22 @@ impl Cutting {
         at: &Context,
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {
+        let u = self.ground.x[0];
+        let scan = self.scan(at);
+        self.search
+            .run(&mut self.ground, &scan, observer)
+            .ok_or(StepError::NoAdmissibleMechanism {
+                step: at.done + 1,
+                u,
+            })
+    }
+
+    /// What the search needs besides the ground, this increment.
+    fn scan<'a>(&self, at: &Context<'a>) -> Scan<'a> {
         let (c, d) = (at.case, at.case.blade.depth);
         let u = self.ground.x[0];
         let band_width = c.soil.band_width;
-        let scan = Scan {
+        Scan {
             laws: at.laws,
             loads: Loads::at_face(c, &self.rake, self.ground.y[0] + d),
             face: at.laws.face.for_climb(0.0),
@@ -90,13 +104,7 @@ impl Cutting {
             snap: 0.5 * c.run.vertex_spacing,
             grow: GROW_DEPTHS * d,
             reach: u + MAX_REACH_DEPTHS * d,
-        };
-        self.search
-            .run(&mut self.ground, &scan, observer)
-            .ok_or(StepError::NoAdmissibleMechanism {
-                step: at.done + 1,
-                u,
-            })
+        }
     }
 
     /// The motion of the band `pick` (M18, M35): rise v0 tan(β + ψ), slip
@@ -172,7 +180,9 @@ impl Discretisation for Cutting {
     /// pruning: its samples every dB / K along the ground, up to where the
     /// stopping rule ends the scan (the least force found then), and the
     /// one the increment takes, which the second stage may have found
-    /// between them (so that the least is the force the step records).
+    /// between them (so that the least is the force the step records
+    /// under the explicit rule; the midpoint force records that band's
+    /// force half an increment on).
     fn landscape(&mut self, at: &Context) -> Result<Vec<Candidate>, StepError> {
         let mut picks = Vec::new();
         let chosen = self.search_next(at, Some(&mut |p: &Pick| picks.push(*p)))?;
@@ -200,6 +210,13 @@ impl Discretisation for Cutting {
     fn step(&mut self, at: &Context) -> Result<StepRecord, StepError> {
         let c = at.case;
         let pick = self.search_next(at, None)?;
+        let pick = match c.run.time_scheme {
+            TimeScheme::Explicit => pick,
+            TimeScheme::MidpointForce => {
+                let half_slip = 0.5 * self.cut(c, &pick).slip;
+                midpoint_force(&self.ground, &self.scan(at), pick, half_slip)
+            }
+        };
         let (d, u) = (c.blade.depth, self.ground.x[0]);
         let face = at.laws.face.for_climb(0.0);
         let cut = self.cut(c, &pick);

@@ -78,6 +78,10 @@ pub(crate) struct Pick {
     pub(crate) force: f64,
     /// The band's angles (radians).
     pub(crate) angles: BandAngles,
+    /// W, the block's weight (force per unit width).
+    pub(crate) weight: f64,
+    /// x − L, the rear end of the band's footprint (x for a slip line).
+    pub(crate) rear: f64,
 }
 
 /// A first-stage candidate: its emergence point, piece and force (NaN
@@ -341,7 +345,7 @@ impl VertexSearch {
         if !lower.can_beat(weight, t, bar, &scan.face) {
             return None;
         }
-        let angles = self.footprint_angles(ground, scan, k, x, y, t);
+        let (angles, rear) = self.footprint_angles(ground, scan, k, x, y, t);
         let angles = scan.laws.band_angles(angles);
         // Eq. (1) at the band's φ rounded down on the table's grid.
         if !may_win((scan.laws, &scan.face), (weight, t), &angles, bar) {
@@ -356,11 +360,13 @@ impl VertexSearch {
             tan_beta: t,
             force,
             angles,
+            weight,
+            rear,
         })
     }
 
     /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
-    /// M17); for a slip line, piece k's.
+    /// M17), and x − L; for a slip line, piece k's, and x.
     fn footprint_angles(
         &mut self,
         ground: &Ground,
@@ -369,16 +375,17 @@ impl VertexSearch {
         x: f64,
         y: f64,
         t: f64,
-    ) -> BandAngles {
+    ) -> (BandAngles, f64) {
         let ut = ground.accumulated_shear[k];
         let (phi, psi) = self.angles[k];
         if scan.band_width == 0.0 {
-            return BandAngles {
+            let angles = BandAngles {
                 friction: phi,
                 dilation: psi,
                 shear: ut,
                 fresh: ut == 0.0,
             };
+            return (angles, x);
         }
         let run = x - ground.x[0];
         let e = scan.band_width * (1.0 + t * t).sqrt();
@@ -392,12 +399,13 @@ impl VertexSearch {
         self.hints[1] = ground.piece_near(self.hints[1], rear);
         let lo = self.integral(ground, self.hints[1].min(k), rear);
         let mean = |i: usize| (hi[i] - lo[i]) / length;
-        BandAngles {
+        let angles = BandAngles {
             friction: mean(0),
             dilation: mean(1),
             shear: mean(2),
             fresh: hi[2] == lo[2],
-        }
+        };
+        (angles, rear)
     }
 
     /// ∫ φ, ψ, ut from the face to x on piece k.

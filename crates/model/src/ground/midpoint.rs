@@ -1,0 +1,78 @@
+//! The midpoint force (M51; `run.time_scheme = "midpoint-force"`,
+//! docs/model.md §19): the band the search chose at the start of the increment keeps its
+//! geometry and weight, and takes its strength from the state half an
+//! increment on.
+//!
+//! Over an increment the band's soil shears by Δut (M18), and in
+//! softening soil its strength falls as it does; the explicit rule takes
+//! φ(ut), ψ(ut) at the start, an error of first order in v0. Here the
+//! band's angles are the means over its footprint [x − L, x] of
+//! φ(ut_i + ½ Δut) and ψ(ut_i + ½ Δut) (M10 at the midpoint state), and
+//! P is Eq. (1) with them at the band's β and W. The search's choice is
+//! not redone: the band is the one that was least at the start.
+//!
+//! A band whose footprint holds only fresh soil keeps the explicit force,
+//! so that the first increment is Coulomb's wedge at φ0 (M13), as every
+//! scheme's must be (§9): a band emerging in fresh soil has not yet
+//! softened it.
+
+use super::search::{Pick, Scan};
+use super::Ground;
+use crate::laws::BandAngles;
+
+/// `pick` with its force and angles on the midpoint state of its footprint
+/// (M51),
+/// every piece of which shears by `half_slip` = ½ Δut; `pick` itself if its
+/// footprint is fresh, or if Eq. (1) has no solution there.
+pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip: f64) -> Pick {
+    if pick.angles.fresh {
+        return pick;
+    }
+    let angles = scan
+        .laws
+        .band_angles(footprint_means(ground, scan, &pick, half_slip));
+    let run = pick.x - ground.x[0];
+    let factor = scan.laws.factor(angles, pick.tan_beta, scan.face);
+    match scan.loads.force(&factor, pick.weight, run, pick.tan_beta) {
+        Some(force) => Pick {
+            force,
+            angles,
+            ..pick
+        },
+        None => pick,
+    }
+}
+
+/// Means of φ, ψ and ut over [x − L, x] at ut + `half_slip` (M10): the
+/// integral of piecewise constant state, piece by piece, since φ(ut + s)
+/// is not a shift of the prefix sums. A slip line's, whose footprint is a
+/// point, are the emergence piece's.
+fn footprint_means(ground: &Ground, scan: &Scan, pick: &Pick, half_slip: f64) -> BandAngles {
+    let material = &scan.laws.material;
+    let at = |k: usize| {
+        let ut = ground.accumulated_shear[k] + half_slip;
+        [material.friction.at(ut), material.dilation.at(ut), ut]
+    };
+    let last = ground.piece_at(pick.x);
+    let means = if pick.rear >= pick.x {
+        at(last)
+    } else {
+        let mut sums = [0.0; 3];
+        for k in ground.piece_at(pick.rear).min(last)..=last {
+            let overlap = ground.x[k + 1].min(pick.x) - ground.x[k].max(pick.rear);
+            if overlap > 0.0 {
+                let state = at(k);
+                for (sum, value) in sums.iter_mut().zip(state) {
+                    *sum += value * overlap;
+                }
+            }
+        }
+        sums.map(|sum| sum / (pick.x - pick.rear))
+    };
+    BandAngles {
+        friction: means[0],
+        dilation: means[1],
+        shear: means[2],
+        fresh: false,
+    }
+}
