@@ -27,7 +27,7 @@ done
 # d/750, d/1000 and the coarse grid with the exhaustive search, and at
 # d/1000, d/1250 (the softening refined cases' default on nodes) and d/1500 with the
 # sampled search, and each case as shipped (the default of its class of case:
-# the vertex ground at d/500 for Fig. 5 and Table 1),
+# the vertex ground at d/350 with the midpoint force for Fig. 5 and Table 1),
 # judged against the reference grid's ensemble at d/2000
 # (the longest part: ensembles of 7 runs at d/2000; kept and reused).
 python3 docs/studies/ensemble_accuracy.py --soilcut "$soilcut" \
