@@ -217,7 +217,7 @@ struct AngleFile {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing, time_scheme }"
+    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing, time_scheme, merge_tolerance }"
 )]
 struct RunFile {
     travel: f64,
@@ -231,6 +231,8 @@ struct RunFile {
     vertex_spacing: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     time_scheme: Option<TimeSchemeName>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    merge_tolerance: Option<f64>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -564,6 +566,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             samples_per_band,
             vertex_spacing: 0.0,
             time_scheme: TimeScheme::Explicit,
+            merge_tolerance: *file.run.merge_tolerance.get_or_insert(0.0),
         },
         bin: Bin {
             length: file.bin.map(|b| b.length),
@@ -860,6 +863,20 @@ mod tests {
         );
         assert_eq!(e.key, "run.time_scheme");
         assert!(e.message.contains("vertex ground only"), "{e}");
+    }
+
+    #[test]
+    fn merge_tolerance_defaults_to_none_and_refuses_its_range() {
+        let refined = without_increment(REFINED);
+        let loaded = parse_case(&refined, &[]).unwrap();
+        assert_eq!(loaded.case.run.merge_tolerance, 0.0);
+        assert!(loaded.resolved_toml().contains("merge_tolerance = 0.0"));
+        for bad in ["0.5", "-0.01", "nan"] {
+            let e = key_error(&refined, &[&format!("run.merge_tolerance={bad}")]);
+            assert_eq!(e.key, "run.merge_tolerance", "{bad}");
+        }
+        let e = key_error(&refined, &["run.merge_tolerance=0.5"]);
+        assert!(e.message.contains("[0, 0.1]"), "{e}");
     }
 
     #[test]

@@ -19,7 +19,7 @@ pub use defaults::{
     SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
-pub use validate::{MAGNITUDE, MAX_NODES, THINNEST_WIDTH};
+pub use validate::{MAGNITUDE, MAX_MERGE_TOLERANCE, MAX_NODES, THINNEST_WIDTH};
 
 use serde::{Deserialize, Serialize};
 
@@ -151,6 +151,10 @@ pub struct Run {
     /// When in the increment a band's strength is taken (docs/model.md §19;
     /// the default of its ground, `default_time_scheme`).
     pub time_scheme: TimeScheme,
+    /// Relative tolerance within which a vertex of the vertex ground that
+    /// carries no information is removed after each increment (0: none,
+    /// the default; `Ground::merge_quiet`, docs/model.md §19).
+    pub merge_tolerance: f64,
 }
 
 /// When in the increment the chosen band's strength is taken.

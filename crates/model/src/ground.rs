@@ -27,9 +27,12 @@ use serde::{Deserialize, Serialize};
 
 mod avalanche;
 pub(crate) mod cutting;
+mod merge;
 mod midpoint;
 pub mod motion;
 pub(crate) mod search;
+
+pub use merge::Quiet;
 
 /// The free surface as vertices that move with the soil, with the state
 /// of the soil held per piece between them.
@@ -206,41 +209,6 @@ impl Ground {
         }
         let v = self.split_at(x);
         self.x[v]
-    }
-
-    /// Removes the vertices that end a piece shorter than `min_spacing`
-    /// among vertices `from..to` (never the face's), joining the two pieces
-    /// it bounded: the joined piece holds their weight (its γ the weight
-    /// over its area) and their mass-weighted ut. Returns how many went.
-    pub fn merge_close(&mut self, from: usize, to: usize, min_spacing: f64) -> usize {
-        let mut removed = 0;
-        let mut k = from.max(1);
-        while k < to.min(self.x.len() - 1) - removed {
-            let short_before = self.x[k] - self.x[k - 1] < min_spacing;
-            let short_after = self.x[k + 1] - self.x[k] < min_spacing;
-            if short_before || short_after {
-                self.remove_vertex(k);
-                removed += 1;
-            } else {
-                k += 1;
-            }
-        }
-        removed
-    }
-
-    /// Joins pieces k − 1 and k by removing vertex k (0 < k < last).
-    fn remove_vertex(&mut self, k: usize) {
-        let (a, b) = (self.piece_area(k - 1), self.piece_area(k));
-        let (ga, gb) = (self.unit_weight[k - 1], self.unit_weight[k]);
-        let weight = ga * a + gb * b;
-        let ut =
-            (ga * a * self.accumulated_shear[k - 1] + gb * b * self.accumulated_shear[k]) / weight;
-        self.x.remove(k);
-        self.y.remove(k);
-        self.accumulated_shear.remove(k);
-        self.unit_weight.remove(k);
-        self.accumulated_shear[k - 1] = ut;
-        self.unit_weight[k - 1] = weight / self.piece_area(k - 1);
     }
 
     /// Area of the columns of piece k above the floor: the trapezoid

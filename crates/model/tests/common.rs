@@ -41,6 +41,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             samples_per_band: 0.0,
             vertex_spacing: 0.0,
             time_scheme: TimeScheme::Explicit,
+            merge_tolerance: 0.0,
         },
         bin: Default::default(),
         choices: Default::default(),

@@ -233,3 +233,39 @@ fn the_midpoint_force_keeps_the_band_and_takes_the_state_half_an_increment_on() 
         );
     }
 }
+
+#[test]
+fn merging_quiet_vertices_keeps_the_mass_and_thins_the_ground() {
+    // Table 1 S over 2 d: with run.merge_tolerance the vertices between
+    // pieces of nearly equal state on a nearly straight ground go, the mass
+    // stays exact and the force stays near the unmerged run's.
+    let plain = table1_s(2.0, 250.0);
+    let mut merged = plain.clone();
+    merged.run.merge_tolerance = 0.03;
+    let (ours, sim) = common::run(&merged);
+    let (theirs, plain_sim) = common::run(&plain);
+    let m0 = sim.initial_mass();
+    for r in &ours {
+        assert!(
+            (r.mass - m0).abs() < 1e-12 * m0,
+            "step {}: {}",
+            r.step,
+            r.mass
+        );
+    }
+    let (fewer, more) = (sim.profile().len(), plain_sim.profile().len());
+    assert!(fewer < more, "{fewer} vertices merged, {more} not");
+    let d = merged.blade.depth;
+    let (a, b) = (
+        common::window_means(&ours, d, 2),
+        common::window_means(&theirs, d, 2),
+    );
+    for (w, (a, b)) in a.iter().zip(&b).enumerate() {
+        assert!((a - b).abs() < 0.02 * b, "window {w}: {a} vs {b}");
+    }
+    // The node grid has no vertices to merge: refused by the key.
+    let mut nodes = merged.clone();
+    nodes.run.vertex_spacing = 0.0;
+    let e = Simulation::new(&nodes).expect_err("refused");
+    assert!(format!("{e}").contains("run.merge_tolerance"), "{e}");
+}

@@ -17,6 +17,10 @@ pub const MAX_NODES: f64 = 5.0e7;
 /// γ = 1e306 the initial mass was infinite: docs/fuzzing.md).
 pub const MAGNITUDE: [f64; 2] = [1e-20, 1e20];
 
+/// The largest `run.merge_tolerance`: beyond a tenth, vertices whose
+/// pieces differ by a tenth of ur would be joined.
+pub const MAX_MERGE_TOLERANCE: f64 = 0.1;
+
 /// The narrowest blade, as a fraction of the deepest tip depth.
 pub const THINNEST_WIDTH: f64 = 1e-6;
 
@@ -102,6 +106,26 @@ impl Case {
             return Ok(());
         }
         self.vertex_ground_supports()
+    }
+
+    /// `run.merge_tolerance` in [0, `MAX_MERGE_TOLERANCE`], above 0 on the
+    /// vertex ground only.
+    fn validate_merge_tolerance(&self) -> Result<(), CaseError> {
+        let tolerance = finite("run.merge_tolerance", self.run.merge_tolerance)?;
+        if !(0.0..=MAX_MERGE_TOLERANCE).contains(&tolerance) {
+            return Err(CaseError::new(
+                "run.merge_tolerance",
+                format!("must be in [0, {MAX_MERGE_TOLERANCE}] (got {tolerance})"),
+            ));
+        }
+        if tolerance > 0.0 && self.run.vertex_spacing == 0.0 {
+            return Err(CaseError::new(
+                "run.merge_tolerance",
+                "merges vertices of the vertex ground only (run.vertex_spacing > 0); \
+                 the node grid takes 0",
+            ));
+        }
+        Ok(())
     }
 
     /// The end wall must leave the blade room to travel and a mechanism
@@ -360,6 +384,7 @@ impl Case {
         self.validate_node_spacing()?;
         non_negative("run.samples_per_band", self.run.samples_per_band)?;
         non_negative("run.vertex_spacing", self.run.vertex_spacing)?;
+        self.validate_merge_tolerance()?;
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
             return Err(CaseError::new(

@@ -12,7 +12,7 @@
 use super::midpoint::midpoint_force;
 use super::motion::Cut;
 use super::search::{Pick, PickObserver, Scan, VertexSearch};
-use super::Ground;
+use super::{Ground, Quiet};
 use crate::case::{Case, TimeScheme};
 use crate::discretisation::{Context, Discretisation};
 use crate::kinematics::BandMotion;
@@ -232,6 +232,21 @@ impl Discretisation for Cutting {
         self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
         let tan_repose = c.soil.repose.to_radians().tan();
         self.ground.relax(tan_repose, c.run.vertex_spacing);
+        if c.run.merge_tolerance > 0.0 {
+            let quiet = Quiet {
+                tolerance: c.run.merge_tolerance,
+                // ur; d where the law softens at once (ur = 0).
+                shear_scale: if c.soil.residual_shear > 0.0 {
+                    c.soil.residual_shear
+                } else {
+                    d
+                },
+                unit_weight: c.soil.unit_weight,
+                depth: d,
+                longest: c.run.vertex_spacing,
+            };
+            self.ground.merge_quiet(1, self.ground.pieces(), &quiet);
+        }
         let omega = at
             .laws
             .face
