@@ -4,8 +4,9 @@
 Runs the five paper cases and the three former DEM validation cases
 (docs/studies/face-friction/cases/, the cases before issue 20's DEM
 campaign, in which the defect was found) under both
-face friction rules, `choices.face_friction = "sign"` (the rule before
-issue 20) and `"mobilised"` (the default since, (M41)), and writes
+face friction rules (both with `run.time_scheme = "explicit"`),
+`choices.face_friction = "sign"` (the rule before issue 20) and
+`"mobilised"` (the default since, (M41)), and writes
 docs/studies/face-friction/README.md and results.csv: the first force, the
 largest force, the whole-run mean of P/(γ0 d²), the mean over each unit
 window of u/d (the figures docs/reproduction.md rests on,
@@ -52,7 +53,9 @@ def run(soilcut, case, rule, folder, ensemble=False):
     if (folder / "summary.json").exists():
         return folder
     cmd = [soilcut, "run", case, "--out", str(folder), "--force", "--quiet", "--no-plots"]
-    cmd += ["--set", f"choices.face_friction={rule}"]
+    # Both rules under the explicit time scheme: the sign rule has no
+    # midpoint force (docs/model.md §19), so that only the rule differs.
+    cmd += ["--set", f"choices.face_friction={rule}", "--set", "run.time_scheme=explicit"]
     if ensemble:
         cmd += ["--ensemble", str(MEMBERS), "--jobs", "1"]
     subprocess.run(cmd, check=True)
@@ -171,7 +174,10 @@ def write(results, soilcut_version):
         f"({soilcut_version}); every figure is also in [results.csv](results.csv).",
         "The face friction's rules are docs/model.md §2.6: `sign` is the rule before",
         "issue 20 (±φw, −φw at zero slip, (M9)), `mobilised` the default since",
-        "(m = clamp(s / 0.05, −1, 1), (M41)).",
+        "(m = clamp(s / 0.05, −1, 1), (M41)). Both run under the explicit time",
+        'scheme (`run.time_scheme = "explicit"`; the sign rule has no midpoint',
+        "force, docs/model.md §19), at the increment the cases then default to",
+        "(d/500 on the vertex ground), so that only the rule differs.",
         "",
         "Forces are P/(γ0 d²). Cases whose two histories are identical bit for bit",
         "are single runs; the others are ensembles of 7 members (`soilcut run",

@@ -598,20 +598,21 @@ fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
         }
     });
     let on_vertices = vertex_spacing > 0.0;
-    let increment = *run
-        .increment
-        .get_or_insert_with(|| default_increment(case.model, &case.soil, depth, on_vertices));
-    let node_spacing = *run
-        .node_spacing
-        .get_or_insert_with(|| default_node_spacing(&case.soil, depth, increment));
-    let default_scheme = match default_time_scheme(on_vertices) {
+    let default_scheme = match default_time_scheme(on_vertices, case.choices.face_friction) {
         TimeScheme::Explicit => TimeSchemeName::Explicit,
         TimeScheme::MidpointForce => TimeSchemeName::MidpointForce,
     };
-    case.run.time_scheme = match *run.time_scheme.get_or_insert(default_scheme) {
+    let scheme = match *run.time_scheme.get_or_insert(default_scheme) {
         TimeSchemeName::Explicit => TimeScheme::Explicit,
         TimeSchemeName::MidpointForce => TimeScheme::MidpointForce,
     };
+    let increment = *run.increment.get_or_insert_with(|| {
+        default_increment(case.model, &case.soil, depth, (on_vertices, scheme))
+    });
+    let node_spacing = *run
+        .node_spacing
+        .get_or_insert_with(|| default_node_spacing(&case.soil, depth, increment));
+    case.run.time_scheme = scheme;
     case.run.vertex_spacing = vertex_spacing;
     case.run.increment = increment;
     case.run.node_spacing = node_spacing;
@@ -857,6 +858,17 @@ mod tests {
         assert_eq!(scheme(&["run.vertex_spacing=0"]).0, TimeScheme::Explicit);
         let given = scheme(&["run.time_scheme=\"explicit\""]);
         assert_eq!(given.0, TimeScheme::Explicit);
+        // Explicit on the vertex ground takes its own default increment,
+        // d/500, as does the sign rule of the face friction, which has no
+        // midpoint force.
+        let (d, v0, _, _) = resolved_ground(&refined, &["run.time_scheme=\"explicit\""]);
+        assert_eq!(v0, d / 500.0);
+        let sign = ["choices.face_friction=\"sign\""];
+        assert_eq!(scheme(&sign).0, TimeScheme::Explicit);
+        assert_eq!(resolved_ground(&refined, &sign).1, 20.0 / 500.0);
+        let e = key_error(&refined, &[sign[0], "run.time_scheme=\"midpoint-force\""]);
+        assert_eq!(e.key, "run.time_scheme");
+        assert!(e.message.contains("needs choices.face_friction"), "{e}");
         let e = key_error(
             &refined,
             &["run.vertex_spacing=0", "run.time_scheme=\"midpoint-force\""],

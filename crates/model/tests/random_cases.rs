@@ -287,12 +287,13 @@ fn the_default_grid_is_accurate_on_random_cases() {
             case.run.travel = 1.5 * d;
             let mut default = at(&case, 1.0, 1.0, DEFAULT_SAMPLES_PER_BAND);
             let vertices = default_vertex_spacing(&default);
-            let v0 = default_increment(case.model, &case.soil, d, vertices > 0.0);
+            let scheme = default_time_scheme(vertices > 0.0, case.choices.face_friction);
+            let v0 = default_increment(case.model, &case.soil, d, (vertices > 0.0, scheme));
             let h = default_node_spacing(&case.soil, d, v0);
             assert_eq!(h > v0, !case.soil.softens());
             default = at(&default, v0, h, DEFAULT_SAMPLES_PER_BAND);
             default.run.vertex_spacing = vertices;
-            default.run.time_scheme = default_time_scheme(vertices > 0.0);
+            default.run.time_scheme = scheme;
             let (windows, whole) = ensemble(&default, 1);
             let fine = d / 2000.0;
             let (ref_windows, ref_whole) = ensemble(&at(&case, fine, fine, 0.0), 1);

@@ -14,6 +14,14 @@ fn table1_s(travel_depths: f64, per_depth: f64) -> soilcut_model::Case {
     common::on_vertices(common::refined("table1-s", travel_depths, per_depth), 50.0)
 }
 
+/// Every increment's mass within 1e-12 of the initial mass `m0`.
+fn mass_is_kept(history: &[soilcut_model::StepRecord], m0: f64) {
+    for r in history {
+        let drift = (r.mass - m0).abs() / m0;
+        assert!(drift < 1e-12, "step {}: {}", r.step, r.mass);
+    }
+}
+
 #[test]
 fn the_first_increment_is_coulombs_wedge_anywhere_on_the_ground() {
     // The band may emerge between vertices, then snaps to one within half
@@ -46,15 +54,7 @@ fn wedge_within(per_depth: f64, tolerance: f64) {
 fn a_run_keeps_its_mass_and_follows_the_node_grid() {
     let d = 20.0;
     let (history, sim) = common::run(&table1_s(3.0, 250.0));
-    let m0 = sim.initial_mass();
-    for r in &history {
-        assert!(
-            (r.mass - m0).abs() < 1e-12 * m0,
-            "step {}: {}",
-            r.step,
-            r.mass
-        );
-    }
+    mass_is_kept(&history, sim.initial_mass());
     let mut nodes = common::refined("table1-s", 3.0, 250.0);
     nodes.run.samples_per_band = 0.0;
     let (reference, node_sim) = common::run(&nodes);
@@ -244,15 +244,7 @@ fn merging_quiet_vertices_keeps_the_mass_and_thins_the_ground() {
     merged.run.merge_tolerance = 0.03;
     let (ours, sim) = common::run(&merged);
     let (theirs, plain_sim) = common::run(&plain);
-    let m0 = sim.initial_mass();
-    for r in &ours {
-        assert!(
-            (r.mass - m0).abs() < 1e-12 * m0,
-            "step {}: {}",
-            r.step,
-            r.mass
-        );
-    }
+    mass_is_kept(&ours, sim.initial_mass());
     let (fewer, more) = (sim.profile().len(), plain_sim.profile().len());
     assert!(fewer < more, "{fewer} vertices merged, {more} not");
     let d = merged.blade.depth;

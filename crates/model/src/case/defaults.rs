@@ -7,7 +7,7 @@
 //! `default_vertex_spacing`, `default_increment` and `default_node_spacing`
 //! are the one place that decides them.
 
-use super::{Case, Model, Soil, TimeScheme};
+use super::{Case, FaceFrictionRule, Model, Soil, TimeScheme};
 
 /// `run.increment` of the original model (one slip line) when a case does
 /// not give it: v0 = d / 250, the coarsest increment the study tries, is
@@ -84,14 +84,29 @@ pub fn default_increments_per_depth(model: Model, soil: &Soil) -> f64 {
     }
 }
 
+/// `run.increment` on the vertex ground under the explicit rule (the sign
+/// rule of the face friction's, or `run.time_scheme = "explicit"`
+/// given) when a case does not give it: v0 = d / 500 is accurate by the
+/// ensemble rule on every paper case of its class (worst window /
+/// tolerance: Fig. 5 0.89, Table 1 HS 0.30, Table 1 S 0.22), d/250 not on
+/// Fig. 5 (2.63; `docs/studies/vertex-ground/`).
+pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
+
 /// `run.increment` when a case does not give it: d over
-/// `default_increments_per_depth` on the node grid, over
-/// `VERTEX_INCREMENTS_PER_DEPTH` on the vertex ground.
-pub fn default_increment(model: Model, soil: &Soil, depth: f64, on_vertices: bool) -> f64 {
-    if on_vertices {
-        return depth / VERTEX_INCREMENTS_PER_DEPTH;
+/// `default_increments_per_depth` on the node grid; on the vertex ground
+/// over `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
+/// `VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH` under the explicit rule.
+pub fn default_increment(
+    model: Model,
+    soil: &Soil,
+    depth: f64,
+    (on_vertices, scheme): (bool, TimeScheme),
+) -> f64 {
+    match (on_vertices, scheme) {
+        (true, TimeScheme::MidpointForce) => depth / VERTEX_INCREMENTS_PER_DEPTH,
+        (true, TimeScheme::Explicit) => depth / VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
+        (false, _) => depth / default_increments_per_depth(model, soil),
     }
-    depth / default_increments_per_depth(model, soil)
 }
 
 /// `run.vertex_spacing` when a case gives neither it nor
@@ -114,11 +129,12 @@ pub fn default_vertex_spacing(case: &Case) -> f64 {
 }
 
 /// `run.time_scheme` when a case does not give it: `MidpointForce` on the
-/// vertex ground, where it is accurate by the ensemble rule at coarser
-/// increments than `Explicit` (`VERTEX_INCREMENTS_PER_DEPTH`), and
-/// `Explicit` on the node grid, the only scheme it has.
-pub fn default_time_scheme(on_vertices: bool) -> TimeScheme {
-    if on_vertices {
+/// vertex ground under the mobilised face friction, where it is accurate
+/// by the ensemble rule at coarser increments than `Explicit`
+/// (`VERTEX_INCREMENTS_PER_DEPTH`); else `Explicit`, the node grid's only
+/// scheme and the only one under the sign rule (`Case::validate`).
+pub fn default_time_scheme(on_vertices: bool, face_friction: FaceFrictionRule) -> TimeScheme {
+    if on_vertices && face_friction == FaceFrictionRule::Mobilised {
         TimeScheme::MidpointForce
     } else {
         TimeScheme::Explicit

@@ -1,7 +1,7 @@
 //! The allowed range of every key of a case (README, "Case files"): a value
 //! outside it is an error naming the key and the range, never clamped.
 
-use super::{Case, CaseError, TimeScheme, INITIAL_REACH_DEPTHS};
+use super::{Case, CaseError, FaceFrictionRule, TimeScheme, INITIAL_REACH_DEPTHS};
 
 /// Largest number of surface nodes a case may need at the start (memory
 /// guard: five f64 per node).
@@ -104,6 +104,16 @@ impl Case {
                 ));
             }
             return Ok(());
+        }
+        if self.run.time_scheme == TimeScheme::MidpointForce
+            && self.choices.face_friction == FaceFrictionRule::Sign
+        {
+            return Err(CaseError::new(
+                "run.time_scheme",
+                "\"midpoint-force\" needs choices.face_friction = \"mobilised\": under \"sign\" \
+                 the face friction jumps from -φw to +φw with the band's dilation, which the \
+                 band the search chose can cross half an increment on; \"explicit\" runs it",
+            ));
         }
         self.vertex_ground_supports()
     }
