@@ -371,7 +371,37 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
         case.model.name(),
         case.steps()
     );
+    println!("  {}", resolution(&case));
     Ok(())
+}
+
+/// The ground, increment and time scheme a case runs at, each as a length
+/// and as a fraction of the blade depth (its defaults resolved).
+fn resolution(case: &Case) -> String {
+    let run = &case.run;
+    let of_depth = |length: f64| {
+        let short = format!("{length:.6}");
+        let short = short.trim_end_matches('0').trim_end_matches('.');
+        let n = case.blade.depth / length;
+        if (n - n.round()).abs() <= 1e-9 * n {
+            format!("{short} (d/{n:.0})")
+        } else {
+            format!("{short} (d/{n:.2})")
+        }
+    };
+    let ground = if run.vertex_spacing > 0.0 {
+        format!(
+            "vertex ground, vertices every {}",
+            of_depth(run.vertex_spacing)
+        )
+    } else {
+        format!("node grid, nodes every {}", of_depth(run.node_spacing))
+    };
+    format!(
+        "{ground}; increment {}; time scheme {}",
+        of_depth(run.increment),
+        run.time_scheme.name()
+    )
 }
 
 /// A case that runs but whose grid is known to cost accuracy.

@@ -173,6 +173,16 @@ pub enum TimeScheme {
     MidpointForce,
 }
 
+impl TimeScheme {
+    /// The case file's word for the scheme: `explicit` or `midpoint-force`.
+    pub fn name(self) -> &'static str {
+        match self {
+            TimeScheme::Explicit => "explicit",
+            TimeScheme::MidpointForce => "midpoint-force",
+        }
+    }
+}
+
 /// How a candidate band takes its angles from the nodes it touches.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BandAngleRule {
