@@ -251,7 +251,10 @@ class Landscape(NamedTuple):
 def landscape(case: Case, at: float) -> Landscape:
     """The force of every candidate band at u/d = ``at`` (0 to
     run.travel / blade.depth): the increment evaluated first at u ≥ at·d, as
-    ``soilcut landscape --at`` takes it."""
+    ``soilcut landscape --at`` takes it. The forces are those the search
+    compares, at the start of the increment; under the midpoint force
+    (``run.time_scheme``, the vertex ground's default) the run records the
+    chosen band's force half an increment on."""
     u, candidates = _soilcut.landscape(native_of(case), float(at))
     return Landscape(u, candidates)
 
