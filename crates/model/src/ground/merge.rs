@@ -34,12 +34,25 @@ impl Ground {
     /// it bounded: the joined piece holds their weight (its γ the weight
     /// over its area) and their mass-weighted ut. Returns how many went.
     pub fn merge_close(&mut self, from: usize, to: usize, min_spacing: f64) -> usize {
+        self.remove_vertices_where(from, to, |g, k| {
+            g.x[k] - g.x[k - 1] < min_spacing || g.x[k + 1] - g.x[k] < min_spacing
+        })
+    }
+
+    /// Removes every vertex k among `from..to` (never the face's) for which
+    /// `goes(self, k)` holds when it is reached, joining its two pieces
+    /// (`remove_vertex`), so that a joined piece is judged again with its
+    /// next neighbour; returns how many went.
+    fn remove_vertices_where(
+        &mut self,
+        from: usize,
+        to: usize,
+        goes: impl Fn(&Ground, usize) -> bool,
+    ) -> usize {
         let mut removed = 0;
         let mut k = from.max(1);
         while k < to.min(self.x.len() - 1) - removed {
-            let short_before = self.x[k] - self.x[k - 1] < min_spacing;
-            let short_after = self.x[k + 1] - self.x[k] < min_spacing;
-            if short_before || short_after {
+            if goes(self, k) {
                 self.remove_vertex(k);
                 removed += 1;
             } else {
@@ -67,17 +80,7 @@ impl Ground {
     /// Removes the vertices among `from..to` (never the face's) that carry
     /// no information by `quiet`; returns how many went.
     pub fn merge_quiet(&mut self, from: usize, to: usize, quiet: &Quiet) -> usize {
-        let mut removed = 0;
-        let mut k = from.max(1);
-        while k < to.min(self.x.len() - 1) - removed {
-            if self.is_quiet(k, quiet) {
-                self.remove_vertex(k);
-                removed += 1;
-            } else {
-                k += 1;
-            }
-        }
-        removed
+        self.remove_vertices_where(from, to, |g, k| g.is_quiet(k, quiet))
     }
 
     fn is_quiet(&self, k: usize, quiet: &Quiet) -> bool {
