@@ -67,17 +67,17 @@ impl Cutting {
         &self.ground
     }
 
-    /// The least-force mechanism of the next increment (§2 on the ground),
-    /// every first-stage candidate handed to `observer` if there is one.
+    /// The least-force mechanism of the next increment (§2 on the ground)
+    /// under `scan` (`Cutting::scan`), every first-stage candidate handed
+    /// to `observer` if there is one.
     fn search_next(
         &mut self,
-        at: &Context,
+        (at, scan): (&Context, &Scan),
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {
         let u = self.ground.x[0];
-        let scan = self.scan(at);
         self.search
-            .run(&mut self.ground, &scan, observer)
+            .run(&mut self.ground, scan, observer)
             .ok_or(StepError::NoAdmissibleMechanism {
                 step: at.done + 1,
                 u,
@@ -185,7 +185,8 @@ impl Discretisation for Cutting {
     /// force half an increment on).
     fn landscape(&mut self, at: &Context) -> Result<Vec<Candidate>, StepError> {
         let mut picks = Vec::new();
-        let chosen = self.search_next(at, Some(&mut |p: &Pick| picks.push(*p)))?;
+        let scan = self.scan(at);
+        let chosen = self.search_next((at, &scan), Some(&mut |p: &Pick| picks.push(*p)))?;
         if !picks.contains(&chosen) {
             // In order along the ground, as the samples are.
             let at = picks.partition_point(|p| p.x < chosen.x);
@@ -209,12 +210,13 @@ impl Discretisation for Cutting {
     /// The increment (M48, M49, M50), its force components by (M12).
     fn step(&mut self, at: &Context) -> Result<StepRecord, StepError> {
         let c = at.case;
-        let pick = self.search_next(at, None)?;
+        let scan = self.scan(at);
+        let pick = self.search_next((at, &scan), None)?;
         let pick = match c.run.time_scheme {
             TimeScheme::Explicit => pick,
             TimeScheme::MidpointForce => {
                 let half_slip = 0.5 * self.cut(c, &pick).slip;
-                midpoint_force(&self.ground, &self.scan(at), pick, half_slip)
+                midpoint_force(&self.ground, &scan, pick, half_slip)
             }
         };
         let (d, u) = (c.blade.depth, self.ground.x[0]);
