@@ -119,7 +119,12 @@ impl Kinematics {
             trench_mass,
             ..update
         };
-        self.mix_block_columns(surface, band, update.first_band_node);
+        let gap = if update.dilation_area == 0.0 {
+            0.0
+        } else {
+            dilation_gap(update.slip, choice.dilation, choice.tan_beta)
+        };
+        self.mix_block_columns(surface, band, update.first_band_node, gap);
         band_unit_weight(surface, band, choice, choices, &update, mass_before);
         update
     }
@@ -364,13 +369,14 @@ impl Kinematics {
     /// the slip line stays (its column's γ), the soil above it came from the
     /// column behind (that column's γ), mixed by area. Without this the band
     /// would have to absorb every difference of γ along the block, which can
-    /// drive its unit weight negative (M26, by `mix_column`).
-    fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize) {
+    /// drive its unit weight negative (M26, by `mix_column`); `gap` is the
+    /// band's dilation under the block (`dilation_gap`).
+    fn mix_block_columns(&self, surface: &mut Surface, band: &Band, first_band: usize, gap: f64) {
         let b = band.face.node;
         for i in b + 1..first_band {
             let (staying, arriving) =
                 (self.old_unit_weight[i - b], self.old_unit_weight[i - 1 - b]);
-            mix_column(surface, band, i, (staying, arriving));
+            mix_column(surface, band, i, (staying, arriving), gap);
         }
     }
 
@@ -400,11 +406,30 @@ impl Kinematics {
 
 /// Column i's unit weight after the block moved over it: the soil below the
 /// band's lower boundary stayed (γ `staying`), the soil above it arrived
-/// (γ `arriving`), mixed by height (M26).
-fn mix_column(surface: &mut Surface, band: &Band, i: usize, (staying, arriving): (f64, f64)) {
+/// (γ `arriving`), mixed by height, less `gap`, the band's dilation under
+/// the block, which holds no soil (M26).
+fn mix_column(
+    surface: &mut Surface,
+    band: &Band,
+    i: usize,
+    (staying, arriving): (f64, f64),
+    gap: f64,
+) {
     let total = surface.height[i] - surface.floor;
     let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
-    surface.unit_weight[i] = (staying * at_rest + arriving * (total - at_rest)) / total;
+    let arrived = (total - at_rest - gap).max(0.0);
+    surface.unit_weight[i] = (staying * at_rest + arriving * arrived) / total;
+}
+
+/// The band's dilation under the block in one increment, as a height: its
+/// normal opening Δut tan ψ over cos β (M26). A column of the block holds
+/// the band's full thickness, so this much of it is volume the band
+/// gained, not soil the block brought; weighed at the block's γ, the
+/// band's pieces at the emergence point (M27) paid for it and a band that
+/// stays for many increments fell below zero weight (issue 38). For a
+/// vertical blade it is rise − v0 tan β (M18).
+pub(crate) fn dilation_gap(slip: f64, dilation: f64, tan_beta: f64) -> f64 {
+    slip * dilation.tan() * (1.0 + tan_beta * tan_beta).sqrt()
 }
 
 /// Spreads what the update gained or lost in area, `residual`, evenly in

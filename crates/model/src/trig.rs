@@ -25,10 +25,14 @@ fn table() -> &'static [(f64, f64)] {
     })
 }
 
-/// (sin x, cos x) for |x| < π/2.
+/// (sin x, cos x): from the table for |x| < π/2, else (and for NaN) from
+/// libm, so that no angle can index outside the table.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     let k = (x * (1.0 / STEP) + ROUNDING) - ROUNDING;
+    if !(k.abs() <= HALF as f64) {
+        return x.sin_cos();
+    }
     let d = x - k * STEP;
     let d2 = d * d;
     let sin_d = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0)));
@@ -50,5 +54,14 @@ mod tests {
             worst = worst.max((s - x.sin()).abs()).max((c - x.cos()).abs());
         }
         assert!(worst < 4.0 * f64::EPSILON, "worst error {worst:e}");
+    }
+
+    #[test]
+    fn an_angle_beyond_the_table_is_libms() {
+        for x in [-4.68, 1.7, 100.0, -1e300] {
+            assert_eq!(sin_cos(x), x.sin_cos());
+        }
+        let (s, c) = sin_cos(f64::NAN);
+        assert!(s.is_nan() && c.is_nan());
     }
 }

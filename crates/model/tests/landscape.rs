@@ -101,8 +101,10 @@ fn hardening_soil_has_many_near_minimal_bands_far_apart() {
     let (fine, fine_span) = survey(100.0);
     assert!(coarse >= 30, "{coarse} candidates within 1 % at d/50");
     assert!(fine > coarse, "{fine} at d/100, {coarse} at d/50");
+    // Measured with M26's dilation gap (issue 38): 3.5 d at d/50, 19.4 d
+    // at d/100 (before it, over 5 d at both).
     assert!(
-        coarse_span > 5.0 && fine_span > 5.0,
+        coarse_span > 3.0 && fine_span > 3.0,
         "spans {coarse_span} d, {fine_span} d"
     );
 }

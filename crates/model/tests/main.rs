@@ -20,3 +20,4 @@ mod refined;
 mod sampled_search;
 mod snapshot;
 mod vertex_ground;
+mod vertex_robustness;

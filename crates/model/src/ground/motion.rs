@@ -105,7 +105,9 @@ impl Ground {
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
         }
-        self.mix_block_pieces(&before, &line, band.start);
+        // The band's dilation under the block (0 for a slip line).
+        let gap = cut.slip * cut.tan_psi * (1.0 + line.tan_beta * line.tan_beta).sqrt();
+        self.mix_block_pieces(&before, &line, band.start, gap);
         if banded {
             self.keep_band_state(&before, band.clone());
         }
@@ -142,7 +144,13 @@ impl Ground {
             })
             .collect();
         let before = self.x.len();
-        let last = crossings.last().map(|&x| self.split_near(x, snap));
+        // The last crossing never snaps to the emergence vertex or halfway
+        // to it: a band thinner than the snap would have no pieces, and
+        // M27 none to weigh (issue 38: dB = d/200 drifted 1e-3 of the mass).
+        let xe = self.x[emergence];
+        let last = crossings
+            .last()
+            .map(|&x| self.split_near(x, snap.min(0.5 * (xe - x))));
         for &x in crossings.iter().rev().skip(1) {
             self.split_near(x, snap);
         }
@@ -260,8 +268,12 @@ impl Ground {
     /// below the band's lower boundary stayed (γ of the ground that was
     /// there), the soil above it arrived with the piece, mixed by area over
     /// the piece (exact: the staying γ is integrated over the old pieces
-    /// beneath it).
-    fn mix_block_pieces(&mut self, before: &Snapshot, line: &Line, block_end: usize) {
+    /// beneath it), less `gap` (height), the band's dilation under the
+    /// block, which holds no soil (M26'). Without it the block's columns
+    /// weighed the band's whole dilation at their own γ and M27 took that
+    /// weight from the band's pieces at the emergence point alone, which a
+    /// band that stays for many increments drove below zero (issue 38).
+    fn mix_block_pieces(&mut self, before: &Snapshot, line: &Line, block_end: usize, gap: f64) {
         let floor = self.floor;
         let at_rest = |x: f64| line.lower(x) - floor;
         // The block's pieces and the old pieces are both in order of x: the
@@ -273,7 +285,7 @@ impl Ground {
             first_old += before.x[first_old + 1..].partition_point(|&x| x <= xa);
             let staying = before.weight_below(first_old, xa, xb, at_rest);
             let resting = 0.5 * (xb - xa) * (at_rest(xa) + at_rest(xb));
-            let arriving = self.unit_weight[k] * (total - resting);
+            let arriving = self.unit_weight[k] * (total - resting - gap * (xb - xa));
             self.unit_weight[k] = (staying + arriving) / total;
         }
     }

@@ -18,8 +18,8 @@
 //! unit weight keeps the weight of soil exact, as on the reference grid.
 
 use super::{
-    band_unit_weight, mix_column, region_area, spread_residual, Advance, BandMotion, Kinematics,
-    Update,
+    band_unit_weight, dilation_gap, mix_column, region_area, spread_residual, Advance, BandMotion,
+    Kinematics, Update,
 };
 use crate::band::Band;
 use crate::case::Choices;
@@ -71,12 +71,17 @@ impl Kinematics {
         let first_band = (face + 1..=j)
             .find(|&i| surface.x(i) > last_block_x)
             .unwrap_or(j);
+        let gap = if thickness > 0.0 {
+            dilation_gap(motion.slip, choice.dilation, choice.tan_beta)
+        } else {
+            0.0
+        };
         self.carry_block(
             surface,
             band,
             (face, first_band),
             old_face,
-            (v0, motion.rise),
+            (v0, motion.rise, gap),
         );
         self.carry_band(
             surface,
@@ -135,7 +140,7 @@ impl Kinematics {
         band: &Band,
         (face, first_band): (usize, usize),
         (old_face_x, old_segment): (f64, f64),
-        (v0, rise): (f64, f64),
+        (v0, rise, gap): (f64, f64, f64),
     ) {
         let b = band.face.node;
         let c = surface.scheme.courant();
@@ -154,7 +159,7 @@ impl Kinematics {
             surface.height[i] = carried(&self.old_height) + rise;
             surface.accumulated_shear[i] = carried(&self.old_shear);
             let arriving = carried(&self.old_unit_weight);
-            mix_column(surface, band, i, (self.old_unit_weight[q], arriving));
+            mix_column(surface, band, i, (self.old_unit_weight[q], arriving), gap);
         }
     }
 
