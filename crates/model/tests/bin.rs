@@ -8,12 +8,18 @@ use soilcut_model::{Simulation, StepError};
 
 #[test]
 fn a_wall_beyond_every_mechanism_changes_nothing() {
-    let case = common::original(2.0, 50.0);
-    let (free, _) = common::run(&case);
-    let mut walled = case.clone();
-    walled.bin.length = Some(60.0 * case.blade.depth);
-    let (bounded, _) = common::run(&walled);
-    assert_eq!(free, bounded);
+    // On the node grid, and on the vertex ground (which grows its ground
+    // as the search needs, up to the wall).
+    for case in [
+        common::original(2.0, 50.0),
+        on_vertices(common::refined("fig5", 2.0, 350.0)),
+    ] {
+        let (free, _) = common::run(&case);
+        let mut walled = case.clone();
+        walled.bin.length = Some(60.0 * case.blade.depth);
+        let (bounded, _) = common::run(&walled);
+        assert_eq!(free, bounded, "{}", case.name);
+    }
 }
 
 #[test]
@@ -62,4 +68,48 @@ fn bin_length_is_validated() {
     let e = case.validate().unwrap_err();
     assert_eq!(e.key, "bin.length");
     assert!(e.message.contains("vertical"), "{}", e.message);
+}
+
+/// `case` on the vertex ground at its defaults (d/350, vertices d/50, the
+/// midpoint force).
+fn on_vertices(mut case: soilcut_model::Case) -> soilcut_model::Case {
+    case.run.increment = case.blade.depth / soilcut_model::VERTEX_INCREMENTS_PER_DEPTH;
+    case.run.node_spacing = case.run.increment;
+    case.run.time_scheme = soilcut_model::TimeScheme::MidpointForce;
+    common::on_vertices(case, soilcut_model::VERTICES_PER_DEPTH)
+}
+
+#[test]
+fn on_the_vertex_ground_bands_stop_at_the_wall_and_the_pile_keeps_its_mass() {
+    for which in ["table1-hs", "fig5"] {
+        let mut case = on_vertices(common::refined(which, 3.0, 350.0));
+        let d = case.blade.depth;
+        let wall = 5.0 * d;
+        case.bin.length = Some(wall);
+        let (history, sim) = common::run(&case);
+        assert!(history.iter().all(|r| r.x_emergence < wall), "{which}");
+        case.bin.length = None;
+        let (free, _) = common::run(&case);
+        assert!(free.iter().any(|r| r.x_emergence > wall), "{which}");
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-11, "{which}: drift {drift:e}");
+        let profile = sim.profile();
+        let last = profile.last().unwrap();
+        assert_eq!(last.x, wall, "{which}: the ground ends at the wall");
+        // The pile stands against the wall: the soil there rose.
+        assert!(last.y > 0.0, "{which}: {last:?}");
+    }
+}
+
+#[test]
+fn on_the_vertex_ground_a_bin_too_short_for_the_travel_fails_clearly() {
+    let mut case = on_vertices(common::refined("table1-hs", 4.0, 350.0));
+    case.bin.length = Some(case.run.travel + 2.0 * case.blade.depth / 50.0);
+    let mut sim = Simulation::new(&case).unwrap();
+    let err = sim.run_to_end(|_| {}).unwrap_err();
+    assert!(
+        matches!(err, StepError::NoMechanismBeforeWall { .. }),
+        "{err}"
+    );
+    assert!(err.to_string().contains("bin.length"), "{err}");
 }

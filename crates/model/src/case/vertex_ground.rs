@@ -7,7 +7,7 @@ use super::{BandShearRule, Case, CaseError, UnitWeightRule};
 
 impl Case {
     /// Whether the vertex ground can run this case: a vertical blade at
-    /// constant depth in plane strain, no end wall, under the default
+    /// constant depth in plane strain, with or without an end wall, under the default
     /// choices and a sampled search (`run.samples_per_band` > 0); else the first key it cannot take.
     pub fn vertex_ground_supports(&self) -> Result<(), CaseError> {
         let unsupported = |key: &str, why: &str| {
@@ -27,9 +27,6 @@ impl Case {
         }
         if self.blade.width.is_some() {
             return unsupported("blade.width", "a blade of finite width");
-        }
-        if self.bin.length.is_some() {
-            return unsupported("bin.length", "an end wall");
         }
         if self.choices.band_shear != BandShearRule::Full {
             return unsupported("choices.band_shear", "a band shear other than full");

@@ -4,8 +4,8 @@
 //! lets the slopes avalanche (`avalanche`), as the node
 //! grid's increment does (docs/model.md §1).
 //!
-//! For a vertical blade at constant depth in plane strain, under the
-//! default choices (the full band shear, the band's uniform unit weight)
+//! For a vertical blade at constant depth in plane strain, in a bin or
+//! not, under the default choices (the full band shear, the band's uniform unit weight)
 //! and the sampled search; the case validation refuses other cases with
 //! the key that is not supported (`Case::validate`, docs/model.md §19).
 
@@ -38,12 +38,15 @@ pub struct Cutting {
 
 impl Cutting {
     /// The cut of a validated `case` on flat ground of fresh soil from the
-    /// face to the travel plus 8 d ahead, in pieces `run.vertex_spacing`
+    /// face to the travel plus 8 d ahead (or the end wall, `bin.length`,
+    /// if nearer), in pieces `run.vertex_spacing`
     /// long (where the soil that avalanches ahead of a band lands; a heap
-    /// on one long piece would spread thin over all of it).
+    /// on one long piece would spread thin over all of it). The search
+    /// grows it as it needs, up to the wall.
     pub fn new(case: &Case) -> Self {
         let d = case.blade.depth;
-        let length = case.run.travel + 8.0 * d;
+        let ahead = case.run.travel + 8.0 * d;
+        let length = case.bin.length.map_or(ahead, |wall| wall.min(ahead));
         let spacing = case.run.vertex_spacing;
         let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
         Self::resumed(case, ground, 0)
@@ -75,12 +78,12 @@ impl Cutting {
         (at, scan): (&Context, &Scan),
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {
-        let u = self.ground.x[0];
+        let (step, u) = (at.done + 1, self.ground.x[0]);
         self.search
             .run(&mut self.ground, scan, observer)
-            .ok_or(StepError::NoAdmissibleMechanism {
-                step: at.done + 1,
-                u,
+            .ok_or(match at.case.bin.length {
+                Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
+                None => StepError::NoAdmissibleMechanism { step, u },
             })
     }
 
@@ -103,7 +106,8 @@ impl Cutting {
             resolution: c.run.increment,
             snap: 0.5 * c.run.vertex_spacing,
             grow: GROW_DEPTHS * d,
-            reach: u + MAX_REACH_DEPTHS * d,
+            // The ground never grows past the end wall.
+            reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
         }
     }
 

@@ -60,9 +60,11 @@ pub(crate) struct Scan<'a> {
     pub(crate) resolution: f64,
     /// An emergence point this close to a vertex moves to it (length).
     pub(crate) snap: f64,
-    /// Flat fresh ground appended when the scan reaches the end (length).
+    /// Flat fresh ground appended when the scan reaches the end, up to
+    /// `reach` (length).
     pub(crate) grow: f64,
-    /// No emergence point beyond this x.
+    /// No emergence point at or beyond this x, where the ground stops
+    /// growing (the end wall, else far ahead).
     pub(crate) reach: f64,
 }
 
@@ -140,11 +142,14 @@ impl VertexSearch {
         let mut best: Option<Pick> = None;
         let mut k = 0;
         loop {
-            if k + 1 >= ground.pieces() {
-                if ground.x[ground.pieces()] >= scan.reach {
-                    break;
-                }
-                ground.extend_flat(scan.grow);
+            // Every piece is scanned, the last one's too where the ground
+            // ends at `scan.reach` (the end wall): a band emerges before it.
+            if k == ground.pieces() {
+                break;
+            }
+            let end = ground.x[ground.pieces()];
+            if k + 1 == ground.pieces() && end < scan.reach {
+                ground.extend_flat(scan.grow.min(scan.reach - end));
             }
             self.push_row(ground, scan, k);
             if self.beyond_reach(ground, scan, k, best.as_ref()) {
