@@ -12,7 +12,7 @@ fn a_wall_beyond_every_mechanism_changes_nothing() {
     // as the search needs, up to the wall).
     for case in [
         common::original(2.0, 50.0),
-        on_vertices(common::refined("fig5", 2.0, 350.0)),
+        common::at_vertex_defaults(common::refined("fig5", 2.0, 350.0)),
     ] {
         let (free, _) = common::run(&case);
         let mut walled = case.clone();
@@ -70,19 +70,10 @@ fn bin_length_is_validated() {
     assert!(e.message.contains("vertical"), "{}", e.message);
 }
 
-/// `case` on the vertex ground at its defaults (d/350, vertices d/50, the
-/// midpoint force).
-fn on_vertices(mut case: soilcut_model::Case) -> soilcut_model::Case {
-    case.run.increment = case.blade.depth / soilcut_model::VERTEX_INCREMENTS_PER_DEPTH;
-    case.run.node_spacing = case.run.increment;
-    case.run.time_scheme = soilcut_model::TimeScheme::MidpointForce;
-    common::on_vertices(case, soilcut_model::VERTICES_PER_DEPTH)
-}
-
 #[test]
 fn on_the_vertex_ground_bands_stop_at_the_wall_and_the_pile_keeps_its_mass() {
     for which in ["table1-hs", "fig5"] {
-        let mut case = on_vertices(common::refined(which, 3.0, 350.0));
+        let mut case = common::at_vertex_defaults(common::refined(which, 3.0, 350.0));
         let d = case.blade.depth;
         let wall = 5.0 * d;
         case.bin.length = Some(wall);
@@ -103,7 +94,7 @@ fn on_the_vertex_ground_bands_stop_at_the_wall_and_the_pile_keeps_its_mass() {
 
 #[test]
 fn on_the_vertex_ground_a_bin_too_short_for_the_travel_fails_clearly() {
-    let mut case = on_vertices(common::refined("table1-hs", 4.0, 350.0));
+    let mut case = common::at_vertex_defaults(common::refined("table1-hs", 4.0, 350.0));
     case.bin.length = Some(case.run.travel + 2.0 * case.blade.depth / 50.0);
     let mut sim = Simulation::new(&case).unwrap();
     let err = sim.run_to_end(|_| {}).unwrap_err();

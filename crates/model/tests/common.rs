@@ -56,6 +56,15 @@ pub fn on_vertices(mut case: Case, per_depth: f64) -> Case {
     case
 }
 
+/// `case` on the vertex ground at its defaults: d/350
+/// (`VERTEX_INCREMENTS_PER_DEPTH`), vertices d/50, the midpoint force.
+pub fn at_vertex_defaults(mut case: Case) -> Case {
+    case.run.increment = case.blade.depth / soilcut_model::VERTEX_INCREMENTS_PER_DEPTH;
+    case.run.node_spacing = case.run.increment;
+    case.run.time_scheme = TimeScheme::MidpointForce;
+    on_vertices(case, soilcut_model::VERTICES_PER_DEPTH)
+}
+
 /// Coulomb's passive coefficient with wall friction (angles in degrees).
 pub fn coulomb_kp(phi: f64, phi_w: f64) -> f64 {
     let (p, w) = (phi.to_radians(), phi_w.to_radians());

@@ -24,6 +24,7 @@ fn cut(ground: &Ground, beta: f64, psi: f64, band_width: f64, v0: f64) -> Cut {
     let emergence = ground.x[k - 1] + lambda * (ground.x[k] - ground.x[k - 1]);
     Cut {
         depth: DEPTH,
+        deepening: 0.0,
         emergence,
         thickness: band_width / beta.cos(),
         width: band_width,

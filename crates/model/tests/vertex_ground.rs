@@ -154,7 +154,7 @@ fn the_landscape_holds_the_first_stage_and_the_step_refines_it() {
 }
 
 #[test]
-fn advance_to_goes_beyond_the_travel_and_refuses_a_depth_path() {
+fn advance_to_goes_beyond_the_travel_and_steers_the_tip() {
     let case = table1_s(0.5, 250.0);
     let mut sim = Simulation::new(&case).unwrap();
     let beyond = case.run.travel + 1.0;
@@ -165,12 +165,17 @@ fn advance_to_goes_beyond_the_travel_and_refuses_a_depth_path() {
         "{}",
         sim.blade_position()
     );
-    // Steering the tip makes a depth path, which the vertex ground refuses.
+    // Steering the tip makes a depth path, which the vertex ground runs.
+    let shallower = 0.9 * case.blade.depth;
+    sim.advance_to(beyond + 1.0, Some(shallower)).unwrap();
+    assert!(sim.surface().is_none(), "still on the vertex ground");
+    assert!((sim.tip_depth() - shallower).abs() < 1e-9);
+    // A depth below the ground the simulation holds stays refused.
     let e = sim
-        .advance_to(beyond + 1.0, Some(0.9 * case.blade.depth))
+        .advance_to(beyond + 2.0, Some(1.1 * case.blade.depth))
         .unwrap_err();
     assert!(
-        matches!(&e, AdvanceError::Case(c) if c.key == "blade.depth_path"),
+        matches!(&e, AdvanceError::Argument { name: "depth", .. }),
         "{e}"
     );
 }

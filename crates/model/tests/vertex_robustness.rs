@@ -3,7 +3,7 @@
 //! thinner than the vertex spacing, and a band that stays at one emergence
 //! point for many increments while it dilates.
 
-use soilcut_model::{AngleLaw, Case, Simulation, TimeScheme, VERTICES_PER_DEPTH};
+use soilcut_model::{AngleLaw, Case, Simulation};
 
 /// The law through (initial, peak, residual), degrees.
 fn law(initial: f64, peak: f64, residual: f64) -> AngleLaw {
@@ -30,15 +30,10 @@ fn thin_band(band_width_d50: f64) -> Case {
     defaults_on_vertices(case, 1.45)
 }
 
-/// `case` at the vertex ground's default increment, spacing and time
-/// scheme over `travel_depths`.
+/// `case` at the vertex ground's defaults over `travel_depths`.
 fn defaults_on_vertices(mut case: Case, travel_depths: f64) -> Case {
-    let d = case.blade.depth;
-    case.run.travel = travel_depths * d;
-    case.run.increment = d / soilcut_model::VERTEX_INCREMENTS_PER_DEPTH;
-    case.run.node_spacing = case.run.increment;
-    case.run.time_scheme = TimeScheme::MidpointForce;
-    crate::common::on_vertices(case, VERTICES_PER_DEPTH)
+    case.run.travel = travel_depths * case.blade.depth;
+    crate::common::at_vertex_defaults(case)
 }
 
 /// Runs `case` to its end, checking after every increment that the mass

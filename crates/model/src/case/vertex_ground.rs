@@ -6,8 +6,9 @@
 use super::{BandShearRule, Case, CaseError, UnitWeightRule};
 
 impl Case {
-    /// Whether the vertex ground can run this case: a vertical blade at
-    /// constant depth in plane strain, with or without an end wall, under the default
+    /// Whether the vertex ground can run this case: a vertical blade in
+    /// plane strain, at constant depth or on a depth path, with or without
+    /// an end wall, under the default
     /// choices and a sampled search (`run.samples_per_band` > 0); else the first key it cannot take.
     pub fn vertex_ground_supports(&self) -> Result<(), CaseError> {
         let unsupported = |key: &str, why: &str| {
@@ -21,9 +22,6 @@ impl Case {
         };
         if self.blade.rake != 90.0 {
             return unsupported("blade.rake", "a raked blade");
-        }
-        if !self.blade.depth_path.is_empty() {
-            return unsupported("blade.depth_path", "a depth path");
         }
         if self.blade.width.is_some() {
             return unsupported("blade.width", "a blade of finite width");

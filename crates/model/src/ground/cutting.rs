@@ -4,8 +4,8 @@
 //! lets the slopes avalanche (`avalanche`), as the node
 //! grid's increment does (docs/model.md §1).
 //!
-//! For a vertical blade at constant depth in plane strain, in a bin or
-//! not, under the default choices (the full band shear, the band's uniform unit weight)
+//! For a vertical blade in plane strain, at constant depth or on a depth
+//! path, in a bin or not, under the default choices (the full band shear, the band's uniform unit weight)
 //! and the sampled search; the case validation refuses other cases with
 //! the key that is not supported (`Case::validate`, docs/model.md §19).
 
@@ -87,16 +87,25 @@ impl Cutting {
             })
     }
 
+    /// The tip's depth now and its rise per unit of travel over the next
+    /// increment (a depth path, §8.3; 0 at constant depth).
+    fn tip(&self, case: &Case) -> (f64, f64) {
+        let (u, v0) = (self.ground.x[0], case.run.increment);
+        let depth = case.tip_depth(u);
+        (depth, (depth - case.tip_depth(u + v0)) / v0)
+    }
+
     /// What the search needs besides the ground, this increment.
     fn scan<'a>(&self, at: &Context<'a>) -> Scan<'a> {
         let (c, d) = (at.case, at.case.blade.depth);
         let u = self.ground.x[0];
         let band_width = c.soil.band_width;
+        let (tip, climb) = self.tip(c);
         Scan {
             laws: at.laws,
-            loads: Loads::at_face(c, &self.rake, self.ground.y[0] + d),
-            face: at.laws.face.for_climb(0.0),
-            depth: d,
+            loads: Loads::at_face(c, &self.rake, self.ground.y[0] + tip),
+            face: at.laws.face.for_climb(climb),
+            depth: tip,
             band_width,
             sample: if band_width > 0.0 {
                 band_width / c.run.samples_per_band
@@ -116,8 +125,10 @@ impl Cutting {
     fn cut(&self, case: &Case, pick: &Pick) -> Cut {
         let (c, t) = (case, pick.tan_beta);
         let v0 = c.run.increment;
+        let (tip, climb) = self.tip(c);
         let line = Cut {
-            depth: c.blade.depth,
+            depth: tip,
+            deepening: -climb * v0,
             emergence: pick.x,
             thickness: c.soil.band_width * (1.0 + t * t).sqrt(),
             width: c.soil.band_width,
@@ -224,7 +235,8 @@ impl Discretisation for Cutting {
             }
         };
         let (d, u) = (c.blade.depth, self.ground.x[0]);
-        let face = at.laws.face.for_climb(0.0);
+        let (tip, climb) = self.tip(c);
+        let face = at.laws.face.for_climb(climb);
         let cut = self.cut(c, &pick);
         let moved = match self.ground.apply(&cut) {
             Some(moved) => moved,
@@ -273,7 +285,7 @@ impl Discretisation for Cutting {
             slip: cut.slip,
             dilation_deg: pick.angles.dilation.to_degrees(),
             dilation_area: moved.dilation_area,
-            depth: d,
+            depth: tip,
             mass_spilled: 0.0,
         })
     }

@@ -33,6 +33,9 @@ use crate::surface::compensated_sum;
 pub struct Cut {
     /// d: depth of the blade tip below y = 0, the tip at (x_0, −d) (length).
     pub depth: f64,
+    /// Δd: how much deeper the tip is after the increment (a depth path;
+    /// negative where it rises) (length).
+    pub deepening: f64,
     /// x_e: where the band's lower boundary meets the surface (length).
     pub emergence: f64,
     /// e: the band's vertical thickness, dB / cos β (0: a slip line) (length).
@@ -92,16 +95,20 @@ impl Ground {
         // the sums that keep area and mass exact stop there.
         let end = self.x[(emergence + 2).min(self.pieces())];
         let (mass_before, area_before) = self.region(end);
-        let target_area = area_before - cut.advance * (-self.floor - cut.depth) + dilation_area;
-        let trench_mass = self.unit_weight[0] * cut.advance * (-self.floor - cut.depth);
+        // The soil below the tip's path, from depth d to d + Δd, stays
+        // behind in the trench (M38); what lies above it goes up the face.
+        let below_path = -self.floor - cut.depth - 0.5 * cut.deepening;
+        let target_area = area_before - cut.advance * below_path + dilation_area;
+        let trench_mass = self.unit_weight[0] * cut.advance * below_path;
         let band = if banded {
             self.shear_band(&line, cut, corner, emergence)?
         } else {
             self.slide_over(cut, emergence)
         };
-        // The swept soil, ½ v0 (e + rise), on the face's piece (M20).
+        // The swept soil, ½ v0 (e + rise), on the face's piece (M20), and
+        // the tip's path's share, ½ v0 Δd (M38).
         let first = self.x[1] - self.x[0];
-        self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
+        self.y[0] += cut.advance * (cut.thickness + cut.rise + cut.deepening) / first;
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
         }
