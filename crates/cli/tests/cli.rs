@@ -124,8 +124,8 @@ fn the_vertex_ground_refuses_what_it_does_not_do() {
     );
     assert_bad_input(
         REFINED,
-        &[vertices, "blade.rake=60"],
-        "blade.rake: a raked blade: not supported on the vertex ground",
+        &[vertices, "blade.width=40"],
+        "blade.width: a blade of finite width: not supported on the vertex ground",
     );
 }
 

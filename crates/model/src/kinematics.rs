@@ -32,7 +32,7 @@
 //! of the soil in front of the blade is unchanged (paper: γ = Wb / Anew for
 //! the band as a whole).
 
-use crate::band::Band;
+use crate::band::{stretch, Band};
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
 use crate::grid::FaceNode;
 use crate::rake::Rake;
@@ -122,7 +122,11 @@ impl Kinematics {
         let gap = if update.dilation_area == 0.0 {
             0.0
         } else {
-            dilation_gap(update.slip, choice.dilation, choice.tan_beta)
+            dilation_gap(
+                update.slip,
+                choice.dilation.tan(),
+                (choice.grid_slope, choice.tan_beta),
+            )
         };
         self.mix_block_columns(surface, band, update.first_band_node, gap);
         band_unit_weight(surface, band, choice, choices, &update, mass_before);
@@ -422,14 +426,16 @@ fn mix_column(
 }
 
 /// The band's dilation under the block in one increment, as a height: its
-/// normal opening Δut tan ψ over cos β (M26). A column of the block holds
+/// normal opening Δut tan ψ over cos β (M26), on a raked blade's sheared
+/// coordinates times M16's stretch tan β' / tan β (the line of slope
+/// (`grid_slope`, `tan_beta`); for a vertical blade rise − v0 tan β,
+/// (M18), and on the grid rise' − v0 tan β'). A column of the block holds
 /// the band's full thickness, so this much of it is volume the band
 /// gained, not soil the block brought; weighed at the block's γ, the
 /// band's pieces at the emergence point (M27) paid for it and a band that
-/// stays for many increments fell below zero weight (issue 38). For a
-/// vertical blade it is rise − v0 tan β (M18).
-pub(crate) fn dilation_gap(slip: f64, dilation: f64, tan_beta: f64) -> f64 {
-    slip * dilation.tan() * (1.0 + tan_beta * tan_beta).sqrt()
+/// stays for many increments fell below zero weight (issue 38).
+pub(crate) fn dilation_gap(slip: f64, tan_psi: f64, (grid_slope, tan_beta): (f64, f64)) -> f64 {
+    slip * tan_psi * (1.0 + tan_beta * tan_beta).sqrt() * stretch(grid_slope, tan_beta)
 }
 
 /// Spreads what the update gained or lost in area, `residual`, evenly in

@@ -25,6 +25,7 @@ fn cut(ground: &Ground, beta: f64, psi: f64, band_width: f64, v0: f64) -> Cut {
     Cut {
         depth: DEPTH,
         deepening: 0.0,
+        rake: soilcut_model::rake::Rake::new(90.0),
         emergence,
         thickness: band_width / beta.cos(),
         width: band_width,
@@ -127,7 +128,8 @@ fn many_increments_keep_mass_and_an_ordered_ground() {
             let beta = 28.0 + 6.0 * (step as f64 * 0.05).sin();
             let c = cut(&ground, beta, psi, band_width, 0.01);
             ground.apply(&c).expect("a band the vertices resolve");
-            ground.relax(REPOSE.to_radians().tan(), 0.04);
+            let s = REPOSE.to_radians().tan();
+            ground.relax((s, s), 0.04);
             assert!(ground.x.windows(2).all(|w| w[1] > w[0]), "step {step}");
         }
         assert_close(ground.mass(), mass, 1e-11, "mass after 300 increments");

@@ -96,9 +96,10 @@ fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
     wide.blade.width = Some(40.0);
     let e = Simulation::new(&wide).unwrap_err();
     assert_eq!(e.key, "blade.width");
-    let mut raked = table1_s(1.0, 250.0);
-    raked.blade.rake = 60.0;
-    assert_eq!(Simulation::new(&raked).unwrap_err().key, "blade.rake");
+    let mut by_position = table1_s(1.0, 250.0);
+    by_position.choices.band_shear = soilcut_model::BandShearRule::ByPosition;
+    let e = Simulation::new(&by_position).unwrap_err();
+    assert_eq!(e.key, "choices.band_shear");
     // The vertex ground has no exhaustive search to fall back on.
     let mut exhaustive = table1_s(1.0, 250.0);
     exhaustive.run.samples_per_band = 0.0;

@@ -6,9 +6,9 @@
 use super::{BandShearRule, Case, CaseError, UnitWeightRule};
 
 impl Case {
-    /// Whether the vertex ground can run this case: a vertical blade in
-    /// plane strain, at constant depth or on a depth path, with or without
-    /// an end wall, under the default
+    /// Whether the vertex ground can run this case: a blade in plane
+    /// strain, vertical or raked, at constant depth or on a depth path (a
+    /// vertical one), with or without an end wall (the same), under the default
     /// choices and a sampled search (`run.samples_per_band` > 0); else the first key it cannot take.
     pub fn vertex_ground_supports(&self) -> Result<(), CaseError> {
         let unsupported = |key: &str, why: &str| {
@@ -20,9 +20,6 @@ impl Case {
                 ),
             ))
         };
-        if self.blade.rake != 90.0 {
-            return unsupported("blade.rake", "a raked blade");
-        }
         if self.blade.width.is_some() {
             return unsupported("blade.width", "a blade of finite width");
         }

@@ -26,17 +26,21 @@ use crate::avalanche::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 const BALANCE: f64 = 1e-9;
 
 impl Ground {
-    /// Relaxes every piece steeper than the angle of repose (`tan_repose`,
-    /// s = tan θr) (M28, M50); returns whether any soil moved. The pieces next
-    /// to a steep one are first cut to at most `spacing`, so that the soil
-    /// that runs down heaps where it stops, not over a long piece.
-    pub fn relax(&mut self, tan_repose: f64, spacing: f64) -> bool {
-        self.refine_around_steep(tan_repose, spacing);
+    /// Relaxes every piece steeper than the angle of repose (M28, M50):
+    /// `slopes` are the steepest slopes downhill and uphill in +x, both
+    /// s = tan θr for a vertical blade, on a raked blade's sheared
+    /// coordinates those of `Rake::repose_slopes` (M29; downhill infinite
+    /// where the face is flatter than the repose); returns whether any
+    /// soil moved. The pieces next to a steep one are first cut to at most
+    /// `spacing`, so that the soil that runs down heaps where it stops,
+    /// not over a long piece.
+    pub fn relax(&mut self, slopes: (f64, f64), spacing: f64) -> bool {
+        self.refine_around_steep(slopes, spacing);
         let mut moved = false;
         for _ in 0..MAX_PASSES {
             let areas: Vec<f64> = (0..self.pieces()).map(|k| self.piece_area(k)).collect();
-            let down = self.pool(tan_repose, 1.0);
-            let up = self.pool(tan_repose, -1.0);
+            let down = slopes.0.is_finite() && self.pool(slopes.0, 1.0);
+            let up = self.pool(slopes.1, -1.0);
             if !down && !up {
                 break;
             }
@@ -46,13 +50,17 @@ impl Ground {
         moved
     }
 
-    /// Cuts the two pieces on either side of every piece steeper than s
-    /// into equal pieces no longer than `spacing` (the avalanche cuts the
-    /// ground where its soil lands; each part keeps the piece's state).
-    fn refine_around_steep(&mut self, s: f64, spacing: f64) {
-        let limit = s * (1.0 + SLOPE_TOLERANCE);
+    /// Cuts the two pieces on either side of every piece steeper than
+    /// `slopes` (downhill, uphill) into equal pieces no longer than
+    /// `spacing` (the avalanche cuts the ground where its soil lands; each
+    /// part keeps the piece's state).
+    fn refine_around_steep(&mut self, (down, up): (f64, f64), spacing: f64) {
+        let (down, up) = (down * (1.0 + SLOPE_TOLERANCE), up * (1.0 + SLOPE_TOLERANCE));
         let steep: Vec<usize> = (0..self.pieces())
-            .filter(|&k| (self.y[k + 1] - self.y[k]).abs() > limit * (self.x[k + 1] - self.x[k]))
+            .filter(|&k| {
+                let (rise, run) = (self.y[k + 1] - self.y[k], self.x[k + 1] - self.x[k]);
+                rise > up * run || -rise > down * run
+            })
             .collect();
         let mut near: Vec<usize> = steep
             .iter()

@@ -13,6 +13,7 @@ use super::midpoint::midpoint_force;
 use super::motion::Cut;
 use super::search::{Pick, PickObserver, Scan, VertexSearch};
 use super::{Ground, Quiet};
+use crate::band::stretch;
 use crate::case::{Case, TimeScheme};
 use crate::discretisation::{Context, Discretisation};
 use crate::kinematics::BandMotion;
@@ -117,6 +118,7 @@ impl Cutting {
             grow: GROW_DEPTHS * d,
             // The ground never grows past the end wall.
             reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
+            rake: self.rake,
         }
     }
 
@@ -130,7 +132,8 @@ impl Cutting {
             depth: tip,
             deepening: -climb * v0,
             emergence: pick.x,
-            thickness: c.soil.band_width * (1.0 + t * t).sqrt(),
+            // M16, on a raked blade's coordinates stretched by tan β' / tan β.
+            thickness: c.soil.band_width * (1.0 + t * t).sqrt() * stretch(pick.grid_slope, t),
             width: c.soil.band_width,
             min_spacing: 0.25 * v0,
             snap: 0.5 * c.run.vertex_spacing,
@@ -138,6 +141,7 @@ impl Cutting {
             rise: 0.0,
             slip: 0.0,
             tan_psi: 0.0,
+            rake: self.rake,
         };
         match BandMotion::new((t, pick.angles.dilation), &self.rake, v0) {
             Some(m) if line.thickness > 0.0 => Cut {
@@ -146,7 +150,7 @@ impl Cutting {
                 tan_psi: m.tan_psi,
                 ..line
             },
-            _ => slip_line(&line, t, &self.rake),
+            _ => slip_line(&line, (pick.grid_slope, t), &self.rake),
         }
     }
 }
@@ -174,14 +178,16 @@ impl Discretisation for Cutting {
     }
 
     /// The surface at the vertices from the face on, each with the state
-    /// of the piece that starts there (the last, of the piece it ends).
-    fn profile(&self, _: &Context) -> Vec<ProfilePoint> {
+    /// of the piece that starts there (the last, of the piece it ends), at
+    /// its physical x (`Rake`).
+    fn profile(&self, at: &Context) -> Vec<ProfilePoint> {
         let g = &self.ground;
+        let (tip, _) = self.tip(at.case);
         (0..g.x.len())
             .map(|k| {
                 let piece = k.min(g.pieces() - 1);
                 ProfilePoint {
-                    x: g.x[k],
+                    x: self.rake.x(g.x[k], g.y[k], tip),
                     y: g.y[k],
                     accumulated_shear: g.accumulated_shear[piece],
                     unit_weight: g.unit_weight[piece],
@@ -208,10 +214,11 @@ impl Discretisation for Cutting {
             picks.insert(at, chosen);
         }
         let scale = at.case.force_scale();
+        let (tip, _) = self.tip(at.case);
         Ok(picks
             .iter()
             .map(|p| Candidate {
-                x_emergence: p.x,
+                x_emergence: self.rake.x(p.x, p.y, tip),
                 y_emergence: p.y,
                 beta_deg: p.tan_beta.atan().to_degrees(),
                 force: p.force,
@@ -242,14 +249,18 @@ impl Discretisation for Cutting {
             Some(moved) => moved,
             None => self
                 .ground
-                .apply(&slip_line(&cut, pick.tan_beta, &self.rake))
+                .apply(&slip_line(
+                    &cut,
+                    (pick.grid_slope, pick.tan_beta),
+                    &self.rake,
+                ))
                 .expect("a slip line always moves"),
         };
         // The face at exactly n v0 after n increments, as on the node grid,
         // not a sum of n increments' rounding.
         self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
-        let tan_repose = c.soil.repose.to_radians().tan();
-        self.ground.relax(tan_repose, c.run.vertex_spacing);
+        let slopes = self.rake.repose_slopes(c.soil.repose.to_radians().tan());
+        self.ground.relax(slopes, c.run.vertex_spacing);
         if c.run.merge_tolerance > 0.0 {
             let quiet = Quiet {
                 tolerance: c.run.merge_tolerance,
@@ -278,7 +289,7 @@ impl Discretisation for Cutting {
             force_h: pick.force * omega.cos(),
             force_v: pick.force * omega.sin(),
             beta_deg: pick.tan_beta.atan().to_degrees(),
-            x_emergence: pick.x,
+            x_emergence: self.rake.x(pick.x, pick.y, tip),
             mass: self.ground.mass(),
             y_emergence: pick.y,
             friction_deg: pick.angles.friction.to_degrees(),
@@ -291,9 +302,10 @@ impl Discretisation for Cutting {
     }
 }
 
-/// The slip line of `band`'s lower boundary (M14, M15).
-fn slip_line(band: &Cut, tan_beta: f64, rake: &Rake) -> Cut {
-    let motion = BandMotion::slip_line((tan_beta, tan_beta), rake, band.advance);
+/// The slip line of `band`'s lower boundary (M14, M15), of slope
+/// `grid_slope` in the ground's coordinates and tan β physically.
+fn slip_line(band: &Cut, (grid_slope, tan_beta): (f64, f64), rake: &Rake) -> Cut {
+    let motion = BandMotion::slip_line((grid_slope, tan_beta), rake, band.advance);
     Cut {
         thickness: 0.0,
         rise: motion.rise,

@@ -31,9 +31,11 @@ pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip
     let angles = scan
         .laws
         .band_angles(footprint_means(ground, scan, &pick, half_slip));
-    let run = pick.x - ground.x[0];
     let factor = scan.laws.factor(angles, pick.tan_beta, scan.face);
-    match scan.loads.force(&factor, pick.weight, run, pick.tan_beta) {
+    match scan
+        .loads
+        .force(&factor, pick.weight, pick.length, pick.tan_beta)
+    {
         Some(force) => Pick {
             force,
             angles,

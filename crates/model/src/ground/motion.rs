@@ -26,6 +26,7 @@
 //! keeps the weight of soil unchanged (M27).
 
 use super::Ground;
+use crate::kinematics::dilation_gap;
 use crate::surface::compensated_sum;
 
 /// The mechanism an increment moves the soil by.
@@ -55,6 +56,9 @@ pub struct Cut {
     pub slip: f64,
     /// tan ψ of the band (0 for a slip line).
     pub tan_psi: f64,
+    /// The shear of a raked blade's coordinates, in which the ground is
+    /// held (`Rake`; the identity for a vertical blade).
+    pub rake: crate::rake::Rake,
 }
 
 /// What an increment did to the ground.
@@ -112,8 +116,10 @@ impl Ground {
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
         }
-        // The band's dilation under the block (0 for a slip line).
-        let gap = cut.slip * cut.tan_psi * (1.0 + line.tan_beta * line.tan_beta).sqrt();
+        // The band's dilation under the block (0 for a slip line), in the
+        // ground's coordinates (M16's stretch on a raked blade's).
+        let t = cut.rake.physical(line.tan_beta).unwrap_or(line.tan_beta);
+        let gap = dilation_gap(cut.slip, cut.tan_psi, (line.tan_beta, t));
         self.mix_block_pieces(&before, &line, band.start, gap);
         if banded {
             self.keep_band_state(&before, band.clone());

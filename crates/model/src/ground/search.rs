@@ -25,9 +25,11 @@
 //! the least by golden-section search down to the resolution.
 
 use super::Ground;
+use crate::band::stretch;
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
 use crate::mechanism::Loads;
+use crate::rake::Rake;
 use crate::search::bounds::{may_win, Lower};
 
 /// Local minima of the samples within this fraction of the least are
@@ -66,6 +68,9 @@ pub(crate) struct Scan<'a> {
     /// No emergence point at or beyond this x, where the ground stops
     /// growing (the end wall, else far ahead).
     pub(crate) reach: f64,
+    /// The shear of a raked blade's coordinates (the ground is held in
+    /// x' = x + (y + d) cot α, where the face is vertical; `Rake`).
+    pub(crate) rake: Rake,
 }
 
 /// The chosen mechanism.
@@ -75,7 +80,13 @@ pub(crate) struct Pick {
     pub(crate) x: f64,
     /// y(x_e).
     pub(crate) y: f64,
+    /// tan β, physical (Eq. (1), the motion).
     pub(crate) tan_beta: f64,
+    /// tan β' = (y + d) / (x_e − x_0), the line's slope in the ground's
+    /// coordinates (M34; tan β for a vertical blade).
+    pub(crate) grid_slope: f64,
+    /// The slip line's horizontal length, x_e − x_0 physically (length).
+    pub(crate) length: f64,
     /// P (force per unit width).
     pub(crate) force: f64,
     /// The band's angles (radians).
@@ -340,17 +351,21 @@ impl VertexSearch {
         if !(t > 0.0 && t <= least) {
             return None;
         }
+        // tan β physical (β < 90°, M34) and the slip line's length.
+        let grid = t;
+        let t = scan.rake.physical(grid)?;
+        let length = run - (y + d) * scan.rake.cot;
         let g = ground.unit_weight[k];
         let part = x - xa;
         let sum_a = row.sum_a + g * 0.5 * part * (ya + y + 2.0 * d);
         let sum_b = row.sum_b + g * 0.5 * part * (xa + x - 2.0 * x0);
-        let weight = sum_a - t * sum_b;
+        let weight = sum_a - grid * sum_b;
         // No band here can come within the slack of the best: P ≥ W f_min.
         let (_, lower) = self.least.expect("a piece scanned");
         if !lower.can_beat(weight, t, bar, &scan.face) {
             return None;
         }
-        let (angles, rear) = self.footprint_angles(ground, scan, k, x, y, t);
+        let (angles, rear) = self.footprint_angles(ground, scan, (k, x, y), (grid, t));
         let angles = scan.laws.band_angles(angles);
         // Eq. (1) at the band's φ rounded down on the table's grid.
         if !may_win((scan.laws, &scan.face), (weight, t), &angles, bar) {
@@ -358,11 +373,13 @@ impl VertexSearch {
         }
         self.evaluations += 1;
         let factor = scan.laws.factor(angles, t, scan.face);
-        let force = scan.loads.force(&factor, weight, run, t)?;
+        let force = scan.loads.force(&factor, weight, length, t)?;
         Some(Pick {
             x,
             y,
             tan_beta: t,
+            grid_slope: grid,
+            length,
             force,
             angles,
             weight,
@@ -371,15 +388,17 @@ impl VertexSearch {
     }
 
     /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
-    /// M17), and x − L; for a slip line, piece k's, and x.
+    /// M17), and x − L; for a slip line, piece k's, and x. The band at
+    /// x on piece k, height y, of slope `grid` in the ground's
+    /// coordinates and tan β = `t`: its vertical thickness there is
+    /// e = dB / cos β times M16's stretch tan β' / tan β, its footprint a
+    /// length of the ground's x.
     fn footprint_angles(
         &mut self,
         ground: &Ground,
         scan: &Scan,
-        k: usize,
-        x: f64,
-        y: f64,
-        t: f64,
+        (k, x, y): (usize, f64, f64),
+        (grid, t): (f64, f64),
     ) -> (BandAngles, f64) {
         let ut = ground.accumulated_shear[k];
         let (phi, psi) = self.angles[k];
@@ -393,12 +412,16 @@ impl VertexSearch {
             return (angles, x);
         }
         let run = x - ground.x[0];
-        let e = scan.band_width * (1.0 + t * t).sqrt();
-        let flat = (e / t).min(run);
+        let e = scan.band_width * (1.0 + t * t).sqrt() * stretch(grid, t);
+        let flat = (e / grid).min(run);
         self.hints[0] = ground.piece_near(self.hints[0], x - flat);
         let back = self.hints[0].min(k);
         let s = (y - ground.height_on(back, x - flat)) / flat;
-        let length = if t > s { (e / (t - s)).min(run) } else { run };
+        let length = if grid > s {
+            (e / (grid - s)).min(run)
+        } else {
+            run
+        };
         let rear = x - length;
         let hi = self.integral(ground, k, x);
         self.hints[1] = ground.piece_near(self.hints[1], rear);

@@ -72,7 +72,11 @@ impl Kinematics {
             .find(|&i| surface.x(i) > last_block_x)
             .unwrap_or(j);
         let gap = if thickness > 0.0 {
-            dilation_gap(motion.slip, choice.dilation, choice.tan_beta)
+            dilation_gap(
+                motion.slip,
+                motion.tan_psi,
+                (choice.grid_slope, choice.tan_beta),
+            )
         } else {
             0.0
         };
