@@ -213,3 +213,46 @@ fn finite_width_tool(bencher: Bencher, name: &str) {
         .counter(ItemsCount::new(evaluations))
         .bench(|| run(divan::black_box(&case)));
 }
+
+/// Whole run of Fig. 5's soil at its defaults with one key changed (issue
+/// 38: every cut on the vertex ground), beside the plain case in the same
+/// bench run: raked at 60°, a depth path 20 → 24 → 20 mm, in a bin 8 d
+/// long, and, for the ratio to before, the raked case on the node grid.
+#[divan::bench(
+    args = ["plain", "rake60", "depth-path", "bin", "rake60-nodes"],
+    sample_count = 3,
+    sample_size = 1
+)]
+fn fig5_configuration(bencher: Bencher, name: &str) {
+    let overrides: &[&str] = match name {
+        "plain" => &[],
+        "rake60" => &["blade.rake=60"],
+        "depth-path" => &["blade.depth_path=[[0, 20], [40, 24], [80, 20]]"],
+        "bin" => &["bin.length=160"],
+        _ => &["blade.rake=60", "run.vertex_spacing=0"],
+    };
+    let case = shipped_case("paper/fig5.toml", overrides);
+    let evaluations = run(&case);
+    bencher
+        .counter(ItemsCount::new(evaluations))
+        .bench(|| run(divan::black_box(&case)));
+}
+
+/// A control tick of fig5 at its defaults on the pile developed after 3 d
+/// of travel, steered and not: `advance_to` the next increment (d/350),
+/// the tip going 0.1 % shallower over it (steered: a depth path made and
+/// validated each tick, on the vertex ground since issue 38) or staying.
+#[divan::bench(args = ["unsteered", "steered"], sample_count = 20, sample_size = 20)]
+fn fig5_control_tick(bencher: Bencher, name: &str) {
+    let case = shipped_case("paper/fig5.toml", &[]);
+    let developed = developed(&case, 3.0);
+    let steered = name == "steered";
+    bencher
+        .with_inputs(|| developed.clone())
+        .bench_local_values(|mut sim| {
+            let x = sim.blade_position() + sim.case().run.increment;
+            let depth = steered.then(|| sim.tip_depth() * 0.999);
+            sim.advance_to(x, depth).unwrap();
+            sim
+        });
+}

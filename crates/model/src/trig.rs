@@ -30,7 +30,9 @@ fn table() -> &'static [(f64, f64)] {
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     let k = (x * (1.0 / STEP) + ROUNDING) - ROUNDING;
-    if !(k.abs() <= HALF as f64) {
+    // NaN fails the comparison and takes libm's path too.
+    let within = k.abs() <= HALF as f64;
+    if !within {
         return x.sin_cos();
     }
     let d = x - k * STEP;

@@ -61,6 +61,15 @@ pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
 /// 0.73 at d/350; `docs/studies/vertex-ground/`).
 pub const VERTICES_PER_DEPTH: f64 = 50.0;
 
+/// Vertex spacings per blade depth of the default vertex ground under a
+/// raked blade: h = d/100. Its ground lies in the sheared coordinates of
+/// `Rake`, where the band is thinner by tan β' / tan β (M16), so the
+/// vertices must be closer: Fig. 5's soil at α = 60° fails the ensemble
+/// rule with vertices d/50 apart at d/350 (1.14 of the tolerance, the 3-4 d
+/// window) and d/500 (1.30), and passes with d/100 at d/350 (0.43;
+/// `docs/studies/every-class/`).
+pub const RAKED_VERTICES_PER_DEPTH: f64 = 100.0;
+
 /// `run.samples_per_band` when a case does not give it: the search's first
 /// stage evaluates 8 candidates per band width (`Case::search_stride`,
 /// docs/model.md §2.8), its second every node near their local minima.
@@ -111,7 +120,8 @@ pub fn default_increment(
 
 /// `run.vertex_spacing` when a case gives neither it nor
 /// `run.node_spacing`: d / `VERTICES_PER_DEPTH` for the refined model in
-/// softening soil where the vertex ground runs the case
+/// softening soil where the vertex ground runs the case (d /
+/// `RAKED_VERTICES_PER_DEPTH` under a raked blade)
 /// (`Case::vertex_ground_supports`), as there it is accurate at fewer
 /// increments than the node grid and its cost grows as the increments do,
 /// not as their square (docs/performance.md); else 0, the node grid, which
@@ -121,10 +131,13 @@ pub fn default_increment(
 /// blade, bin, choices and `run.samples_per_band`.
 pub fn default_vertex_spacing(case: &Case) -> f64 {
     let class = case.model == Model::Refined && case.soil.softens();
-    if class && case.vertex_ground_supports().is_ok() {
+    if !(class && case.vertex_ground_supports().is_ok()) {
+        return 0.0;
+    }
+    if case.blade.rake == 90.0 {
         case.blade.depth / VERTICES_PER_DEPTH
     } else {
-        0.0
+        case.blade.depth / RAKED_VERTICES_PER_DEPTH
     }
 }
 

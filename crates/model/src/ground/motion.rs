@@ -110,9 +110,17 @@ impl Ground {
             self.slide_over(cut, emergence)
         };
         // The swept soil, ½ v0 (e + rise), on the face's piece (M20), and
-        // the tip's path's share, ½ v0 Δd (M38).
+        // the tip's path's share, ½ v0 Δd (M38), over the ground within v0
+        // of the face (the node grid's face node): on the face's piece
+        // alone, shorter than v0, a tip rising fast sank the face vertex
+        // below the tip (a negative weight and force; the fuzz corpus's
+        // scoop rising 82 mm an increment).
         let first = self.x[1] - self.x[0];
-        self.y[0] += cut.advance * (cut.thickness + cut.rise + cut.deepening) / first;
+        self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
+        if cut.deepening != 0.0 {
+            let reach = self.x.partition_point(|&x| x <= self.x[0] + cut.advance);
+            self.lift_band(0..reach.max(1), 0.5 * cut.advance * cut.deepening);
+        }
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
         }
@@ -258,9 +266,10 @@ impl Ground {
         }
     }
 
-    /// Raises the band's vertices (`vertices`, from the block's corner to
-    /// before the emergence vertex) by one height, so that the area is
-    /// exactly the old area less the trench plus the dilation (M21).
+    /// Raises `vertices` (the band's, from the block's corner to before the
+    /// emergence vertex, or those near the face) by one height, so that
+    /// the area changes by `residual` (M21: exactly the old area less the
+    /// trench plus the dilation).
     fn lift_band(&mut self, vertices: std::ops::Range<usize>, residual: f64) {
         let weight = |k: usize| {
             let left = if k == 0 {

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Every class of case at its shipped defaults, judged by the ensemble rule
+# (docs/model.md §12.1) against a reference ensemble of its own (issue 38):
+# for each case below, an ensemble of 7 perturbed runs on the reference
+# grid (nodes every increment, the exhaustive search, d/2000) and one at
+# the defaults its class resolves to (`soilcut check` names them), then
+# `soilcut accuracy` of the second against the first.
+#
+#   bash docs/studies/every_class.sh SOILCUT RUNS
+#
+# SOILCUT the binary, RUNS where the ensembles go (resumable: an ensemble
+# whose ensemble.csv exists is judged again, not rerun: NAME/ref-d2000 and
+# NAME/defaults). Writes docs/studies/every-class/table.md. The reference
+# ensembles are the long part (about 1-10 minutes of one core each).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+soilcut=$1 runs=$2
+out=docs/studies/every-class/table.md
+mkdir -p "$runs" "$(dirname "$out")"
+
+ensemble() { # folder, case file, extra arguments
+  local folder=$1 file=$2
+  shift 2
+  [ -f "$folder/ensemble.csv" ] && return
+  nice -n 10 "$soilcut" run "$file" --ensemble 7 --jobs 1 "$@" --no-plots --quiet --force --out "$folder"
+}
+
+row() { # name, class, case file, extra --set arguments
+  local name=$1 class=$2 file=$3
+  shift 3
+  local d v
+  d=$(grep -m1 '^depth' "$file" | awk '{print $3}')
+  v=$(python3 -c "print(repr($d / 2000))")
+  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set run.vertex_spacing=0 \
+    --set run.increment="$v" --set run.node_spacing="$v" --set run.samples_per_band=0
+  ensemble "$runs/$name/defaults" "$file" "$@"
+  local ground
+  ground=$("$soilcut" check "$file" "$@" | tail -1 | sed -E 's/^ +//; s/\|/\\|/g')
+  "$soilcut" accuracy "$runs/$name/defaults" "$runs/$name/ref-d2000" --json |
+    python3 -c '
+import csv, json, statistics, sys
+name, klass, ground, runs = sys.argv[1:]
+a = json.load(sys.stdin)
+folder = f"{runs}/{name}"
+ours = json.load(open(f"{folder}/defaults/summary.json"))["mean_force_norm"]
+ref = json.load(open(f"{folder}/ref-d2000/summary.json"))["mean_force_norm"]
+def wall(f):
+    return statistics.median(float(r["wall_time_s"]) for r in csv.DictReader(open(f"{folder}/{f}/timing.csv")))
+verdict = "yes" if a["accurate"] else "no"
+ours_wall, ref_wall, worst = wall("defaults"), wall("ref-d2000"), a["worst_ratio"]
+mean, sd, ref_mean, ref_sd = ours["mean"], ours["std"], ref["mean"], ref["std"]
+print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f} | {ref_wall:.1f} | {ref_mean:.4f} ± {ref_sd:.4f} | {worst:.2f} | {verdict} |")
+' "$name" "$class" "$ground" "$runs"
+}
+
+{
+  echo "| case | class | defaults (\`soilcut check\`) | median wall time a member (s) | whole-run mean ± sd | reference's median wall time (s) | reference (d/2000) mean ± sd | worst deviation / tolerance | accurate |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  row table1-s "refined, softening" cases/paper/table1-s.toml
+  row table1-hs "refined, hardening-softening" cases/paper/table1-hs.toml
+  row fig5 "refined, hardening-softening" cases/paper/fig5.toml
+  row fig8b "refined, never softening" cases/paper/fig8b.toml
+  row fig5-bin "soil bin (Fig. 5 with bin.length = 8 d)" cases/paper/fig5.toml --set bin.length=160
+  row validation-vertical "soil bin (DEM's, 10 d)" cases/validation/vertical.toml
+  row validation-deep "soil bin (DEM's, 8 d)" cases/validation/deep.toml
+  row scoop "depth path (the scoop)" cases/tools/scoop.toml
+  row fig5-rake60 "raked blade (Fig. 5, α = 60°)" cases/paper/fig5.toml --set blade.rake=60
+} > "$out.tmp"
+mv "$out.tmp" "$out"
+cat "$out"
