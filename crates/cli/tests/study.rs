@@ -200,6 +200,30 @@ fn bad_study_arguments_exit_2() {
 }
 
 #[test]
+fn a_missing_measured_curve_is_named_as_such() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (case, out) = (refined(), tmp.path().join("x").display().to_string());
+    let nope = tmp.path().join("nope.csv").display().to_string();
+    let args = [
+        "fit",
+        &case,
+        "--measured",
+        &nope,
+        "--free",
+        "soil.friction.peak",
+        "--out",
+        &out,
+    ];
+    let o = soilcut(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with(&format!("error: {nope}: cannot read the measured curve: ")),
+        "{err}"
+    );
+}
+
+#[test]
 fn fit_and_converge_write_their_files() {
     let tmp = tempfile::tempdir().unwrap();
     let case = refined();

@@ -10,6 +10,8 @@ use std::path::{Path, PathBuf};
 pub enum InputError {
     /// The case file could not be read at all.
     Read(std::io::Error),
+    /// A measured curve's file could not be read at all.
+    ReadMeasured(std::io::Error),
     /// The file is not valid TOML.
     Syntax {
         /// Line of the error, from 1.
@@ -46,6 +48,11 @@ impl fmt::Display for InputError {
             InputError::Read(e) => {
                 write!(f, "cannot read the case file: {}", one_line(&e.to_string()))
             }
+            InputError::ReadMeasured(e) => write!(
+                f,
+                "cannot read the measured curve: {}",
+                one_line(&e.to_string())
+            ),
             InputError::Syntax { line, message } => write!(f, "line {line}: {message}"),
             InputError::Key(e) => write!(f, "{e}"),
             InputError::Override { text, message } => {
