@@ -402,7 +402,40 @@ fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
         return InputError::key(&key, format!("unknown key{hint}"));
     }
     let key = if path == "." { "case" } else { &path };
-    InputError::key(key, message)
+    InputError::key(
+        key,
+        plain_type_error(message).unwrap_or_else(|| message.into()),
+    )
+}
+
+/// serde's `invalid type: string "abc", expected f64` in the words of the
+/// case file: `expected a number, got the string "abc"` (Rust's type names
+/// mean nothing to a user who wrote TOML).
+fn plain_type_error(message: &str) -> Option<String> {
+    let (got, expected) = message
+        .strip_prefix("invalid type: ")?
+        .rsplit_once(", expected ")?;
+    let expected = match expected {
+        "f64" | "f32" => "a number",
+        "u8" | "u16" | "u32" | "u64" | "usize" | "i32" | "i64" => "a whole number",
+        "a boolean" => "true or false",
+        "a sequence" => "an array",
+        other => other,
+    };
+    let (kind, value) = got.split_once(' ').unwrap_or((got, ""));
+    let kind = match kind {
+        "sequence" => "an array".to_string(),
+        "map" => "a table".to_string(),
+        "integer" => "the whole number".to_string(),
+        "floating" => "the number".to_string(),
+        other => format!("the {other}"),
+    };
+    let value = value.trim_start_matches("point ").replace('`', "");
+    Some(
+        format!("expected {expected}, got {kind} {value}")
+            .trim_end()
+            .to_string(),
+    )
 }
 
 /// The keys of serde's `expected` list (`` one of `a`, `b` `` or `` `a` ``)
@@ -682,6 +715,29 @@ mod tests {
         match parse_case(text, &overrides) {
             Err(InputError::Key(e)) => e,
             other => panic!("expected a key error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_value_of_the_wrong_type_is_named_in_the_case_files_words() {
+        for (set, said) in [
+            (
+                "run.increment=abc",
+                "expected a number, got the string \"abc\"",
+            ),
+            (
+                "run.increment=true",
+                "expected a number, got the boolean true",
+            ),
+            (
+                "blade.depth_path=3",
+                "expected an array, got the whole number 3",
+            ),
+            ("name=3.5", "expected a string, got the number 3.5"),
+        ] {
+            let e = key_error(ORIGINAL, &[set]);
+            assert_eq!(e.message, said, "{set}");
+            assert!(!e.message.contains("f64"), "{set}");
         }
     }
 
