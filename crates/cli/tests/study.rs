@@ -137,6 +137,10 @@ fn a_sweep_whose_every_run_fails_exits_2_with_its_files() {
     );
     let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
     assert_eq!(csv.lines().filter(|l| l.contains(",failed,")).count(), 2);
+    assert!(
+        !out.join("sweep-soil.friction.initial.png").exists(),
+        "no picture without a point"
+    );
     // One run that works is a sweep that works.
     args[3] = "soil.friction.initial=20,55";
     args.push("--force");

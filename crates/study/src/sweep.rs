@@ -197,10 +197,14 @@ impl SweepResult {
     }
 
     /// Draws `sweep-<key>.png` into `dir` for every numeric varied key:
-    /// each figure against that key, one panel per figure. Returns the
-    /// files written.
+    /// each figure against that key, one panel per figure; nothing if every
+    /// run failed. Returns the files written.
     pub fn draw(&self, dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
         let mut written = Vec::new();
+        if self.rows.iter().all(|r| r.outcome.is_err()) {
+            // Panels without a point say nothing sweep.csv does not.
+            return Ok(written);
+        }
         for (k, key) in self.keys.iter().enumerate() {
             let xs: Vec<Option<f64>> = self.rows.iter().map(|r| number(&r.values[k])).collect();
             if xs.iter().any(Option::is_none) {
