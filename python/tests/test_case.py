@@ -141,6 +141,11 @@ def test_a_path_is_taken_where_a_case_is(original, tmp_path):
     # A one-line string ending in .toml is a path even if it names no file.
     with pytest.raises(FileNotFoundError):
         soilcut.Simulation(str(tmp_path / "missing.toml"))
+    # A one-line string without "=" is no case's text: a path, even without .toml.
+    with pytest.raises(FileNotFoundError):
+        soilcut.run(str(tmp_path / "missing"))
+    with pytest.raises(TypeError, match=r"^update: changes must be .* got the item 1$"):
+        original.update([1, 2])
     # The text itself is still the text.
     assert soilcut.Simulation(short.to_toml()).case == short
 
