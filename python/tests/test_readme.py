@@ -49,6 +49,8 @@ def test_the_python_blocks_run_in_order(sandbox):
     for block in blocks("python"):
         exec(compile(block, "README.md", "exec"), namespace)
     assert (sandbox / "out" / "original-py" / "history.csv").is_file()
+    # A user runs the first block again: it replaces what it wrote.
+    exec(compile(blocks("python")[0], "README.md", "exec"), {})
 
 
 def test_the_python_commands_run(sandbox):

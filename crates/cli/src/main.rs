@@ -57,7 +57,7 @@ Examples:
 const COMPARE_EXAMPLES: &str = "\
 Examples:
   soilcut compare out/original out/fine
-  soilcut compare out/original out/fine --measured tests.csv --out fig7.svg";
+  soilcut compare out/original out/fine --measured tests.csv --out out/fig7.svg";
 
 /// `soilcut --version`: the crate version and the commit it was built from
 /// (`build.rs`; `unknown` when built without git).

@@ -35,6 +35,7 @@ const BUILD_STEPS: &[&str] = &[
     "python3 -m venv ",
     ".venv/bin/python docs/scripts/",
     "cc ",
+    "c++ ",
 ];
 
 fn root() -> PathBuf {
@@ -142,6 +143,39 @@ fn readme_shell_examples_run_in_order() {
         "lab",
     ] {
         assert!(out.join(made).is_dir(), "out/{made}");
+    }
+    // Beside the cases, only out/, which git ignores: nothing lands in
+    // the repository's root.
+    let mut left: Vec<String> = std::fs::read_dir(tmp.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["cases", "out"]);
+}
+
+/// `cargo install` builds what the tests ran on (Cargo.lock's versions),
+/// and the examples' compilers write into target/, which git ignores.
+#[test]
+fn the_build_steps_are_locked_and_write_into_target() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let lines = shell_lines(&readme);
+    let installs: Vec<&String> = lines
+        .iter()
+        .filter(|l| l.starts_with("cargo install "))
+        .collect();
+    assert!(!installs.is_empty());
+    for line in installs {
+        assert!(line.contains(" --locked"), "{line}");
+    }
+    let compiles: Vec<&String> = lines
+        .iter()
+        .filter(|l| l.starts_with("cc ") || l.starts_with("c++ "))
+        .collect();
+    assert_eq!(compiles.len(), 2, "the C and the C++ example");
+    for line in compiles {
+        let out = line.split_whitespace().skip_while(|w| *w != "-o").nth(1);
+        assert!(out.is_some_and(|o| o.starts_with("target/")), "{line}");
     }
 }
 
