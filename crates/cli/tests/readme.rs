@@ -264,3 +264,15 @@ fn scripts_test_says_what_it_is_doing() {
     }
     assert!(checked >= 5, "{checked} long steps found");
 }
+
+/// CI lints and checks the formatting of every Python file (the package,
+/// examples, docs/, fuzz/, validation/) by the one ruff.toml.
+#[test]
+fn ci_runs_ruff_over_every_python_file() {
+    let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
+    for command in ["ruff\" check .\n", "ruff\" format --check .\n"] {
+        assert!(ci.contains(command), "{command:?} not in .ci/run");
+    }
+    let config = std::fs::read_to_string(root().join("ruff.toml")).unwrap();
+    assert!(!config.contains("exclude = [\"validation") && !config.contains("extend-exclude"));
+}
