@@ -165,9 +165,32 @@ def measured_seeds():
 
 # ffi_calls: each input is a program of C ABI calls, op byte first
 # (crates/fuzz-bodies/src/ffi.rs reads them in this order).
-NUMBERS = [float("nan"), float("inf"), float("-inf"), -1.0, -0.0, 0.0, 5e-324,
-           1e-300, 0.02, 0.04, 0.1, 0.2, 0.3, 0.5, 1.0, 2.0, 10.0, 15.0, 20.0,
-           40.0, 1e6, 1e19, 1e21, sys.float_info.max]
+NUMBERS = [
+    float("nan"),
+    float("inf"),
+    float("-inf"),
+    -1.0,
+    -0.0,
+    0.0,
+    5e-324,
+    1e-300,
+    0.02,
+    0.04,
+    0.1,
+    0.2,
+    0.3,
+    0.5,
+    1.0,
+    2.0,
+    10.0,
+    15.0,
+    20.0,
+    40.0,
+    1e6,
+    1e19,
+    1e21,
+    sys.float_info.max,
+]
 NULL, MISALIGNED, VALID = 0, 1, 2
 # Buffer lengths: 0, the one needed, one less, one more, (4, n) any n.
 ZERO, NEEDED, LESS, MORE = 0, 1, 2, 3
@@ -247,29 +270,73 @@ def ffi_seeds():
     for pick in range(4):
         yield new_base(0, pick) + b"".join(whole) + advance(0, 0.6, reenter=True)
     yield new_base(0, 0) + last_step(0) + step(0, MISALIGNED) + step(0, NULL) + last_step(0)
-    yield new_base(0, 0) + step(0) + snapshot(0) + restore(1) + step(1) + step(0) + free(0) + state(1)
+    yield (
+        new_base(0, 0) + step(0) + snapshot(0) + restore(1) + step(1) + step(0) + free(0) + state(1)
+    )
     yield new_base(1, 1) + snapshot(1) + restore(0, 1, u16(100), b"\x01") + restore(0, 2, u16(50))
     yield new_base(0, 0) + snapshot(0) + restore(1) + free(0) + free(1)
     yield new_base(0, 3) + snapshot(0) + restore(0, 0) + surface(0) + warnings(0, ZERO)
-    yield restore(0, 3, text(b"SOILCUT\x01" + bytes(40), 512)) + restore(1, 4, b"\x05") + restore(0, 0)
+    yield (
+        restore(0, 3, text(b"SOILCUT\x01" + bytes(40), 512))
+        + restore(1, 4, b"\x05")
+        + restore(0, 0)
+    )
     for x in [float("nan"), float("inf"), -1.0, 1e21, sys.float_info.max, 0.0, 1e19, 1e6]:
         yield new_base(0, 0) + advance(0, x) + advance(0, 0.3, x)
     yield new_base(0, 2) + advance(0, 1.0, 15.0, reenter=True) + advance(0, 0.5) + last_step(0)
-    yield new_base(0, 0) + advance(0, 0.6, made=MISALIGNED) + advance(0, 0.6, made=NULL, callback=False)
+    yield (
+        new_base(0, 0)
+        + advance(0, 0.6, made=MISALIGNED)
+        + advance(0, 0.6, made=NULL, callback=False)
+    )
     yield new_base(0, 0, "run.travel=0.4") + step(0) + step(0) + step(0) + step(0) + last_step(0)
     yield new_base(0, 0, "run.increment=0.02") + state(0) + surface(0) + snapshot(0)
     yield new_base(0, 0, "run.increment=nan") + new_base(0, 0, "colour=1") + last_error(2)
     yield new_base(0, 1, "soil.band_width=9", "blade.rake=45") + last_error(0, LESS)
-    yield new_base(0, 3, "blade.width=1") + warnings(0) + warnings(0, LESS, NULL) + warnings(0, MORE, MISALIGNED)
-    yield new_base(0, 0) + surface(0, LESS) + surface(0, MORE) + surface(0, ZERO, 1) + surface(0, NEEDED, 3, MISALIGNED)
-    yield new_base(0, 0) + snapshot(0, LESS) + snapshot(0, ZERO, False) + snapshot(0, MORE, False) + snapshot(0, NEEDED, True, NULL)
+    yield (
+        new_base(0, 3, "blade.width=1")
+        + warnings(0)
+        + warnings(0, LESS, NULL)
+        + warnings(0, MORE, MISALIGNED)
+    )
+    yield (
+        new_base(0, 0)
+        + surface(0, LESS)
+        + surface(0, MORE)
+        + surface(0, ZERO, 1)
+        + surface(0, NEEDED, 3, MISALIGNED)
+    )
+    yield (
+        new_base(0, 0)
+        + snapshot(0, LESS)
+        + snapshot(0, ZERO, False)
+        + snapshot(0, MORE, False)
+        + snapshot(0, NEEDED, True, NULL)
+    )
     yield last_error(2, ZERO) + last_error(2, LESS) + last_error(2, MORE) + bytes([10, 2, 4, 3])
-    yield step(2) + last_step(2) + state(2) + surface(2) + snapshot(2) + warnings(2) + advance(2, 1.0) + free(2)
+    yield (
+        step(2)
+        + last_step(2)
+        + state(2)
+        + surface(2)
+        + snapshot(2)
+        + warnings(2)
+        + advance(2, 1.0)
+        + free(2)
+    )
     yield bytes([2, 0]) + bytes([2, 1]) + last_error(2)
     yield new_toml(0, "") + new_toml(0, "name = ") + new_toml(1, b"\xff\xfe") + last_error(2)
     for case in sorted((ROOT / "cases").glob("**/*.toml")):
-        yield new_toml(0, case.read_text()) + step(0) + state(0) + snapshot(0) + restore(1) + step(1)
-    yield new_toml(0, ORIGINAL, "run.travel=0.6") + advance(0, 0.2) + advance(0, 0.1) + advance(0, 2.0) + step(0)
+        yield (
+            new_toml(0, case.read_text()) + step(0) + state(0) + snapshot(0) + restore(1) + step(1)
+        )
+    yield (
+        new_toml(0, ORIGINAL, "run.travel=0.6")
+        + advance(0, 0.2)
+        + advance(0, 0.1)
+        + advance(0, 2.0)
+        + step(0)
+    )
     yield new_toml(0, REFINED) + step(0) + free(0) + step(0) + free(0)
 
 

@@ -32,6 +32,7 @@ Definitions (the same for soilcut and the DEM):
   above the level ground ahead of the face and the slope of its front
   between 80 % and 20 % of that height (soilcut: frames.csv nearest u).
 """
+
 import csv
 import json
 import math
@@ -41,7 +42,14 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "validation" / "dem"))
-from campaigns import CAMPAIGNS, RESULTS as DEM, YARDSTICK, campaign_option, compared_key, config_key  # noqa: E402
+from campaigns import (  # noqa: E402 (after the path is set)
+    CAMPAIGNS,
+    YARDSTICK,
+    campaign_option,
+    compared_key,
+    config_key,
+)
+from campaigns import RESULTS as DEM  # noqa: E402
 
 CUTS = {"vertical": (20.0, 90.0), "raked30": (20.0, 30.0), "deep": (25.0, 90.0)}
 AT = (0.5, 1.0, 1.5, 2.0)
@@ -54,7 +62,9 @@ def rows(path):
 
 def spread(values):
     v = [x for x in values if x is not None and math.isfinite(x)]
-    return (statistics.fmean(v), statistics.stdev(v) if len(v) > 1 else 0.0) if v else (math.nan, 0.0)
+    return (
+        (statistics.fmean(v), statistics.stdev(v) if len(v) > 1 else 0.0) if v else (math.nan, 0.0)
+    )
 
 
 def members(folder):
@@ -121,22 +131,35 @@ def coulomb(path):
 def svg(name, depth, dem_surf, model_surf):
     """Ground surfaces at u = 1, 2 d: every DEM seed dashed, soilcut's k+0 member solid."""
     x0, x1, y0, y1, w, h = -2.0, 6.0, -1.2, 2.4, 800, 360
-    px = lambda x: (x / depth - x0) / (x1 - x0) * w
-    py = lambda y: h - (y / depth - y0) / (y1 - y0) * h
+
+    def px(x):
+        return (x / depth - x0) / (x1 - x0) * w
+
+    def py(y):
+        return h - (y / depth - y0) / (y1 - y0) * h
+
     colours = {1.0: "#1b9e77", 2.0: "#d95f02"}
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h + 40}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{w}" height="{h + 40}" fill="white"/>',
-           f'<line x1="0" y1="{py(0):.1f}" x2="{w}" y2="{py(0):.1f}" stroke="#bbb"/>']
+    out = [
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h + 40}" font-family="sans-serif" font-size="12">',
+        f'<rect width="{w}" height="{h + 40}" fill="white"/>',
+        f'<line x1="0" y1="{py(0):.1f}" x2="{w}" y2="{py(0):.1f}" stroke="#bbb"/>',
+    ]
     for k in range(int(x0), int(x1) + 1):
         out.append(f'<text x="{px(k * depth):.1f}" y="{h + 15}" text-anchor="middle">{k}</text>')
-    out.append(f'<text x="{w / 2}" y="{h + 32}" text-anchor="middle">x / d (dashed: DEM seeds, solid: soilcut; green u = 1 d, orange u = 2 d)</text>')
+    out.append(
+        f'<text x="{w / 2}" y="{h + 32}" text-anchor="middle">x / d (dashed: DEM seeds, solid: soilcut; green u = 1 d, orange u = 2 d)</text>'
+    )
     for u, c in colours.items():
-        lines = [(pts, ' stroke-dasharray="4 3"') for pts in dem_surf.get(u, [])] + [(model_surf.get(u, []), "")]
+        lines = [(pts, ' stroke-dasharray="4 3"') for pts in dem_surf.get(u, [])] + [
+            (model_surf.get(u, []), "")
+        ]
         for pts, dash in lines:
             pts = [p for p in sorted(pts) if x0 * depth <= p[0] <= x1 * depth]
             if pts:
                 line = " ".join(f"{px(x):.1f},{py(y):.1f}" for x, y in pts)
-                out.append(f'<polyline points="{line}" fill="none" stroke="{c}" stroke-width="1.5"{dash}/>')
+                out.append(
+                    f'<polyline points="{line}" fill="none" stroke="{c}" stroke-width="1.5"{dash}/>'
+                )
     out.append("</svg>")
     (ROOT / "docs" / "img" / f"validation_surface_{name}.svg").write_text("\n".join(out) + "\n")
 
@@ -174,12 +197,18 @@ def main(out, campaign):
     out = Path(out)
     c = CAMPAIGNS[campaign]
     summary = json.loads((DEM / f"summary{c['suffix']}.json").read_text())
-    print(f"DEM campaign: {campaign} (results/{c['cuts']}/, the cuts at {c['speed'] * 1e3:g} mm/s, damping {c['damping']:g})")
+    print(
+        f"DEM campaign: {campaign} (results/{c['cuts']}/, the cuts at {c['speed'] * 1e3:g} mm/s, damping {c['damping']:g})"
+    )
     print()
     bands = {}
-    print("Forces (P/(γ0 d²); soilcut: ensemble mean ± sd over 7 members; DEM: mean ± sd over seeds):")
+    print(
+        "Forces (P/(γ0 d²); soilcut: ensemble mean ± sd over 7 members; DEM: mean ± sd over seeds):"
+    )
     print()
-    print("| cut | rule | soilcut first | DEM early | soilcut [0,1) | DEM [0,1) | ratio | soilcut [1,2) | DEM [1,2) | ratio |")
+    print(
+        "| cut | rule | soilcut first | DEM early | soilcut [0,1) | DEM [0,1) | ratio | soilcut [1,2) | DEM [1,2) | ratio |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|")
     components, mechanism, first = [], [], []
     default = {}  # each cut's members under the element-test keys, for the speed table
@@ -196,7 +225,10 @@ def main(out, campaign):
                 default[name] = s
                 if campaign == YARDSTICK:
                     svg(name, depth, *surfaces(name, folder, depth, campaign))
-            get = lambda key: spread([n.get(key) for n in s])
+
+            def get(key, s=s):
+                return spread([n.get(key) for n in s])
+
             cells = [fmt(*get("first")), fmt(*dem(d, "early"))]
             for k in range(2):
                 sm, dm = get(f"window_{k}")[0], dem(d, f"window_{k}")[0]
@@ -205,17 +237,31 @@ def main(out, campaign):
                     # The band the test holds soilcut to: the ratio ± twice the
                     # combined relative spread of the two sides.
                     rel = math.hypot(get(f"window_{k}")[1] / sm, dem(d, f"window_{k}")[1] / dm)
-                    bands[f"{name}_window_{k}"] = {"dem": dm, "low": sm / dm * (1 - 2 * rel) - 0.01,
-                                                   "high": sm / dm * (1 + 2 * rel) + 0.01}
+                    bands[f"{name}_window_{k}"] = {
+                        "dem": dm,
+                        "low": sm / dm * (1 - 2 * rel) - 0.01,
+                        "high": sm / dm * (1 + 2 * rel) + 0.01,
+                    }
             label = {"": "mobilised", "-sign": "sign (old)", "-fitted": "fitted φ"}[rule]
             print(f"| {name} | {label} | " + " | ".join(cells) + " |")
             if rule == "":
-                (c0, b0), (cp, bp) = coulomb(out / f"{name}-analytic.txt"), coulomb(out / f"{name}-analytic-peak.txt")
-                first.append(f"| {name} | {fmt(*get('first'), 3)} | {c0:.3f} (β = {b0:.1f}°) | "
-                             f"{cp:.3f} (β = {bp:.1f}°) | {fmt(*dem(d, 'early'))} |")
-                components.append(f"| {name} | " + " | ".join(
-                    f"{fmt(*get(f'window_{p}_{k}'))} / {fmt(*dem(d, f'window_{p}_{k}'))}"
-                    for k in range(2) for p in ("h", "v")) + " |")
+                (c0, b0), (cp, bp) = (
+                    coulomb(out / f"{name}-analytic.txt"),
+                    coulomb(out / f"{name}-analytic-peak.txt"),
+                )
+                first.append(
+                    f"| {name} | {fmt(*get('first'), 3)} | {c0:.3f} (β = {b0:.1f}°) | "
+                    f"{cp:.3f} (β = {bp:.1f}°) | {fmt(*dem(d, 'early'))} |"
+                )
+                components.append(
+                    f"| {name} | "
+                    + " | ".join(
+                        f"{fmt(*get(f'window_{p}_{k}'))} / {fmt(*dem(d, f'window_{p}_{k}'))}"
+                        for k in range(2)
+                        for p in ("h", "v")
+                    )
+                    + " |"
+                )
                 for at in AT:
                     key = f"{at:.2f}"
                     mechanism.append(
@@ -224,10 +270,15 @@ def main(out, campaign):
                         f"{fmt(dem(d, f'emergence_mm@{key}')[0] / depth, dem(d, f'emergence_mm@{key}')[1] / depth)} | "
                         f"{fmt(get(f'pile_height@{at}')[0] / depth, get(f'pile_height@{at}')[1] / depth)} / "
                         f"{fmt(dem(d, f'pile_height_mm@{key}')[0] / depth, dem(d, f'pile_height_mm@{key}')[1] / depth)} | "
-                        f"{fmt(*get(f'pile_slope@{at}'), 1)} / {fmt(*dem(d, f'pile_slope_deg@{key}'), 1)} |")
+                        f"{fmt(*get(f'pile_slope@{at}'), 1)} / {fmt(*dem(d, f'pile_slope_deg@{key}'), 1)} |"
+                    )
     print()
-    print("First force (P/(γ0 d²)): soilcut's first increment, Coulomb's wedge at the initial and the peak")
-    print("friction angle (a block rising along the face, φw = 20°), the DEM's mean over u in [0.05, 0.25] d:")
+    print(
+        "First force (P/(γ0 d²)): soilcut's first increment, Coulomb's wedge at the initial and the peak"
+    )
+    print(
+        "friction angle (a block rising along the face, φw = 20°), the DEM's mean over u in [0.05, 0.25] d:"
+    )
     print()
     print("| cut | soilcut first | Coulomb at φc | Coulomb at φp | DEM early |")
     print("|---|---|---|---|---|")
@@ -244,24 +295,50 @@ def main(out, campaign):
     print("| cut | u/d | β | emergence ahead of the tip | pile height | pile front slope |")
     print("|---|---|---|---|---|---|")
     print("\n".join(mechanism))
-    keys = [config_key({"name": "vertical", "ratio_d_over_D": 10.0, "slab_layers": 0, "run": "",
-                        "speed_m_per_s": v, "damping": c["damping"]}) for v in (0.04, 0.02, 0.01)]
-    speeds = [(f"{summary[key]['speed_m_per_s'] * 1e3:g} mm/s", summary[key]) for key in keys if key in summary]
+    keys = [
+        config_key(
+            {
+                "name": "vertical",
+                "ratio_d_over_D": 10.0,
+                "slab_layers": 0,
+                "run": "",
+                "speed_m_per_s": v,
+                "damping": c["damping"],
+            }
+        )
+        for v in (0.04, 0.02, 0.01)
+    ]
+    speeds = [
+        (f"{summary[key]['speed_m_per_s'] * 1e3:g} mm/s", summary[key])
+        for key in keys
+        if key in summary
+    ]
     if speeds and "vertical" in default:
         s = default["vertical"]
         print()
-        print("The vertical cut's mean force over [0, 0.5) d against the DEM blade's speed (DEM: mean ± sd over")
-        print("the seeds run at each speed, n in summarise.py's table), and soilcut's (element-test keys):")
+        print(
+            "The vertical cut's mean force over [0, 0.5) d against the DEM blade's speed (DEM: mean ± sd over"
+        )
+        print(
+            "the seeds run at each speed, n in summarise.py's table), and soilcut's (element-test keys):"
+        )
         print()
         print("| " + " | ".join(f"DEM at {label}" for label, _ in speeds) + " | soilcut |")
         print("|" + "---|" * (len(speeds) + 1))
-        print("| " + " | ".join(fmt(*dem(e, "half_0")) for _, e in speeds)
-              + f" | {fmt(*spread([n['half_0'] for n in s]))} |")
+        print(
+            "| "
+            + " | ".join(fmt(*dem(e, "half_0")) for _, e in speeds)
+            + f" | {fmt(*spread([n['half_0'] for n in s]))} |"
+        )
     print()
     if campaign == YARDSTICK:
-        print("The band crates/io/tests/validation.rs holds soilcut to (soilcut / DEM over [0, 1) d):")
+        print(
+            "The band crates/io/tests/validation.rs holds soilcut to (soilcut / DEM over [0, 1) d):"
+        )
     else:
-        print(f"The band against the {campaign} campaign (soilcut / DEM over [0, 1) d; not written:")
+        print(
+            f"The band against the {campaign} campaign (soilcut / DEM over [0, 1) d; not written:"
+        )
         print(f"the test holds soilcut to the {YARDSTICK} campaign's):")
     print()
     print("| cut | band | ensemble ratio |")
@@ -271,7 +348,9 @@ def main(out, campaign):
             mid = (b["low"] + b["high"]) / 2
             print(f"| {key[: -len('_window_0')]} | {b['low']:.2f}-{b['high']:.2f} | {mid:.2f} |")
     if campaign == YARDSTICK:
-        (ROOT / "validation" / "bands.json").write_text(json.dumps(bands, indent=1, sort_keys=True) + "\n")
+        (ROOT / "validation" / "bands.json").write_text(
+            json.dumps(bands, indent=1, sort_keys=True) + "\n"
+        )
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ the longest stay of the band at one location, far-band excursions, the band
 jump nearest each peak, the slope of the window means and, for a variant, its
 window means against the shipped run's.
 """
+
 import csv
 import json
 import sys
@@ -19,7 +20,10 @@ def load(run):
     run = Path(run)
     summary = json.loads((run / "summary.json").read_text())
     rows = list(csv.DictReader((run / "history.csv").open()))
-    col = lambda name: [float(r[name]) for r in rows]
+
+    def col(name):
+        return [float(r[name]) for r in rows]
+
     names = ("u_over_d", "force_norm", "beta_deg", "x_emergence", "u", "friction_deg")
     return summary, {k: col(k) for k in names}
 
@@ -80,8 +84,11 @@ def far_excursions(h, depth, far=4.0, brief=25):
 def initial_range(h, depth, until=0.5):
     """Least and largest β* for u/d < until, each with its emergence point's
     distance ahead of the blade (length)."""
-    rows = [(b, x - u) for v, b, x, u in zip(h["u_over_d"], h["beta_deg"], h["x_emergence"], h["u"])
-            if v < until]
+    rows = [
+        (b, x - u)
+        for v, b, x, u in zip(h["u_over_d"], h["beta_deg"], h["x_emergence"], h["u"])
+        if v < until
+    ]
     return min(rows), max(rows)
 
 
@@ -149,25 +156,35 @@ def main():
         means = " ".join(f"{m:.3f}" for m in window_means(h))
         stay, at = longest_stay(h, depth)
         far, furthest = far_excursions(h, depth)
-        print(f"{run}: initial {s['initial_force_norm']:.4f}; max {s['max_force_norm']:.2f} at u/d {s['u_over_d_at_max']:.2f}; "
-              f"peaks {peaks or 'none'}; band jumps {s['band_jumps']}; sheared_fraction {s['sheared_fraction']:.2f}; "
-              f"mass_drift_rel {s['mass_drift_rel']:.1e}; dilation_area {s['dilation_area']:.1f}; "
-              f"mean force per unit u/d [{means}]; beta swings (u/d<0.5) {beta_swings(h)}; "
-              f"longest stay {stay} increments from u/d {at:.2f}; brief far bands (>4 d ahead) {far}, furthest {furthest:.1f} d")
+        print(
+            f"{run}: initial {s['initial_force_norm']:.4f}; max {s['max_force_norm']:.2f} at u/d {s['u_over_d_at_max']:.2f}; "
+            f"peaks {peaks or 'none'}; band jumps {s['band_jumps']}; sheared_fraction {s['sheared_fraction']:.2f}; "
+            f"mass_drift_rel {s['mass_drift_rel']:.1e}; dilation_area {s['dilation_area']:.1f}; "
+            f"mean force per unit u/d [{means}]; beta swings (u/d<0.5) {beta_swings(h)}; "
+            f"longest stay {stay} increments from u/d {at:.2f}; brief far bands (>4 d ahead) {far}, furthest {furthest:.1f} d"
+        )
         (b0, x0), (b1, x1) = initial_range(h, depth)
-        print(f"  initial stage (u/d < 0.5): beta* from {b0:.1f} deg ({x0:.0f} ahead, {x0 / depth:.1f} d) to {b1:.1f} deg ({x1:.0f} ahead)")
+        print(
+            f"  initial stage (u/d < 0.5): beta* from {b0:.1f} deg ({x0:.0f} ahead, {x0 / depth:.1f} d) to {b1:.1f} deg ({x1:.0f} ahead)"
+        )
         stay = after_first_peak(s, h)
         if stay:
             n, near, x, (u0, f0, p0), (u1, f1, p1) = stay
-            print(f"  after the first peak: {near} of {n} increments emerge within 1 of x = {x}; "
-                  f"force {f0:.2f} at u/d {u0:.2f} to {f1:.2f} at u/d {u1:.2f}; band phi {p0:.1f} to {p1:.1f} deg")
+            print(
+                f"  after the first peak: {near} of {n} increments emerge within 1 of x = {x}; "
+                f"force {f0:.2f} at u/d {u0:.2f} to {f1:.2f} at u/d {u1:.2f}; band phi {p0:.1f} to {p1:.1f} deg"
+            )
         if s["peaks"]:
             parts = []
             for up, k, ahead, drop in peak_jumps(s, h, depth):
-                jump = ("no band jump" if k is None
-                        else f"nearest band jump {k:+d} increments, to {ahead:.1f} d ahead")
-                parts.append(f"u/d {up:.2f}: {jump}, "
-                             f"least force within 0.4 d after {100 * drop:+.0f} %")
+                jump = (
+                    "no band jump"
+                    if k is None
+                    else f"nearest band jump {k:+d} increments, to {ahead:.1f} d ahead"
+                )
+                parts.append(
+                    f"u/d {up:.2f}: {jump}, least force within 0.4 d after {100 * drop:+.0f} %"
+                )
             print("  at each peak: " + "; ".join(parts))
         slopes = " ".join(f"{d:.2f}" for d in window_slopes(window_means(h)))
         print(f"  slope of the window means (per d): {slopes}")

@@ -114,12 +114,8 @@ def mechanism():
         (mid[0] - 0.4 * r[0], mid[1] - 0.4 * r[1]),
         arrowprops={"arrowstyle": "->", "lw": 1.5, "color": ACCENT},
     )
-    ax.text(
-        mid[0] + 0.35, mid[1] - 0.45, "R at φ to the\nslip-line normal", color=ACCENT
-    )
-    ax.text(
-        1.75, -0.55, "dashed: other candidates\n(one per surface node)", color="grey"
-    )
+    ax.text(mid[0] + 0.35, mid[1] - 0.45, "R at φ to the\nslip-line normal", color=ACCENT)
+    ax.text(1.75, -0.55, "dashed: other candidates\n(one per surface node)", color="grey")
     title = "One candidate mechanism: block above the slip line A→j (§2)"
     sketch(ax, (-0.9, 2.6), (-1.3, 0.9), title)
     save(fig, "model_mechanism.png")
@@ -258,12 +254,8 @@ def laws():
     for name, phi, psi, up, ur in cases:
         a.plot(ut, law(ut, *phi, up, ur), label=name)
         b.plot(ut, law(ut, *psi, up, ur), label=name)
-    a.set(
-        xlabel="accumulated shear ut (mm)", ylabel="φ (degrees)", title="friction φ(ut)"
-    )
-    b.set(
-        xlabel="accumulated shear ut (mm)", ylabel="ψ (degrees)", title="dilation ψ(ut)"
-    )
+    a.set(xlabel="accumulated shear ut (mm)", ylabel="φ (degrees)", title="friction φ(ut)")
+    b.set(xlabel="accumulated shear ut (mm)", ylabel="ψ (degrees)", title="dilation ψ(ut)")
     b.axhline(0, color="grey", lw=0.6)
     a.legend(fontsize=8, frameon=False)
     for ax in (a, b):
@@ -286,9 +278,7 @@ def avalanche():
     pools = []
     for i in range(len(x)):
         pools.append([i, 1, w[i], w[i] * g[i]])
-        while (
-            len(pools) > 1 and pools[-2][3] / pools[-2][2] > pools[-1][3] / pools[-1][2]
-        ):
+        while len(pools) > 1 and pools[-2][3] / pools[-2][2] > pools[-1][3] / pools[-1][2]:
             top = pools.pop()
             pools[-1][1] += top[1]
             pools[-1][2] += top[2]
@@ -299,12 +289,8 @@ def avalanche():
             new[i] = wg / wsum - s * i
     fig, ax = plt.subplots(figsize=(7, 3))
     ax.fill_between(x, 0, np.minimum(y, new), color=GROUND, lw=0)
-    ax.fill_between(
-        x, new, y, where=y > new, color=ACCENT, alpha=0.5, lw=0, label="removed"
-    )
-    ax.fill_between(
-        x, y, new, where=new > y, color=BAND, lw=0, label="deposited (same area)"
-    )
+    ax.fill_between(x, new, y, where=y > new, color=ACCENT, alpha=0.5, lw=0, label="removed")
+    ax.fill_between(x, y, new, where=new > y, color=BAND, lw=0, label="deposited (same area)")
     ax.plot(x, y, "k:", lw=1, label="after the update")
     ax.plot(x, new, "k.-", ms=4, lw=1, label="relaxed: slope exactly θr")
     ax.legend(fontsize=8, frameon=False, loc="upper right")
@@ -341,9 +327,7 @@ def rake():
         ax.plot([lx0, lx1], [ly0, ly1], color=LINE, lw=1.8)
         ax.text(0.3, -d + 0.05, "β" if shear == 0 else "β'")
         sketch(ax, (-1.2, 2.4), (-1.5, 0.6), title)
-    b.text(
-        -1.1, -1.45, "tan β' = tan β / (1 + cot α tan β); areas unchanged", fontsize=9
-    )
+    b.text(-1.1, -1.45, "tan β' = tan β / (1 + cot α tan β); areas unchanged", fontsize=9)
     save(fig, "model_rake.png")
 
 

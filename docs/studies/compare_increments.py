@@ -10,6 +10,7 @@ Prints, for each summary figure, the median and 95th percentile of
 Spearman rank correlation between the two tables' values of the figure
 (1: the runs are ordered alike at both increments).
 """
+
 import csv
 import sys
 

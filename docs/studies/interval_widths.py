@@ -5,6 +5,7 @@ interval and its width, from the folders' fit.csv.
 
 Usage: python3 docs/studies/interval_widths.py FOLDER... [KEY=TRUTH ...]
 """
+
 import csv
 import sys
 
@@ -30,7 +31,9 @@ def main():
             name = folder.rstrip("/").split("/")[-1]
             best = f"{float(r['best']):.4f}"
             verdict = r["verdict"]
-            print(f"| `{key}` | {truth.get(key, '')} | {name} | {best} | {interval} | {width} | {verdict} |")
+            print(
+                f"| `{key}` | {truth.get(key, '')} | {name} | {best} | {interval} | {width} | {verdict} |"
+            )
 
 
 if __name__ == "__main__":

@@ -108,7 +108,9 @@ def write(results, version):
     ]
     for (case, ratio), r in results.items():
         means = " · ".join(f"{m:.2f} ± {s:.2f}" for m, s in r["windows"])
-        spill = "–" if ratio is None else f"{100 * r['spilled'][0]:.3f} ± {100 * r['spilled'][1]:.3f} %"
+        spill = (
+            "–" if ratio is None else f"{100 * r['spilled'][0]:.3f} ± {100 * r['spilled'][1]:.3f} %"
+        )
         lines.append(
             f"| {case} | {label(ratio)} | {means} | "
             f"{r['rise'][0]:.3f} ± {r['rise'][1]:.3f} | {spill} |"

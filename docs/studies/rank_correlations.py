@@ -8,6 +8,7 @@ average of their ranks) and the Pearson correlation of the ranks is printed
 as the Markdown table of docs/studies/README.md (rows: figures, columns: the
 varied keys).
 """
+
 import csv
 import math
 import sys

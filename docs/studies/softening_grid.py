@@ -33,7 +33,12 @@ GRIDS = [(100, 1), (100, 2), (100, 5), (100, 10), (200, 1), (200, 2), (200, 5)]
 def run(soilcut, folder, per_v0, per_h, sets):
     if not (folder / "history.csv").exists():
         cmd = [soilcut, "run", str(CASE), "--out", str(folder), "--force", "--quiet", "--no-plots"]
-        cmd += ["--set", f"run.increment={DEPTH / per_v0!r}", "--set", f"run.node_spacing={DEPTH / per_h!r}"]
+        cmd += [
+            "--set",
+            f"run.increment={DEPTH / per_v0!r}",
+            "--set",
+            f"run.node_spacing={DEPTH / per_h!r}",
+        ]
         for s in sets:
             cmd += ["--set", s]
         subprocess.run(cmd, check=True)
@@ -55,7 +60,10 @@ def main():
             means = window_means(folder)
             windows = " ".join(f"{(m / c - 1) * 100:+.2f}" for m, c in zip(means, converged))
             dev = deviation(means, converged)
-            print(f"| {name} | {per_h} | {k} | {dev:.2f} % | {windows} | {wall_time(folder):.2f} s |", flush=True)
+            print(
+                f"| {name} | {per_h} | {k} | {dev:.2f} % | {windows} | {wall_time(folder):.2f} s |",
+                flush=True,
+            )
 
 
 if __name__ == "__main__":

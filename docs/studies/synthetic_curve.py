@@ -12,6 +12,7 @@ Usage: python3 docs/studies/synthetic_curve.py RUN/history.csv OUT.csv \
 The first point is at u = travel / N (the first increment), the last at the
 run's final u.
 """
+
 import argparse
 import csv
 import random

@@ -111,10 +111,22 @@ def main():
             folder = run(a.soilcut, case, d, per_v0, per_h, runs / f"{name}-{per_v0}-{per_h}")
             dev = deviation(window_means(folder), converged)
             rows.append([name, scheme, per_v0, per_h, wall_time(folder), dev])
-            print(f"{name} {scheme} d/{per_v0} h=d/{per_h}: {dev:.2f} % in {wall_time(folder):.3f} s", file=sys.stderr)
+            print(
+                f"{name} {scheme} d/{per_v0} h=d/{per_h}: {dev:.2f} % in {wall_time(folder):.3f} s",
+                file=sys.stderr,
+            )
     with open(out / "runs.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["case", "scheme", "d_over_increment", "d_over_node_spacing", "wall_time_s", "max_window_deviation_pct"])
+        w.writerow(
+            [
+                "case",
+                "scheme",
+                "d_over_increment",
+                "d_over_node_spacing",
+                "wall_time_s",
+                "max_window_deviation_pct",
+            ]
+        )
         w.writerows(rows)
     (out / "table.md").write_text(table(rows))
     if a.clean:

@@ -1,5 +1,6 @@
 """soilcut: soil cutting by sequential limit analysis (Jin & Hambleton,
-"Simulation of the Cutting Process in Softening and Hardening Soils").
+"Simulation of the Cutting Process in Softening and Hardening Soils"). In
+short::
 
     import soilcut
     case = soilcut.Case.from_file("cases/paper/original.toml")

@@ -85,6 +85,12 @@ class Case:
         """A new case with several dotted keys set, in order:
         ``case.update({"run.increment": 0.2, "run.travel": 40})``."""
         pairs = list(changes.items() if isinstance(changes, Mapping) else changes)
+        for pair in pairs:
+            if not (isinstance(pair, tuple) and len(pair) == 2 and isinstance(pair[0], str)):
+                raise TypeError(
+                    "update: changes must be a mapping of dotted keys to values or "
+                    f"(key, value) pairs, got the item {pair!r}"
+                )
         return Case._from_native(self._native.set_keys(pairs))
 
     def to_toml(self) -> str:
@@ -144,7 +150,8 @@ class Case:
 
 def case_of(case: Case | PathLike) -> Case:
     """A :class:`Case` itself, or the case of a case file's path or text (a
-    path: ``os.PathLike``, or one line ending in ``.toml`` or naming a file)."""
+    path: ``os.PathLike``, or one line ending in ``.toml``, naming a file or
+    without ``=``, so that a mistyped path is a ``FileNotFoundError``)."""
     if isinstance(case, Case):
         return case
     return Case._from_native(_soilcut.NativeCase.of(case))

@@ -33,12 +33,18 @@ class StepError(ValueError):
     makes several); the simulation stands after the last of them. They
     are not pickled with the error (a record is a native object of this
     process).
+
+    ``result``, from :func:`soilcut.run`, is the run of those increments (a
+    :class:`soilcut.RunResult` whose ``summary["stopped"]`` says where and
+    why it stopped; ``save`` writes its folder as ``soilcut run`` keeps
+    it), or None when no increment was made or from another call.
     """
 
     def __init__(self, message: str, key: str | None = None, steps: list | None = None) -> None:
         super().__init__(message)
         self.key = key
         self.steps = [] if steps is None else steps
+        self.result = None
 
     def __reduce__(self):
         return (type(self), (str(self), self.key))

@@ -10,6 +10,7 @@ import numpy as np
 
 from . import _soilcut
 from ._case import Case, case_of, native_of
+from ._errors import StepError
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -108,9 +109,11 @@ class RunResult:
         """Writes the folder ``soilcut run`` writes: ``history.csv``,
         ``profile.csv``, ``summary.json``, ``case.resolved.toml``,
         ``frames.csv`` and, with ``pictures``, ``plots/`` and
-        ``animation.gif``. The files appear together or not at all. An
-        existing, non-empty folder is replaced only with ``force=True``
-        (else ``FileExistsError``). Returns the folder."""
+        ``animation.gif``, and the marker ``.soilcut``. The files appear
+        together or not at all. An existing, non-empty folder is replaced
+        only with ``force=True`` and only if soilcut wrote it (it holds
+        ``.soilcut``); else, or if ``folder`` is a file,
+        ``FileExistsError``. Returns the folder."""
         folder = pathlib.Path(folder)
         self._native.write(os.fspath(folder), force, pictures)
         return folder
@@ -167,8 +170,9 @@ class Ensemble:
         ``ensemble.csv``, ``summary.json``, each member's run folder and,
         with ``pictures``, ``plots/envelope.{png,svg}`` and the members'
         pictures. The files appear together or not at all; an existing,
-        non-empty folder is replaced only with ``force=True`` (else
-        ``FileExistsError``). Returns the folder."""
+        non-empty folder is replaced only with ``force=True`` and only if
+        soilcut wrote it (it holds ``.soilcut``; else ``FileExistsError``).
+        Returns the folder."""
         folder = pathlib.Path(folder)
         self._native.write(os.fspath(folder), force, pictures)
         return folder
@@ -194,8 +198,10 @@ def run(
 
     Raises :class:`soilcut.CaseError` for a case the model cannot simulate
     and :class:`soilcut.StepError` if an increment has no admissible
-    mechanism; warns with :class:`soilcut.AccuracyWarning` where the case's
-    grid is known to cost accuracy, as ``soilcut run`` warns on stderr.
+    mechanism (its ``result`` keeps the increments made before, marked as
+    stopped, as ``soilcut run`` keeps them); warns with
+    :class:`soilcut.AccuracyWarning` where the case's grid is known to cost
+    accuracy, as ``soilcut run`` warns on stderr.
     """
     the_case = case_of(case)
     if ensemble is not None:
@@ -207,4 +213,11 @@ def run(
         if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0:
             raise ValueError(f"jobs: expected an int >= 0 (0: one per core), got {jobs!r}")
         return Ensemble(the_case, _soilcut.ensemble(native_of(the_case), ensemble, jobs))
-    return RunResult(the_case, _soilcut.run(native_of(the_case)))
+    try:
+        return RunResult(the_case, _soilcut.run(native_of(the_case)))
+    except StepError as stopped:
+        records = getattr(stopped, "_records", None)
+        if records is not None:
+            stopped.result = RunResult(the_case, records)
+            del stopped._records
+        raise

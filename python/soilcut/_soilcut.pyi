@@ -109,7 +109,9 @@ class Simulation:
         (:meth:`advance_to` goes beyond it)."""
     def advance(self, n: int) -> int:
         """Advances by up to ``n`` increments without returning their
-        records; returns how many were made."""
+        records; returns how many were made. Raises ``ValueError`` for
+        ``n`` < 0 and ``TypeError`` for an ``n`` that is not a whole
+        number, naming the argument."""
     def advance_to(self, x: float, depth: float | None = None) -> list[Step]:
         """Runs the increments that bring the blade to displacement ``x``
         (length) and returns their records: up to the first whole increment
@@ -122,8 +124,9 @@ class Simulation:
         depth path ahead of the blade is replaced (vertical blades only;
         deeper than ``run.increment`` and the band width, no deeper than
         the case's deepest tip depth, which sets the ground the simulation
-        holds). ``sim.case`` shows the steered case. Raises ``ValueError``
-        for a bad ``x`` (NaN, negative, behind the blade's last whole
+        holds). ``sim.case`` shows the steered case. Raises ``TypeError``
+        naming the argument for an ``x`` or ``depth`` that is not a number,
+        ``ValueError`` for a bad ``x`` (NaN, negative, behind the blade's last whole
         increment) or ``depth``, :class:`soilcut.CaseError` if the steered
         case does not validate (nothing changes then) and
         :class:`soilcut.StepError` if an increment has no admissible
@@ -146,6 +149,9 @@ class Simulation:
         """An independent copy of the state (``copy.copy`` and
         ``copy.deepcopy`` alike: a simulation shares nothing)."""
     def __deepcopy__(self, _memo: Any) -> Simulation: ...
+    def __repr__(self) -> str:
+        """The case's name, the increments done of all, the blade's
+        position and the tip's depth."""
     def __reduce__(self) -> tuple[Any, tuple[bytes]]:
         """Pickles as :meth:`snapshot`, unpickles by :meth:`from_snapshot`."""
     def surface(self) -> dict[str, np.ndarray]:

@@ -146,6 +146,12 @@ class FitResult:
 
 
 def _measured(measured: Any) -> list[tuple[float, float]]:
+    if isinstance(measured, (str, bytes, os.PathLike)):
+        raise TypeError(
+            "measured: expected the curve's numbers (a DataFrame with columns u, force, a "
+            f"tuple (u, force) or an N×2 array), not a path ({measured!r}): read the file "
+            "first, e.g. pandas.read_csv(path)"
+        )
     if hasattr(measured, "columns") and "u" in measured.columns and "force" in measured.columns:
         u, p = measured["u"], measured["force"]
     elif isinstance(measured, tuple) and len(measured) == 2:
@@ -161,6 +167,13 @@ def _measured(measured: Any) -> list[tuple[float, float]]:
     u, p = np.asarray(u, dtype=float), np.asarray(p, dtype=float)
     if u.shape != p.shape or u.ndim != 1:
         raise ValueError("measured: u and force must be 1-D arrays of one length")
+    for name, values in (("u", u), ("force", p)):
+        bad = np.flatnonzero(~np.isfinite(values))
+        if bad.size:
+            raise ValueError(
+                f"measured: {name}[{bad[0]}] is {values[bad[0]]}: every value must be a "
+                "finite number"
+            )
     return list(zip(u.tolist(), p.tolist()))
 
 

@@ -27,7 +27,7 @@ except ImportError as error:  # the package stays usable without it
         "soilcut.gym needs gymnasium, an optional dependency: pip install gymnasium"
     ) from error
 
-from ._case import Case
+from ._case import Case, PathLike, case_of
 from ._errors import StepError
 from ._soilcut import Simulation, Step
 
@@ -157,7 +157,7 @@ class CuttingEnv(gymnasium.Env):
 
     def __init__(
         self,
-        case: Case | None = None,
+        case: Case | PathLike | None = None,
         *,
         travel: float | None = None,
         step_travel: float = 0.1,
@@ -169,7 +169,8 @@ class CuttingEnv(gymnasium.Env):
         failure_penalty: float = 1.0,
         offsets: Sequence[float] = (0.25, 0.5, 1.0, 1.5, 2.0, 3.0),
     ) -> None:
-        """The environment for ``case`` (a vertical blade; by default
+        """The environment for ``case`` (a vertical blade, as a
+        :class:`Case` or a case file's path or text; by default
         :func:`default_case`). Lengths are in units of d = ``blade.depth``:
         ``travel`` (the episode's; None: the case's ``run.travel``),
         ``step_travel``, ``depth_range`` (the depths the tip may be
@@ -182,7 +183,7 @@ class CuttingEnv(gymnasium.Env):
         out of range, :class:`soilcut.CaseError` (a ``ValueError``) for a
         ``depth_range`` too shallow for the case (its lower end must exceed
         ``run.increment`` and the band width)."""
-        self.case = default_case() if case is None else case
+        self.case = default_case() if case is None else case_of(case)
         resolved = self.case.resolved()
         if resolved["blade.rake"] != 90.0:
             raise ValueError("CuttingEnv steers the tip's depth, which needs blade.rake = 90")
@@ -255,7 +256,13 @@ class CuttingEnv(gymnasium.Env):
             raise RuntimeError("call reset() before step()")
         if self._ended:
             raise RuntimeError("the episode has ended: call reset()")
-        rate = float(np.asarray(action, dtype=float).reshape(-1)[0])
+        given = np.asarray(action, dtype=float)
+        if given.shape not in ((1,), ()):
+            raise ValueError(
+                f"action: expected one depth rate (shape (1,), as action_space), got shape "
+                f"{given.shape}"
+            )
+        rate = float(given.reshape(-1)[0])
         if math.isnan(rate):
             raise ValueError("the action (a depth rate) is NaN")
         bound = float(self.action_space.high[0])

@@ -76,6 +76,8 @@ CLI_ERRORS = [
     ("soil.d50", 0.6, "soil.d50=0.6"),
     ("run.increment", 30, "run.increment=30"),
     ("choices.face_friction", "smooth", 'choices.face_friction="smooth"'),
+    ("run.increment", "abc", "run.increment=abc"),
+    ("run.increment", True, "run.increment=true"),
 ]
 
 
@@ -90,6 +92,14 @@ def test_errors_are_case_errors_with_the_cli_message(cli, original, key, value, 
     assert done.stderr == f"error: --set {cli_set}: {raised.value}\n"
     assert isinstance(raised.value, ValueError)
     assert raised.value.key is not None and str(raised.value).startswith(raised.value.key)
+
+
+def test_a_value_of_the_wrong_type_is_named_in_the_case_files_words(original):
+    with pytest.raises(soilcut.CaseError) as raised:
+        original.set("run.increment", "abc")
+    assert str(raised.value) == 'run.increment: expected a number, got the string "abc"'
+    with pytest.raises(soilcut.CaseError, match="expected a number, got the boolean true$"):
+        original.set("run.increment", True)
 
 
 def test_a_value_python_cannot_express_in_toml_names_the_key(original):
@@ -131,6 +141,11 @@ def test_a_path_is_taken_where_a_case_is(original, tmp_path):
     # A one-line string ending in .toml is a path even if it names no file.
     with pytest.raises(FileNotFoundError):
         soilcut.Simulation(str(tmp_path / "missing.toml"))
+    # A one-line string without "=" is no case's text: a path, even without .toml.
+    with pytest.raises(FileNotFoundError):
+        soilcut.run(str(tmp_path / "missing"))
+    with pytest.raises(TypeError, match=r"^update: changes must be .* got the item 1$"):
+        original.update([1, 2])
     # The text itself is still the text.
     assert soilcut.Simulation(short.to_toml()).case == short
 

@@ -175,6 +175,16 @@ def test_bad_arguments_raise():
     env.reset(seed=0)
     with pytest.raises(ValueError, match="NaN"):
         env.step(np.array([np.nan]))
+    with pytest.raises(ValueError, match=r"^action: expected one depth rate .* shape \(2,\)$"):
+        env.step(np.array([0.1, 0.2]))
+
+
+def test_a_case_files_path_is_taken_where_a_case_is(tmp_path):
+    path = tmp_path / "tine.toml"
+    path.write_text(short().case.to_toml(), encoding="utf-8")
+    for given in (path, str(path)):
+        env = CuttingEnv(given, travel=1.0, step_travel=0.2)
+        assert env.case == short().case
 
 
 def test_import_soilcut_gym_without_gymnasium_names_the_pip_command():

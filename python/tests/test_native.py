@@ -62,6 +62,22 @@ def test_a_failed_advance_keeps_its_records(original):
     assert steps[-1].u == pytest.approx(sim.blade_position - inc)
 
 
+def test_bad_arguments_name_themselves_and_the_simulation_has_a_repr(original):
+    sim = soilcut.Simulation(original.set("run.travel", 1))
+    with pytest.raises(ValueError, match=r"^advance: n must be a whole number >= 0 .*got -1$"):
+        sim.advance(-1)
+    with pytest.raises(TypeError, match="^advance_to: x must be a number .*not str$"):
+        sim.advance_to("40")
+    with pytest.raises(TypeError, match="^advance_to: depth must be a number"):
+        sim.advance_to(1, depth="deep")
+    assert sim.steps_done == 0
+    sim.advance(2)
+    assert repr(sim) == (
+        f'Simulation("original": 2 of {sim.steps} increments, u = {sim.blade_position}, '
+        f"tip depth {sim.tip_depth})"
+    )
+
+
 def test_sweep_tuples_obey_the_spec_rules(original):
     case = original.set("run.travel", 1)
     for spec, words in [

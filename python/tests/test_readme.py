@@ -1,4 +1,5 @@
-"""The README's Python runs as written (issue 29): its ``python`` blocks in
+"""The README's and the user guide's Python runs as written (issue 29,
+issue 41): their ``python`` blocks in
 order, in one namespace (a later block uses the ``case`` of an earlier
 one), and its ``python -c`` commands, from a folder holding a copy of the
 repository's cases, so that what they write lands there.
@@ -18,7 +19,21 @@ from conftest import ROOT
 pytest.importorskip("pandas")
 pytest.importorskip("gymnasium")
 
-README = (ROOT / "README.md").read_text(encoding="utf-8")
+
+def documents() -> str:
+    """The README, then the user guide's chapters in the order of
+    docs/guide/index.md's table of contents (as crates/cli/tests/readme.rs
+    reads them): the examples run in that order."""
+    guide = ROOT / "docs" / "guide"
+    toctree = (guide / "index.md").read_text(encoding="utf-8").split("```{toctree}")[1]
+    entries = [e.strip() for e in toctree.split("```")[0].splitlines()]
+    chapters = [e for e in entries if e and not e.startswith((":", "/"))]
+    texts = [(ROOT / "README.md").read_text(encoding="utf-8")]
+    texts += [(guide / f"{c}.md").read_text(encoding="utf-8") for c in chapters]
+    return "\n".join(texts)
+
+
+README = documents()
 
 
 def blocks(language: str) -> list[str]:
@@ -49,6 +64,8 @@ def test_the_python_blocks_run_in_order(sandbox):
     for block in blocks("python"):
         exec(compile(block, "README.md", "exec"), namespace)
     assert (sandbox / "out" / "original-py" / "history.csv").is_file()
+    # A user runs the first block again: it replaces what it wrote.
+    exec(compile(blocks("python")[0], "README.md", "exec"), {})
 
 
 def test_the_python_commands_run(sandbox):

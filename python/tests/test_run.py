@@ -69,6 +69,36 @@ def test_save_refuses_an_occupied_folder(tmp_path, original):
     result.save(tmp_path / "a", pictures=False, force=True)
 
 
+def test_force_replaces_only_a_folder_soilcut_wrote(tmp_path, original):
+    result = soilcut.run(original.set("run.travel", 1))
+    notes = tmp_path / "notes.txt"
+    notes.write_text("mine")
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("mine")
+    with pytest.raises(FileExistsError, match="not a folder"):
+        result.save(notes, pictures=False, force=True)
+    with pytest.raises(FileExistsError, match="soilcut did not write it"):
+        result.save(mine, pictures=False, force=True)
+    assert notes.read_text() == "mine" and (mine / "notes.txt").read_text() == "mine"
+
+
+def test_a_run_that_stops_keeps_its_increments(tmp_path, original):
+    # A bin two increments longer than the travel: the last increments find
+    # no mechanism before the wall.
+    inc, d = original["run.increment"], original["blade.depth"]
+    case = original.update({"run.travel": 4 * d, "bin.length": 4 * d + 2 * inc})
+    with pytest.raises(soilcut.StepError, match="bin.length") as raised:
+        soilcut.run(case)
+    result = raised.value.result
+    stopped = result.summary["stopped"]
+    assert stopped["increment"] == result.summary["steps"] + 1 == len(result.history["step"]) + 1
+    assert "bin.length" in stopped["reason"]
+    saved = result.save(tmp_path / "r", pictures=False)
+    assert json.loads((saved / "summary.json").read_text())["stopped"] == stopped
+    assert "stopped" not in soilcut.run(original.set("run.travel", 1)).summary
+
+
 def test_arrays_are_the_files_numbers(tmp_path, refined):
     result = soilcut.run(refined)
     saved = result.save(tmp_path / "r", pictures=False)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import concurrent.futures
 import math
 
+import numpy as np
 import pytest
 from conftest import ROOT, run_cli
 
@@ -217,6 +218,15 @@ def test_fit_width_divides_the_measured_force(refined):
     assert total.start_rms < 1e-12
     with pytest.raises(ValueError, match="width"):
         soilcut.fit(case, (truth["u"], truth["force"]), ["soil.friction.peak"], width=0)
+
+
+def test_fit_names_a_path_and_a_nan_in_the_measured_curve(refined):
+    free = ["soil.friction.peak"]
+    with pytest.raises(TypeError, match=r"^measured: .* not a path \('measured.csv'\)"):
+        soilcut.fit(refined, "measured.csv", free)
+    force = np.array([1.0, math.nan, 3.0])
+    with pytest.raises(ValueError, match=r"^measured: force\[1\] is nan: every value must be"):
+        soilcut.fit(refined, (np.array([0.0, 1.0, 2.0]), force), free)
 
 
 def test_analytic_baselines_are_the_closed_forms(original, cli):

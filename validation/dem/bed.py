@@ -16,7 +16,7 @@ import math
 import sys
 import time
 
-sys.path.insert(0, __import__('os').path.dirname(__import__('os').path.abspath(sys.argv[0])))
+sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(sys.argv[0])))
 import grains as g  # noqa: E402
 import yade  # noqa: E402
 from yade import O, utils  # noqa: E402
@@ -36,13 +36,24 @@ def main():
     hz = g.half_z()
     length = X_END - X_START
     top = 2.2 * HEIGHT / 0.58  # the lattice's height: the packed bed is ~0.58 of it
-    floor = O.bodies.append(utils.box(((X_START + X_END) / 2, -g.RADIUS, 0),
-                                      (length / 2 + 2 * g.RADIUS, g.RADIUS, hz),
-                                      fixed=True, material=grain))
-    left = O.bodies.append(utils.box((X_START - g.RADIUS, top / 2, 0), (g.RADIUS, top / 2, hz),
-                                     fixed=True, material=wall))
-    right = O.bodies.append(utils.box((X_END + g.RADIUS, top / 2, 0), (g.RADIUS, top / 2, hz),
-                                      fixed=True, material=wall))
+    floor = O.bodies.append(
+        utils.box(
+            ((X_START + X_END) / 2, -g.RADIUS, 0),
+            (length / 2 + 2 * g.RADIUS, g.RADIUS, hz),
+            fixed=True,
+            material=grain,
+        )
+    )
+    left = O.bodies.append(
+        utils.box(
+            (X_START - g.RADIUS, top / 2, 0), (g.RADIUS, top / 2, hz), fixed=True, material=wall
+        )
+    )
+    right = O.bodies.append(
+        utils.box(
+            (X_END + g.RADIUS, top / 2, 0), (g.RADIUS, top / 2, hz), fixed=True, material=wall
+        )
+    )
     sides = g.side_walls(O, utils, X_START, X_END, top, wall)
     rows = int(math.ceil(1.1 * HEIGHT / 0.58 / (g.PITCH * g.RADIUS)))
     for c, r in g.rain_cloud(X_START, X_END, g.RADIUS * 1.3, rows, g.SEED):
@@ -60,21 +71,29 @@ def main():
     gamma, solid = g.area_weight(O, 0.0, X_END - 0.02, 0.004, HEIGHT - 0.004)
     ground = g.surface(O, 0.0, X_END, 2 * g.RADIUS)
     level = sum(y for _, y in ground) / len(ground)
-    O.save(g.path('beds', 'bed_%s.yade.gz' % g.tag()))
+    O.save(g.path("beds", f"bed_{g.tag()}.yade.gz"))
     summary = {
-        'wall_time_s': time.time() - START,
-        'yade_version': yade.config.version if hasattr(yade, 'config') else 'unknown',
-        'seed': g.SEED, 'ratio_d_over_D': g.RATIO, 'slab_layers': g.SLAB,
-        'thickness_m': g.THICKNESS, 'mean_diameter_m': 2 * g.RADIUS,
-        'grains': sum(1 for b in O.bodies if b.dynamic),
-        'steps': steps, 'dt_s': O.dt,
-        'unit_weight_N_per_m3': gamma,
-        'solid_fraction': solid,
-        'surface_level_m': level,
-        'x_start_m': X_START, 'x_end_m': X_END,
-        'floor_id': floor, 'end_wall_id': right, 'start_wall_id': left, 'side_wall_ids': sides,
+        "wall_time_s": time.time() - START,
+        "yade_version": yade.config.version if hasattr(yade, "config") else "unknown",
+        "seed": g.SEED,
+        "ratio_d_over_D": g.RATIO,
+        "slab_layers": g.SLAB,
+        "thickness_m": g.THICKNESS,
+        "mean_diameter_m": 2 * g.RADIUS,
+        "grains": sum(1 for b in O.bodies if b.dynamic),
+        "steps": steps,
+        "dt_s": O.dt,
+        "unit_weight_N_per_m3": gamma,
+        "solid_fraction": solid,
+        "surface_level_m": level,
+        "x_start_m": X_START,
+        "x_end_m": X_END,
+        "floor_id": floor,
+        "end_wall_id": right,
+        "start_wall_id": left,
+        "side_wall_ids": sides,
     }
-    with open(g.path('results', 'beds', 'bed_%s.json' % g.tag()), 'w') as f:
+    with open(g.path("results", "beds", f"bed_{g.tag()}.json"), "w") as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary), flush=True)
 

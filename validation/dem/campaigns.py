@@ -14,6 +14,7 @@ YARDSTICK is the campaign soilcut's keys (cases/validation/), the
 validation test's bands (validation/bands.json) and docs/validation.md's
 tables come from: `damp0` since issue 31.
 """
+
 import sys
 from pathlib import Path
 
@@ -22,9 +23,20 @@ RESULTS = Path(__file__).resolve().parent / "results"
 CAMPAIGNS = {
     # cuts, element: folders of results/; speed (m/s) and damping of the cuts
     # compared with soilcut; suffix: of this campaign's output files.
-    "reference": {"cuts": "cuts", "element": "element", "speed": 0.04, "damping": 0.2, "suffix": ""},
-    "damp0": {"cuts": "damp0", "element": "element_damp0", "speed": 0.02, "damping": 0.0,
-              "suffix": "_damp0"},
+    "reference": {
+        "cuts": "cuts",
+        "element": "element",
+        "speed": 0.04,
+        "damping": 0.2,
+        "suffix": "",
+    },
+    "damp0": {
+        "cuts": "damp0",
+        "element": "element_damp0",
+        "speed": 0.02,
+        "damping": 0.0,
+        "suffix": "_damp0",
+    },
 }
 YARDSTICK = "damp0"
 
@@ -34,33 +46,47 @@ def config_key(meta):
     and the numerical settings that differ from the defaults (as in the run names)."""
     settings = ""
     if meta.get("damping", 0.2) != 0.2:
-        settings += "_damp%g" % meta["damping"]
+        settings += "_damp{:g}".format(meta["damping"])
     if not meta.get("damp_gravity", True):
         settings += "_undampedg"
     if meta.get("young_Pa", 5.0e5) != 5.0e5:
-        settings += "_E%g" % meta["young_Pa"]
+        settings += "_E{:g}".format(meta["young_Pa"])
     if meta.get("dt_factor", 0.5) != 0.5:
-        settings += "_dt%g" % meta["dt_factor"]
-    return "%s_r%g%s%s%s%s" % (meta["name"], meta["ratio_d_over_D"],
-                               "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
-                               "_short" if "_short" in meta["run"] else "",
-                               "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3),
-                               settings)
+        settings += "_dt{:g}".format(meta["dt_factor"])
+    return "{}_r{:g}{}{}{}{}".format(
+        meta["name"],
+        meta["ratio_d_over_D"],
+        f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
+        "_short" if "_short" in meta["run"] else "",
+        "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3),
+        settings,
+    )
 
 
 def compared_key(name, campaign):
     """The configuration of cut `name` that a campaign compares with soilcut
     (d/D = 10, monolayer, full bin, the campaign's speed and damping)."""
     c = CAMPAIGNS[campaign]
-    return config_key({"name": name, "ratio_d_over_D": 10.0, "slab_layers": 0, "run": "",
-                       "speed_m_per_s": c["speed"], "damping": c["damping"]})
+    return config_key(
+        {
+            "name": name,
+            "ratio_d_over_D": 10.0,
+            "slab_layers": 0,
+            "run": "",
+            "speed_m_per_s": c["speed"],
+            "damping": c["damping"],
+        }
+    )
 
 
 def bed_tag(meta):
     """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short]."""
-    return "r%g_s%d%s%s" % (meta["ratio_d_over_D"], meta["seed"],
-                            "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
-                            "_short" if "_short" in meta["run"] else "")
+    return "r{:g}_s{:d}{}{}".format(
+        meta["ratio_d_over_D"],
+        meta["seed"],
+        f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
+        "_short" if "_short" in meta["run"] else "",
+    )
 
 
 def campaign_option(argv, default="reference"):
@@ -69,7 +95,7 @@ def campaign_option(argv, default="reference"):
     if "--campaign" in argv:
         i = argv.index("--campaign")
         name = argv[i + 1]
-        del argv[i:i + 2]
+        del argv[i : i + 2]
     if name not in CAMPAIGNS:
         sys.exit("--campaign must be one of " + ", ".join(CAMPAIGNS))
     return name

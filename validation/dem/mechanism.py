@@ -28,6 +28,7 @@ at u). Definitions, stated before any cut was compared with soilcut:
   20 % of its height above the level;
 - `block_ratio`: the block's mean r (1: it moves with the blade).
 """
+
 import csv
 import json
 import math
@@ -35,7 +36,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
 from campaigns import CAMPAIGNS, bed_tag, campaign_option
 
 HERE = Path(__file__).resolve().parent
@@ -63,10 +63,10 @@ def pile(ground, tip_x, face_x):
 
 
 def interval(meta, p0, p1, du, tip_x, ground):
-    d = meta['depth_mm'] * 1e-3
-    D = meta['mean_diameter_m']
-    level = meta['surface_level_m']
-    cot = 1.0 / math.tan(math.radians(meta['rake_deg']))
+    d = meta["depth_mm"] * 1e-3
+    D = meta["mean_diameter_m"]
+    level = meta["surface_level_m"]
+    cot = 1.0 / math.tan(math.radians(meta["rake_deg"]))
     tip_y = level - d
     ok = ~np.isnan(p0[:, 0]) & ~np.isnan(p1[:, 0])
     x, y = p1[ok, 0], p1[ok, 1]
@@ -111,11 +111,19 @@ def interval(meta, p0, p1, du, tip_x, ground):
         lo = crossing(centres, means, 0.2 * inside)
         if hi is not None and lo is not None and lo > hi:
             thickness = (lo - hi) / 0.6
-    height, pile_ahead, slope = pile([(q[0] * 1e-3, q[1] * 1e-3) for q in ground], tip_x,
-                                     tip_x - d * cot)
+    height, pile_ahead, slope = pile(
+        [(q[0] * 1e-3, q[1] * 1e-3) for q in ground], tip_x, tip_x - d * cot
+    )
     block = ahead & (dist < -3 * D) & (y >= tip_y) & (y <= top_at)
-    return (beta, emergence * 1e3, thickness * 1e3, height * 1e3, pile_ahead * 1e3, slope,
-            float(r[block].mean()) if block.any() else math.nan)
+    return (
+        beta,
+        emergence * 1e3,
+        thickness * 1e3,
+        height * 1e3,
+        pile_ahead * 1e3,
+        slope,
+        float(r[block].mean()) if block.any() else math.nan,
+    )
 
 
 def crossing(x, v, level):
@@ -128,45 +136,50 @@ def crossing(x, v, level):
     return None
 
 
-def analyse(run, campaign='reference'):
-    folder = HERE / 'results' / CAMPAIGNS[campaign]['cuts']
-    meta = json.loads((folder / (run + '.json')).read_text())
-    bed = json.loads((HERE / 'results' / 'beds' / ('bed_%s.json' % bed_tag(meta))).read_text())
-    meta['surface_level_m'] = bed['surface_level_m']
-    f = np.load(HERE / 'fields' / (run + '.npz'))
-    u, pos = f['u'], f['pos']
+def analyse(run, campaign="reference"):
+    folder = HERE / "results" / CAMPAIGNS[campaign]["cuts"]
+    meta = json.loads((folder / (run + ".json")).read_text())
+    bed = json.loads((HERE / "results" / "beds" / (f"bed_{bed_tag(meta)}.json")).read_text())
+    meta["surface_level_m"] = bed["surface_level_m"]
+    f = np.load(HERE / "fields" / (run + ".npz"))
+    u, pos = f["u"], f["pos"]
     grounds = {}
-    with open(folder / (run + '_surface.csv')) as fh:
+    with open(folder / (run + "_surface.csv")) as fh:
         for row in csv.DictReader(fh):
-            grounds.setdefault(round(float(row['u_over_d']), 2), []).append(
-                (float(row['x_mm']), float(row['y_mm'])))
-    d = meta['depth_mm'] * 1e-3
+            grounds.setdefault(round(float(row["u_over_d"]), 2), []).append(
+                (float(row["x_mm"]), float(row["y_mm"]))
+            )
+    d = meta["depth_mm"] * 1e-3
     out = []
     for k in range(1, len(u)):
         s = round(u[k] / d / 0.25) * 0.25
         ground = grounds.get(round(s, 2)) or grounds[min(grounds, key=lambda v: abs(v - s))]
         row = interval(meta, pos[k - 1], pos[k], u[k] - u[k - 1], u[k], ground)
         out.append((u[k] / d,) + row)
-    path = HERE / 'results' / 'mechanism' / (run + '.csv')
+    path = HERE / "results" / "mechanism" / (run + ".csv")
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, 'w') as fh:
-        fh.write('u_over_d,beta_deg,emergence_mm,band_thickness_mm,pile_height_mm,pile_ahead_mm,'
-                 'pile_slope_deg,block_ratio\n')
+    with open(path, "w") as fh:
+        fh.write(
+            "u_over_d,beta_deg,emergence_mm,band_thickness_mm,pile_height_mm,pile_ahead_mm,"
+            "pile_slope_deg,block_ratio\n"
+        )
         for r in out:
-            fh.write(','.join('%.4g' % v for v in r) + '\n')
+            fh.write(",".join(f"{v:.4g}" for v in r) + "\n")
     return out
 
 
 def main():
     campaign = campaign_option(sys.argv)
     for run in sys.argv[1:]:
-        if not (HERE / 'fields' / (run + '.npz')).exists():
-            print('%s: no grain field fields/%s.npz (not committed; rerun the cut to make it)'
-                  % (run, run), file=sys.stderr)
+        if not (HERE / "fields" / (run + ".npz")).exists():
+            print(
+                f"{run}: no grain field fields/{run}.npz (not committed; rerun the cut to make it)",
+                file=sys.stderr,
+            )
             continue
         for r in analyse(run, campaign):
-            print(run, ' '.join('%.3g' % v for v in r))
+            print(run, " ".join(f"{v:.3g}" for v in r))
 
 
-if __name__ == '__main__':
+if __name__ == "__main__":
     main()

@@ -49,6 +49,7 @@ compression positive, gamma = eps_1 - eps_3, eps_v = eps_1 + eps_3):
 - repose: the heap test (results/repose.json); the DEM pile's own front
   slope is reported beside it (docs/validation.md).
 """
+
 import csv
 import json
 import math
@@ -56,7 +57,16 @@ import statistics
 import sys
 from pathlib import Path
 
-from campaigns import CAMPAIGNS, RESULTS as HERE, YARDSTICK, campaign_option, compared_key, config_key
+from campaigns import (
+    CAMPAIGNS,
+    YARDSTICK,
+    campaign_option,
+    compared_key,
+    config_key,
+)
+from campaigns import (
+    RESULTS as HERE,
+)
 
 D50 = 2.0  # mean grain diameter (mm) at d/D = 10
 WALL_FRICTION = 20.0  # blade-grain contact friction (degrees), set in grains.py
@@ -141,7 +151,10 @@ def band_width(campaign):
     campaign at its speed (the cuts whose mechanism has been measured), and the
     number of intervals."""
     values = []
-    runs = [json.loads(p.read_text()) for p in sorted((HERE / CAMPAIGNS[campaign]["cuts"]).glob("*.json"))]
+    runs = [
+        json.loads(p.read_text())
+        for p in sorted((HERE / CAMPAIGNS[campaign]["cuts"]).glob("*.json"))
+    ]
     for meta in runs:
         path = HERE / "mechanism" / (meta["run"] + ".csv")
         if config_key(meta) != compared_key("vertical", campaign) or not path.exists():
@@ -167,18 +180,26 @@ def main(campaign, cases):
     if band is None and campaign != "reference":
         band, n = band_width("reference")
         band_from = "reference"
-    print("| σ3 (Pa) | solid fraction | E (kPa) | ν | εv/ε1 first | φc | ψc | φp | ψp | γp | φr (noise) | ψr | γr | drift of φr |")
+    print(
+        "| σ3 (Pa) | solid fraction | E (kPa) | ν | εv/ε1 first | φc | ψc | φp | ψp | γp | φr (noise) | ψr | γr | drift of φr |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s, t in sorted(tests.items()):
-        solid = json.loads((element / f"biaxial_{s:g}.json").read_text())["solid_fraction_before_shear"]
-        print(f"| {s:g} | {solid:.3f} | {t['young_Pa'] / 1e3:.0f} | {t['poisson']:.2f} | {t['eps_v_first_over_eps_1']:.2f} | "
-              f"{t['phi_c']:.1f} | {t['psi_c']:.1f} | {t['phi_p']:.1f} | {t['psi_p']:.1f} | {t['gamma_p']:.3f} | "
-              f"{t['phi_r']:.1f} (± {t['noise_deg']:.1f}) | {t['psi_r']:.1f} | {t['gamma_r']:.3f} | {t['drift_deg']:+.1f} |")
+        solid = json.loads((element / f"biaxial_{s:g}.json").read_text())[
+            "solid_fraction_before_shear"
+        ]
+        print(
+            f"| {s:g} | {solid:.3f} | {t['young_Pa'] / 1e3:.0f} | {t['poisson']:.2f} | {t['eps_v_first_over_eps_1']:.2f} | "
+            f"{t['phi_c']:.1f} | {t['psi_c']:.1f} | {t['phi_p']:.1f} | {t['psi_p']:.1f} | {t['gamma_p']:.3f} | "
+            f"{t['phi_r']:.1f} (± {t['noise_deg']:.1f}) | {t['psi_r']:.1f} | {t['gamma_r']:.3f} | {t['drift_deg']:+.1f} |"
+        )
     keys = {}
     for name, (depth, _) in CUTS.items():
         sigma = bed["unit_weight_N_per_m3"] * depth * 1e-3 / 2
-        k = {key: interpolate(tests, sigma, key) for key in
-             ("phi_c", "psi_c", "phi_p", "psi_p", "gamma_p", "phi_r", "psi_r", "gamma_r")}
+        k = {
+            key: interpolate(tests, sigma, key)
+            for key in ("phi_c", "psi_c", "phi_p", "psi_p", "gamma_p", "phi_r", "psi_r", "gamma_r")
+        }
         k["sigma_Pa"] = sigma
         if band is not None:
             width = min(band, 0.9 * depth)
@@ -188,15 +209,23 @@ def main(campaign, cases):
         k["repose"] = repose
         keys[name] = k
     print()
-    print(f"band width dB = {band if band is None else round(band, 2)} mm (mean of {n} intervals"
-          + ("" if band_from == campaign else f" of the {band_from} campaign's cuts: no mechanism of the {campaign} cuts")
-          + f"), repose {repose:.1f}°, wall friction {WALL_FRICTION:g}° (set)")
+    print(
+        f"band width dB = {band if band is None else round(band, 2)} mm (mean of {n} intervals"
+        + (
+            ""
+            if band_from == campaign
+            else f" of the {band_from} campaign's cuts: no mechanism of the {campaign} cuts"
+        )
+        + f"), repose {repose:.1f}°, wall friction {WALL_FRICTION:g}° (set)"
+    )
     print("| cut | σ* (Pa) | φc | φp | φr | ψc | ψp | ψr | up (mm) | ur (mm) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for name, k in keys.items():
-        print(f"| {name} | {k['sigma_Pa']:.0f} | {k['phi_c']:.1f} | {k['phi_p']:.1f} | {k['phi_r']:.1f} | "
-              f"{k['psi_c']:.1f} | {k['psi_p']:.1f} | {k['psi_r']:.1f} | "
-              f"{k.get('peak_shear_mm', math.nan):.2f} | {k.get('residual_shear_mm', math.nan):.2f} |")
+        print(
+            f"| {name} | {k['sigma_Pa']:.0f} | {k['phi_c']:.1f} | {k['phi_p']:.1f} | {k['phi_r']:.1f} | "
+            f"{k['psi_c']:.1f} | {k['psi_p']:.1f} | {k['psi_r']:.1f} | "
+            f"{k.get('peak_shear_mm', math.nan):.2f} | {k.get('residual_shear_mm', math.nan):.2f} |"
+        )
     out = {"tests": {f"{s:g}": t for s, t in sorted(tests.items())}, "keys": keys}
     if band_from != campaign:
         out["band_from"] = band_from
@@ -212,7 +241,11 @@ def main(campaign, cases):
 def write_case(cases, name, k, bed, campaign, band_from):
     """cases/validation/<name>.toml from the rule's keys: nothing else is set."""
     depth, rake = CUTS[name]
-    wall = f"\n[bin]\nlength = {X_END:g}  # the DEM bin's end wall ahead of the tip's start\n" if rake == 90.0 else ""
+    wall = (
+        f"\n[bin]\nlength = {X_END:g}  # the DEM bin's end wall ahead of the tip's start\n"
+        if rake == 90.0
+        else ""
+    )
     element = CAMPAIGNS[campaign]["element"]
     text = f"""# The DEM soil-bin cut {name} of validation/dem/ (docs/validation.md), with
 # soilcut's keys from the DEM's element tests (the {campaign} campaign,
@@ -220,7 +253,7 @@ def write_case(cases, name, k, bed, campaign, band_from):
 # cuts) only, written by
 # python3 validation/dem/parameters.py --campaign {campaign}
 # (the rule is in its header): never tuned to the cut. Lengths in mm; unit
-# weight 1 (forces in γ0·mm²; the DEM's γ0 is {bed['unit_weight_N_per_m3']:.0f} N/m³ per unit width
+# weight 1 (forces in γ0·mm²; the DEM's γ0 is {bed["unit_weight_N_per_m3"]:.0f} N/m³ per unit width
 # of its slab).
 name = "validation-{name}"
 title = "DEM validation: {name}, d = {depth:g} mm, α = {rake:g}°, to u = {TRAVEL:g} d"
@@ -233,14 +266,14 @@ rake = {rake:g}
 
 [soil]
 unit_weight = 1.0
-# biaxial tests interpolated at σ3 = γ0 d / 2 = {k['sigma_Pa']:.0f} Pa
-friction = {{ initial = {k['phi_c']:.1f}, peak = {k['phi_p']:.1f}, residual = {k['phi_r']:.1f} }}
-dilation = {{ initial = {k['psi_c']:.1f}, peak = {k['psi_p']:.1f}, residual = {k['psi_r']:.1f} }}
-peak_shear = {k['peak_shear_mm']:.2f}      # γp dB, γp = {k['gamma_p']:.4f}
-residual_shear = {k['residual_shear_mm']:.2f}  # γr dB, γr = {k['gamma_r']:.4f}
-repose = {k['repose']:.1f}  # heap test
+# biaxial tests interpolated at σ3 = γ0 d / 2 = {k["sigma_Pa"]:.0f} Pa
+friction = {{ initial = {k["phi_c"]:.1f}, peak = {k["phi_p"]:.1f}, residual = {k["phi_r"]:.1f} }}
+dilation = {{ initial = {k["psi_c"]:.1f}, peak = {k["psi_p"]:.1f}, residual = {k["psi_r"]:.1f} }}
+peak_shear = {k["peak_shear_mm"]:.2f}      # γp dB, γp = {k["gamma_p"]:.4f}
+residual_shear = {k["residual_shear_mm"]:.2f}  # γr dB, γr = {k["gamma_r"]:.4f}
+repose = {k["repose"]:.1f}  # heap test
 d50 = {D50:g}  # mean grain diameter
-band_width = {k['band_width_mm']:.2f}  # the DEM's band (mechanism.py), at most 0.9 d
+band_width = {k["band_width_mm"]:.2f}  # the DEM's band (mechanism.py), at most 0.9 d
 {wall}
 [run]
 travel = {TRAVEL * depth:g}

@@ -43,16 +43,29 @@ START = time.time()
 def main():
     grain, _, wall = g.materials(O, yade.CohFrictMat)
     half_z = 5 * g.RADIUS
-    O.bodies.append([
-        utils.box((FLOOR / 2, -g.RADIUS, 0), (FLOOR / 2 + 2 * g.RADIUS, g.RADIUS, half_z), fixed=True,
-                  material=grain),
-        utils.box((-g.RADIUS, 0.1, 0), (g.RADIUS, 0.1, half_z), fixed=True, material=wall),
-    ])
-    gate = O.bodies.append(utils.box((WIDTH + g.RADIUS, 0.1, 0), (g.RADIUS, 0.1, half_z), fixed=True,
-                                     material=wall))
+    O.bodies.append(
+        [
+            utils.box(
+                (FLOOR / 2, -g.RADIUS, 0),
+                (FLOOR / 2 + 2 * g.RADIUS, g.RADIUS, half_z),
+                fixed=True,
+                material=grain,
+            ),
+            utils.box((-g.RADIUS, 0.1, 0), (g.RADIUS, 0.1, half_z), fixed=True, material=wall),
+        ]
+    )
+    gate = O.bodies.append(
+        utils.box((WIDTH + g.RADIUS, 0.1, 0), (g.RADIUS, 0.1, half_z), fixed=True, material=wall)
+    )
     sp = pack.SpherePack()
-    sp.makeCloud((g.RADIUS * 1.3, g.RADIUS * 1.3, 0), (WIDTH - g.RADIUS * 1.3, CLOUD_TOP, 0),
-                 rMean=g.RADIUS, rRelFuzz=g.FUZZ, num=700, seed=g.SEED)
+    sp.makeCloud(
+        (g.RADIUS * 1.3, g.RADIUS * 1.3, 0),
+        (WIDTH - g.RADIUS * 1.3, CLOUD_TOP, 0),
+        rMean=g.RADIUS,
+        rRelFuzz=g.FUZZ,
+        num=700,
+        seed=g.SEED,
+    )
     for c, r in sp:
         O.bodies.append(utils.sphere(c, r, material=grain))
     g.flatten(O)
@@ -66,8 +79,11 @@ def main():
     O.run(20000, True)  # the run-out (0.5 s) before the rest test
     steps = 20000 + settle(0.01, 60000)
     top = g.surface(O, 0.0, FLOOR, 2 * g.RADIUS)
-    g.write_csv(os.path.join(HERE, 'results', 'repose_surface.csv'), ['x_mm', 'y_mm'],
-                [(x * 1e3, y * 1e3) for x, y in top])
+    g.write_csv(
+        os.path.join(HERE, "results", "repose_surface.csv"),
+        ["x_mm", "y_mm"],
+        [(x * 1e3, y * 1e3) for x, y in top],
+    )
     hmax = max(y for _, y in top)
     pts = [(x, y) for x, y in top if 0.2 * hmax <= y <= 0.8 * hmax and x > 2 * g.RADIUS]
     n = len(pts)
@@ -75,10 +91,16 @@ def main():
     my = sum(p[1] for p in pts) / n
     slope = sum((p[0] - mx) * (p[1] - my) for p in pts) / sum((p[0] - mx) ** 2 for p in pts)
     summary = {
-        'wall_time_s': time.time() - START,'yade_version': yade.config.version, 'seed': g.SEED, 'grains': len(sp),
-               'repose_deg': math.degrees(math.atan(-slope)), 'fit_points': n,
-               'heap_height_mm': hmax * 1e3, 'steps_after_release': steps}
-    with open(os.path.join(HERE, 'results', 'repose.json'), 'w') as f:
+        "wall_time_s": time.time() - START,
+        "yade_version": yade.config.version,
+        "seed": g.SEED,
+        "grains": len(sp),
+        "repose_deg": math.degrees(math.atan(-slope)),
+        "fit_points": n,
+        "heap_height_mm": hmax * 1e3,
+        "steps_after_release": steps,
+    }
+    with open(os.path.join(HERE, "results", "repose.json"), "w") as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary))
 

@@ -35,24 +35,36 @@ width in units of gamma0 mm^2 with gamma0 = 1: what `soilcut fit` and
 `soilcut compare --measured` read). It prints the tables docs/validation.md
 quotes.
 """
+
 import csv
 import json
 import math
 import statistics
 import sys
 
-from campaigns import CAMPAIGNS, RESULTS as HERE, campaign_option, compared_key, config_key
+from campaigns import CAMPAIGNS, campaign_option, compared_key, config_key
+from campaigns import RESULTS as HERE
 
-MECH = ("beta_deg", "emergence_mm", "band_thickness_mm", "pile_height_mm", "pile_ahead_mm",
-        "pile_slope_deg", "block_ratio")
+MECH = (
+    "beta_deg",
+    "emergence_mm",
+    "band_thickness_mm",
+    "pile_height_mm",
+    "pile_ahead_mm",
+    "pile_slope_deg",
+    "block_ratio",
+)
 
 
 def spread(values):
     v = [x for x in values if x is not None and math.isfinite(x)]
     if not v:
         return None
-    return {"mean": statistics.fmean(v), "sd": statistics.stdev(v) if len(v) > 1 else 0.0,
-            "n": len(v)}
+    return {
+        "mean": statistics.fmean(v),
+        "sd": statistics.stdev(v) if len(v) > 1 else 0.0,
+        "n": len(v),
+    }
 
 
 def run_numbers(meta):
@@ -82,13 +94,18 @@ def run_numbers(meta):
             for key in MECH:
                 out[f"{key}@{row['u_over_d']:.2f}"] = row[key]
         for key in MECH:
-            vals = [r[key] for r in m if 0.5 - 1e-9 <= r["u_over_d"] <= 1.0 + 1e-9 and math.isfinite(r[key])]
+            vals = [
+                r[key]
+                for r in m
+                if 0.5 - 1e-9 <= r["u_over_d"] <= 1.0 + 1e-9 and math.isfinite(r[key])
+            ]
             out[f"mean_{key}"] = statistics.fmean(vals) if vals else None
         t = out.get("mean_band_thickness_mm")
         if t:
             p = meta["unit_weight_N_per_m3"] * meta["depth_mm"] * 1e-3 / 2
-            out["inertial_number"] = (meta["speed_m_per_s"] / (t * 1e-3) * meta["mean_diameter_m"]
-                                      * math.sqrt(2650.0 / p))
+            out["inertial_number"] = (
+                meta["speed_m_per_s"] / (t * 1e-3) * meta["mean_diameter_m"] * math.sqrt(2650.0 / p)
+            )
     out["wall_time_s"] = meta["wall_time_s"]
     return out
 
@@ -108,8 +125,10 @@ def write_mean(name, metas, campaign):
 
 
 def rows_of(meta):
-    return [{k: float(v) for k, v in r.items()} for r in
-            csv.DictReader((meta["folder"] / (meta["run"] + "_forces.csv")).open())]
+    return [
+        {k: float(v) for k, v in r.items()}
+        for r in csv.DictReader((meta["folder"] / (meta["run"] + "_forces.csv")).open())
+    ]
 
 
 def main(campaign):
@@ -125,29 +144,51 @@ def main(campaign):
     summary = {}
     for key, runs in sorted(configs.items()):
         numbers = sorted({k for _, n in runs for k in n})
-        entry = {"seeds": [m["seed"] for m, _ in runs], "grains": [m["grains"] for m, _ in runs],
-                 "speed_m_per_s": runs[0][0]["speed_m_per_s"], "depth_mm": runs[0][0]["depth_mm"],
-                 "rake_deg": runs[0][0]["rake_deg"]}
+        entry = {
+            "seeds": [m["seed"] for m, _ in runs],
+            "grains": [m["grains"] for m, _ in runs],
+            "speed_m_per_s": runs[0][0]["speed_m_per_s"],
+            "depth_mm": runs[0][0]["depth_mm"],
+            "rake_deg": runs[0][0]["rake_deg"],
+        }
         for k in numbers:
             entry[k] = spread([n.get(k) for _, n in runs])
         summary[key] = entry
-    (HERE / f"summary{CAMPAIGNS[campaign]['suffix']}.json").write_text(json.dumps(summary, indent=1, sort_keys=True) + "\n")
-    fmt = lambda s: "–" if s is None else (f"{s['mean']:.2f} ± {s['sd']:.2f}" if s["n"] > 1 else f"{s['mean']:.2f}")
-    print("| configuration | seeds | early | [0,0.5) d | [0,1) d | [1,2) d | [2,3) d | h [0,1) | v [0,1) | h [1,2) | v [1,2) | wall share [0,1) | [1,2) | wall time (s) |")
+    (HERE / f"summary{CAMPAIGNS[campaign]['suffix']}.json").write_text(
+        json.dumps(summary, indent=1, sort_keys=True) + "\n"
+    )
+
+    def fmt(s):
+        return (
+            "–"
+            if s is None
+            else (f"{s['mean']:.2f} ± {s['sd']:.2f}" if s["n"] > 1 else f"{s['mean']:.2f}")
+        )
+
+    print(
+        "| configuration | seeds | early | [0,0.5) d | [0,1) d | [1,2) d | [2,3) d | h [0,1) | v [0,1) | h [1,2) | v [1,2) | wall share [0,1) | [1,2) | wall time (s) |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for key, e in summary.items():
-        print(f"| {key} | {len(e['seeds'])} | {fmt(e.get('early'))} | {fmt(e.get('half_0'))} | {fmt(e.get('window_0'))} | "
-              f"{fmt(e.get('window_1'))} | {fmt(e.get('window_2'))} | {fmt(e.get('window_h_0'))} | "
-              f"{fmt(e.get('window_v_0'))} | {fmt(e.get('window_h_1'))} | {fmt(e.get('window_v_1'))} | "
-              f"{fmt(e.get('wall_share_0'))} | {fmt(e.get('wall_share_1'))} | "
-              f"{fmt(e.get('wall_time_s'))} |")
+        print(
+            f"| {key} | {len(e['seeds'])} | {fmt(e.get('early'))} | {fmt(e.get('half_0'))} | {fmt(e.get('window_0'))} | "
+            f"{fmt(e.get('window_1'))} | {fmt(e.get('window_2'))} | {fmt(e.get('window_h_0'))} | "
+            f"{fmt(e.get('window_v_0'))} | {fmt(e.get('window_h_1'))} | {fmt(e.get('window_v_1'))} | "
+            f"{fmt(e.get('wall_share_0'))} | {fmt(e.get('wall_share_1'))} | "
+            f"{fmt(e.get('wall_time_s'))} |"
+        )
     print()
-    print("| configuration | β (°) | emergence ahead of tip (mm) | band thickness (mm) | pile height (mm) | pile slope (°) | block speed ratio | inertial number |")
+    print(
+        "| configuration | β (°) | emergence ahead of tip (mm) | band thickness (mm) | pile height (mm) | pile slope (°) | block speed ratio | inertial number |"
+    )
     print("|---|---|---|---|---|---|---|---|")
     for key, e in summary.items():
         inertial = e.get("inertial_number")
-        print(f"| {key} | " + " | ".join(fmt(e.get(f"mean_{m}")) for m in MECH[:4] + MECH[5:])
-              + (f" | {inertial['mean']:.1e} |" if inertial else " | – |"))
+        print(
+            f"| {key} | "
+            + " | ".join(fmt(e.get(f"mean_{m}")) for m in MECH[:4] + MECH[5:])
+            + (f" | {inertial['mean']:.1e} |" if inertial else " | – |")
+        )
 
 
 if __name__ == "__main__":

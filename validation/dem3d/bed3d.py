@@ -18,8 +18,8 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 import bin3d as b3  # noqa: E402
-from bin3d import g  # noqa: E402
 import yade  # noqa: E402
+from bin3d import g  # noqa: E402
 from yade import O, utils  # noqa: E402
 
 START = time.time()
@@ -40,8 +40,16 @@ def cloud(rows, seed):
                 r = r0 * (1 + g.FUZZ * (2 * rng.random() - 1))
                 jx = (rng.random() - 0.5) * slack
                 jz = (rng.random() - 0.5) * slack
-                out.append(((b3.X_START + (i + 0.5) * pitch + jx, 1.3 * r0 + (j + 0.5) * pitch,
-                             (k + 0.5) * pitch + jz), r))
+                out.append(
+                    (
+                        (
+                            b3.X_START + (i + 0.5) * pitch + jx,
+                            1.3 * r0 + (j + 0.5) * pitch,
+                            (k + 0.5) * pitch + jz,
+                        ),
+                        r,
+                    )
+                )
     return out
 
 
@@ -52,8 +60,11 @@ def settle(limit, cap, chunk=1000):
         O.run(chunk, True)
         done += chunk
         ub = utils.unbalancedForce()
-        print('iter %d  unbalanced %.4f  %.1f steps/s  %d grains' % (
-            O.iter, ub, chunk / (time.time() - t), sum(1 for b in O.bodies if b.dynamic)), flush=True)
+        print(
+            f"iter {O.iter}  unbalanced {ub:.4f}  {chunk / (time.time() - t):.1f} steps/s  "
+            f"{sum(1 for b in O.bodies if b.dynamic)} grains",
+            flush=True,
+        )
         if ub < limit:
             break
     return done
@@ -69,7 +80,7 @@ def weight(x0, x1, y0, y1, z0, z1):
         p = b.state.pos
         if x0 <= p[0] < x1 and y0 <= p[1] < y1 and z0 <= p[2] < z1:
             mass += b.state.mass
-            solid += 4.0 / 3.0 * math.pi * b.shape.radius ** 3
+            solid += 4.0 / 3.0 * math.pi * b.shape.radius**3
             n += 1
     vol = (x1 - x0) * (y1 - y0) * (z1 - z0)
     return mass * g.GRAVITY / vol, solid / vol, n
@@ -81,23 +92,32 @@ def main():
     r = g.RADIUS
     L, W = b3.X_END - b3.X_START, b3.HALF_WIDTH
     xc = (b3.X_START + b3.X_END) / 2
-    cloud_solid = 4.0 / 3.0 * math.pi * (1 + g.FUZZ ** 2) / g.PITCH ** 3  # ~0.24
+    cloud_solid = 4.0 / 3.0 * math.pi * (1 + g.FUZZ**2) / g.PITCH**3  # ~0.24
     rows = int(math.ceil(1.1 * b3.HEIGHT * 0.62 / cloud_solid / (g.PITCH * r)))
     top = 1.3 * r + (rows + 1) * g.PITCH * r
     ids = {}
-    ids['floor'] = O.bodies.append(utils.box((xc, -r, W / 2), (L / 2 + 2 * r, r, W / 2 + 2 * r),
-                                             fixed=True, material=grain))
-    ids['start_wall'] = O.bodies.append(utils.box((b3.X_START - r, top / 2, W / 2), (r, top / 2, W / 2 + 2 * r),
-                                                  fixed=True, material=wall))
-    ids['end_wall'] = O.bodies.append(utils.box((b3.X_END + r, top / 2, W / 2), (r, top / 2, W / 2 + 2 * r),
-                                                fixed=True, material=wall))
-    ids['symmetry_wall'] = O.bodies.append(utils.box((xc, top / 2, -r), (L / 2 + 2 * r, top / 2, r),
-                                                     fixed=True, material=wall))
-    ids['side_wall'] = O.bodies.append(utils.box((xc, top / 2, W + r), (L / 2 + 2 * r, top / 2, r),
-                                                 fixed=True, material=wall))
+    ids["floor"] = O.bodies.append(
+        utils.box((xc, -r, W / 2), (L / 2 + 2 * r, r, W / 2 + 2 * r), fixed=True, material=grain)
+    )
+    ids["start_wall"] = O.bodies.append(
+        utils.box(
+            (b3.X_START - r, top / 2, W / 2), (r, top / 2, W / 2 + 2 * r), fixed=True, material=wall
+        )
+    )
+    ids["end_wall"] = O.bodies.append(
+        utils.box(
+            (b3.X_END + r, top / 2, W / 2), (r, top / 2, W / 2 + 2 * r), fixed=True, material=wall
+        )
+    )
+    ids["symmetry_wall"] = O.bodies.append(
+        utils.box((xc, top / 2, -r), (L / 2 + 2 * r, top / 2, r), fixed=True, material=wall)
+    )
+    ids["side_wall"] = O.bodies.append(
+        utils.box((xc, top / 2, W + r), (L / 2 + 2 * r, top / 2, r), fixed=True, material=wall)
+    )
     for c, rad in cloud(rows, g.SEED):
         O.bodies.append(utils.sphere(c, rad, material=grain))
-    print('cloud: %d grains, %d rows' % (len(O.bodies) - 5, rows), flush=True)
+    print(f"cloud: {len(O.bodies) - 5} grains, {rows} rows", flush=True)
     g.set_friction(O, g.DEPOSIT_FRICTION)
     O.engines = g.engines(O, yade, [])
     O.dt = 0.5 * utils.PWaveTimeStep()
@@ -122,22 +142,39 @@ def main():
     bulk = weight(0.0, 6 * d, 2 * r, level - 2 * r, 2 * r, W - 2 * r)
     cut = {}
     for w_over_d in (1, 3):
-        cut['w%d' % w_over_d] = weight(0.0, 3 * d, level - d, level, 0.0, w_over_d * d / 2)
-    O.save(g.path('beds', 'bed3d_%s.yade.gz' % b3.tag()))
+        cut[f"w{w_over_d}"] = weight(0.0, 3 * d, level - d, level, 0.0, w_over_d * d / 2)
+    O.save(g.path("beds", f"bed3d_{b3.tag()}.yade.gz"))
     summary = {
-        'wall_time_s': time.time() - START,
-        'yade_version': yade.config.version if hasattr(yade, 'config') else 'unknown',
-        'seed': g.SEED, 'ratio_d_over_D': g.RATIO, 'mean_diameter_m': 2 * r,
-        'grains': sum(1 for b in O.bodies if b.dynamic), 'steps': steps, 'dt_s': O.dt,
-        'x_start_m': b3.X_START, 'x_end_m': b3.X_END, 'height_m': b3.HEIGHT,
-        'half_width_m': W, 'depth_m': d,
-        'surface_level_m': level, 'surface_noise_sd_m': noise,
-        'bulk_unit_weight_N_per_m3': bulk[0], 'bulk_solid_fraction': bulk[1], 'bulk_grains': bulk[2],
-        'cut_region': {k: {'unit_weight_N_per_m3': v[0], 'solid_fraction': v[1], 'porosity': 1 - v[1],
-                           'grains': v[2]} for k, v in cut.items()},
-        'body_ids': ids,
+        "wall_time_s": time.time() - START,
+        "yade_version": yade.config.version if hasattr(yade, "config") else "unknown",
+        "seed": g.SEED,
+        "ratio_d_over_D": g.RATIO,
+        "mean_diameter_m": 2 * r,
+        "grains": sum(1 for b in O.bodies if b.dynamic),
+        "steps": steps,
+        "dt_s": O.dt,
+        "x_start_m": b3.X_START,
+        "x_end_m": b3.X_END,
+        "height_m": b3.HEIGHT,
+        "half_width_m": W,
+        "depth_m": d,
+        "surface_level_m": level,
+        "surface_noise_sd_m": noise,
+        "bulk_unit_weight_N_per_m3": bulk[0],
+        "bulk_solid_fraction": bulk[1],
+        "bulk_grains": bulk[2],
+        "cut_region": {
+            k: {
+                "unit_weight_N_per_m3": v[0],
+                "solid_fraction": v[1],
+                "porosity": 1 - v[1],
+                "grains": v[2],
+            }
+            for k, v in cut.items()
+        },
+        "body_ids": ids,
     }
-    with open(g.path('results', 'beds', 'bed3d_%s.json' % b3.tag()), 'w') as f:
+    with open(g.path("results", "beds", f"bed3d_{b3.tag()}.json"), "w") as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary), flush=True)
 

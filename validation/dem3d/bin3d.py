@@ -17,7 +17,7 @@ import os
 import sys
 
 HERE3 = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE3, '..', 'dem'))
+sys.path.insert(0, os.path.join(HERE3, "..", "dem"))
 import grains as g  # noqa: E402
 
 DEPTH = g.DEPTH_REF  # blade tip depth d (m): 20 mm, as in 2D
@@ -30,12 +30,12 @@ HALF_WIDTH = 4.5 * DEPTH  # half-bin width (m): w/2 + 3 d for w = 3 d (w = d: 5.
 def configure(argv):
     """grains.configure with d/D = 5 unless --ratio is given; returns the positional words."""
     argv = list(argv)
-    if '--ratio' not in argv:
-        argv += ['--ratio', '5']
+    if "--ratio" not in argv:
+        argv += ["--ratio", "5"]
     words = g.configure(argv)
     g.HERE = HERE3  # grains.path() writes under validation/dem3d/
     return words
 
 
 def tag():
-    return 'r%g_s%d' % (g.RATIO, g.SEED)
+    return f"r{g.RATIO:g}_s{g.SEED}"

@@ -108,7 +108,9 @@ def main():
         to_newton = gamma * 1e-9
         members = run(a.soilcut, out, ratio, 1000.0 * d["end_wall_x_m"])
         sims = [member_figures(f, w_mm) for f in members]
-        plane = [member_figures(f, None) for f in run(a.soilcut, out, None, 1000.0 * d["end_wall_x_m"])]
+        plane = [
+            member_figures(f, None) for f in run(a.soilcut, out, None, 1000.0 * d["end_wall_x_m"])
+        ]
         table = []
         for k in range(TRAVEL):
             sim = spread([m["windows"][k] * to_newton for m in sims])
@@ -149,7 +151,9 @@ def main():
                 f"| {r['plane_strain_times_w_N'][0]:.2f} | {dem_cell} | {ratio_cell} |"
             )
         for k, v in result[key]["dem_pile"].items():
-            print(f"| w/d = {ratio:g} | {k} | {soil_pile[k][0]:.2f} ± {soil_pile[k][1]:.2f} | {v:.2f} |")
+            print(
+                f"| w/d = {ratio:g} | {k} | {soil_pile[k][0]:.2f} ± {soil_pile[k][1]:.2f} | {v:.2f} |"
+            )
     (HERE / "results" / "compare3d.json").write_text(json.dumps(result, indent=1) + "\n")
 
 

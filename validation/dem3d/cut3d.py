@@ -34,9 +34,9 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 import bin3d as b3  # noqa: E402
-from bin3d import g  # noqa: E402
 import numpy as np  # noqa: E402
 import yade  # noqa: E402
+from bin3d import g  # noqa: E402
 from yade import O, utils  # noqa: E402
 
 HALF_THICKNESS = 1.0e-3  # blade half-thickness (m)
@@ -76,7 +76,7 @@ class Recorder:
         fx, fy = self.face_force()
         if self.checked < 3 and abs(total[0]) > 0:
             allx = g.contact_sum_x(O, self.blade.id)
-            print('check: contact sum %.6g, O.forces %.6g' % (allx, total[0]), flush=True)
+            print(f"check: contact sum {allx:.6g}, O.forces {total[0]:.6g}", flush=True)
             self.checked += 1
         wall = O.forces.f(self.wall)[0]
         for k, v in enumerate((-fx, fy, -total[0], total[1], wall)):
@@ -95,9 +95,10 @@ class Recorder:
                 self.write_forces()
                 if self.meta is not None:
                     self.write_meta(False)
-                print('  u/d = %.2f  draft %.3f N  kinetic %.3g J  unbalanced %.3g  %.1f steps/s' % (
-                    s, self.forces[-1][1], utils.kineticEnergy(), utils.unbalancedForce(),
-                    (O.iter - self.iter0) / (time.time() - self.start)), flush=True)
+                print(
+                    f"  u/d = {s:.2f}  draft {self.forces[-1][1]:.3f} N  kinetic {utils.kineticEnergy():.3g} J  unbalanced {utils.unbalancedForce():.3g}  {(O.iter - self.iter0) / (time.time() - self.start):.1f} steps/s",
+                    flush=True,
+                )
 
     def record_field(self, s):
         pos = np.full((len(self.ids), 3), np.nan)
@@ -108,53 +109,69 @@ class Recorder:
         self.fields.append(pos)
         self.field_u.append(self.travel())
         last = self.forces[-1] if self.forces else (0, 0, 0, 0, 0, 0)
-        print('u/d = %.2f  iter %d  wall %.0f s  draft %.2f N  end wall %.2f N' % (
-            s, O.iter, time.time() - self.start, last[1], last[5]), flush=True)
+        print(
+            f"u/d = {s:.2f}  iter {O.iter}  wall {time.time() - self.start:.0f} s  "
+            f"draft {last[1]:.2f} N  end wall {last[5]:.2f} N",
+            flush=True,
+        )
         self.write()
         if self.meta is not None:
             self.write_meta(False)
 
     def write_meta(self, complete):
-        m = dict(self.meta, travel_reached_m=self.travel(), complete=complete,
-                 wall_time_s=time.time() - self.start)
-        with open(g.path('results', 'cuts', self.run + '.json'), 'w') as f:
+        m = dict(
+            self.meta,
+            travel_reached_m=self.travel(),
+            complete=complete,
+            wall_time_s=time.time() - self.start,
+        )
+        with open(g.path("results", "cuts", self.run + ".json"), "w") as f:
             json.dump(m, f, indent=1)
         return m
 
     def write_forces(self):
-        g.write_csv(g.path('results', 'cuts', self.run) + '_forces.csv',
-                    ['u_over_d', 'draft_N', 'vertical_N', 'draft_all_N', 'vertical_all_N', 'wall_N'],
-                    self.forces)
+        g.write_csv(
+            g.path("results", "cuts", self.run) + "_forces.csv",
+            ["u_over_d", "draft_N", "vertical_N", "draft_all_N", "vertical_all_N", "wall_N"],
+            self.forces,
+        )
 
     def write(self):
         self.write_forces()
-        radii = np.array([O.bodies[i].shape.radius if O.bodies[i] is not None else np.nan
-                          for i in self.ids])
-        np.savez_compressed(g.path('fields', self.run + '.npz'), u=np.array(self.field_u),
-                            pos=np.array(self.fields), radius=radii)
+        radii = np.array(
+            [O.bodies[i].shape.radius if O.bodies[i] is not None else np.nan for i in self.ids]
+        )
+        np.savez_compressed(
+            g.path("fields", self.run + ".npz"),
+            u=np.array(self.field_u),
+            pos=np.array(self.fields),
+            radius=radii,
+        )
 
 
 def main():
     global DT_FACTOR
     argv = sys.argv[1:]
     half_width = None
-    if '--half-width' in argv:
-        k = argv.index('--half-width')
+    if "--half-width" in argv:
+        k = argv.index("--half-width")
         half_width = float(argv[k + 1]) * b3.DEPTH
-        del argv[k:k + 2]
-    if '--dt-factor' in argv:
-        k = argv.index('--dt-factor')
+        del argv[k : k + 2]
+    if "--dt-factor" in argv:
+        k = argv.index("--dt-factor")
         DT_FACTOR = float(argv[k + 1])
-        del argv[k:k + 2]
+        del argv[k : k + 2]
     words = b3.configure(argv)
     w = float(words[-1]) * b3.DEPTH
     travel = (g.TRAVEL or 3.0) * b3.DEPTH
     tag = b3.tag()
-    run = 'w%g_%s%s' % (w / b3.DEPTH, tag, '' if g.SPEED == 0.04 else '_v%g' % (g.SPEED * 1e3))
-    with open(g.path('results', 'beds', 'bed3d_%s.json' % tag)) as f:
+    run = "w{:g}_{}{}".format(
+        w / b3.DEPTH, tag, "" if g.SPEED == 0.04 else "_v%g" % (g.SPEED * 1e3)
+    )
+    with open(g.path("results", "beds", f"bed3d_{tag}.json")) as f:
         bed = json.load(f)
-    O.load(g.path('beds', 'bed3d_%s.yade.gz' % tag))
-    level = bed['surface_level_m']
+    O.load(g.path("beds", f"bed3d_{tag}.yade.gz"))
+    level = bed["surface_level_m"]
     tip = level - b3.DEPTH
     O.dt = DT_FACTOR * utils.PWaveTimeStep()
     trimmed = 0
@@ -165,12 +182,15 @@ def main():
             if b.dynamic and b.state.pos[2] + b.shape.radius > half_width:
                 O.bodies.erase(b.id)
                 trimmed += 1
-        side = O.bodies[bed['body_ids']['side_wall']]
+        side = O.bodies[bed["body_ids"]["side_wall"]]
         side.state.pos = yade.Vector3(side.state.pos[0], side.state.pos[1], half_width + g.RADIUS)
         O.engines = g.engines(O, yade, [])
         O.run(RELAX, True)
-        print('trimmed to a half-bin %.1f mm wide: %d grains erased, %d steps relaxed, unbalanced %.3g' % (
-            half_width * 1e3, trimmed, RELAX, utils.unbalancedForce()), flush=True)
+        print(
+            f"trimmed to a half-bin {half_width * 1e3:.1f} mm wide: {trimmed} grains erased, "
+            f"{RELAX} steps relaxed, unbalanced {utils.unbalancedForce():.3g}",
+            flush=True,
+        )
     else:
         half_width = b3.HALF_WIDTH
     height = 3.5 * b3.DEPTH
@@ -183,24 +203,46 @@ def main():
         if p[0] < r and p[1] > tip - r and p[2] < w / 2 + r:
             O.bodies.erase(b.id)
             erased += 1
-    body = utils.box((-HALF_THICKNESS, tip + height / 2, (z0 + w / 2) / 2),
-                     (HALF_THICKNESS, height / 2, (w / 2 - z0) / 2),
-                     fixed=True, material=O.materials['blade'])
+    body = utils.box(
+        (-HALF_THICKNESS, tip + height / 2, (z0 + w / 2) / 2),
+        (HALF_THICKNESS, height / 2, (w / 2 - z0) / 2),
+        fixed=True,
+        material=O.materials["blade"],
+    )
     blade = O.bodies[O.bodies.append(body)]
     blade.state.vel = yade.Vector3(g.SPEED, 0, 0)
-    rec = Recorder(run, blade, bed['body_ids']['end_wall'])
-    globals()['rec'] = rec
-    O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command='rec.sample()')])
+    rec = Recorder(run, blade, bed["body_ids"]["end_wall"])
+    globals()["rec"] = rec
+    O.engines = g.engines(O, yade, [yade.PyRunner(iterPeriod=10, command="rec.sample()")])
     steps = int(travel / g.SPEED / O.dt) + 20
-    print('run %s: %d grains (%d erased), dt %.3g s, %d steps' % (
-        run, len(rec.ids), erased, O.dt, steps), flush=True)
-    rec.meta = {'yade_version': bed['yade_version'], 'seed': g.SEED, 'run': run, 'bed': 'bed3d_' + tag,
-                'ratio_d_over_D': g.RATIO, 'mean_diameter_m': 2 * g.RADIUS, 'grains': len(rec.ids),
-                'erased_for_slot': erased, 'depth_m': b3.DEPTH, 'width_m': w,
-                'half_bin_width_m': half_width, 'trimmed_grains': trimmed, 'travel_m': travel,
-                'speed_m_per_s': g.SPEED, 'dt_s': O.dt, 'dt_over_pwave': DT_FACTOR, 'steps': steps,
-                'tip_y_m': tip, 'surface_level_m': level, 'floor_below_tip_m': tip,
-                'end_wall_x_m': b3.X_END, 'start_wall_x_m': b3.X_START}
+    print(
+        f"run {run}: {len(rec.ids)} grains ({erased} erased), dt {O.dt:.3g} s, {steps} steps",
+        flush=True,
+    )
+    rec.meta = {
+        "yade_version": bed["yade_version"],
+        "seed": g.SEED,
+        "run": run,
+        "bed": "bed3d_" + tag,
+        "ratio_d_over_D": g.RATIO,
+        "mean_diameter_m": 2 * g.RADIUS,
+        "grains": len(rec.ids),
+        "erased_for_slot": erased,
+        "depth_m": b3.DEPTH,
+        "width_m": w,
+        "half_bin_width_m": half_width,
+        "trimmed_grains": trimmed,
+        "travel_m": travel,
+        "speed_m_per_s": g.SPEED,
+        "dt_s": O.dt,
+        "dt_over_pwave": DT_FACTOR,
+        "steps": steps,
+        "tip_y_m": tip,
+        "surface_level_m": level,
+        "floor_below_tip_m": tip,
+        "end_wall_x_m": b3.X_END,
+        "start_wall_x_m": b3.X_START,
+    }
     O.run(steps, True)
     rec.record_field(rec.travel() / b3.DEPTH)
     print(json.dumps(rec.write_meta(True)), flush=True)

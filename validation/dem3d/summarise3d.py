@@ -28,6 +28,7 @@ of the settled bed before the cut, bed3d.py). The noise is the standard
 deviation of a single column top in the settled bed (`surface_noise_sd_m`),
 divided by the square root of the columns averaged.
 """
+
 import csv
 import json
 import math
@@ -60,10 +61,14 @@ def windows(f, norm, last):
             continue
         d = f["draft_N"][sel]
         out[f"window_{k}"] = {
-            "draft_N": d.mean(), "draft_sd_N": d.std(ddof=1),
-            "draft_norm": d.mean() / norm, "draft_sd_norm": d.std(ddof=1) / norm,
-            "vertical_N": f["vertical_N"][sel].mean(), "vertical_norm": f["vertical_N"][sel].mean() / norm,
-            "draft_all_N": f["draft_all_N"][sel].mean(), "draft_all_norm": f["draft_all_N"][sel].mean() / norm,
+            "draft_N": d.mean(),
+            "draft_sd_N": d.std(ddof=1),
+            "draft_norm": d.mean() / norm,
+            "draft_sd_norm": d.std(ddof=1) / norm,
+            "vertical_N": f["vertical_N"][sel].mean(),
+            "vertical_norm": f["vertical_N"][sel].mean() / norm,
+            "draft_all_N": f["draft_all_N"][sel].mean(),
+            "draft_all_norm": f["draft_all_N"][sel].mean() / norm,
             "wall_N": f["wall_N"][sel].mean(),
             "wall_share": (f["wall_N"][sel].mean() - start) / d.mean(),
             "records": int(sel.sum()),
@@ -87,7 +92,9 @@ def centre_profile(pos, rad, face, bed, w):
     out = []
     x = bed["x_start_m"] + D / 2
     while x + D / 2 <= bed["x_end_m"] + 1e-12:
-        tops = [column_tops(pos, rad, x - D / 2, x + D / 2, j * D, (j + 1) * D) for j in range(strip)]
+        tops = [
+            column_tops(pos, rad, x - D / 2, x + D / 2, j * D, (j + 1) * D) for j in range(strip)
+        ]
         tops = [t for t in tops if np.isfinite(t)]
         if tops:
             out.append(((x - face) / d, (np.mean(tops) - level) / d))
@@ -106,11 +113,14 @@ def lateral_profile(pos, rad, xs, bed):
     x0 = xs - nx * D / 2
     raw = []
     for j in range(nz):
-        t = [column_tops(pos, rad, x0 + i * D, x0 + (i + 1) * D, j * D, (j + 1) * D) for i in range(nx)]
+        t = [
+            column_tops(pos, rad, x0 + i * D, x0 + (i + 1) * D, j * D, (j + 1) * D)
+            for i in range(nx)
+        ]
         t = [v for v in t if np.isfinite(v)]
         raw.append((np.mean(t) - level) / d if t else np.nan)
     raw = np.array(raw)
-    smooth = np.array([np.nanmean(raw[max(0, j - 1):j + 2]) for j in range(nz)])
+    smooth = np.array([np.nanmean(raw[max(0, j - 1) : j + 2]) for j in range(nz)])
     return [((j + 0.5) * D / d, raw[j], smooth[j]) for j in range(nz)], nx
 
 
@@ -129,9 +139,13 @@ def ridge(profile, w, d, threshold):
             break
     inside = [y for z, y, _ in profile if z * d < w / 2 and np.isfinite(y)]
     far = [y for z, y, _ in profile if z * d > w / 2 + 2.5 * d and np.isfinite(y)]
-    return {"peak_height_d": yp, "peak_z_d": zp, "extent_beyond_edge_d": extent,
-            "inside_mean_height_d": float(np.mean(inside)) if inside else None,
-            "far_field_mean_height_d": float(np.mean(far)) if far else None}
+    return {
+        "peak_height_d": yp,
+        "peak_z_d": zp,
+        "extent_beyond_edge_d": extent,
+        "inside_mean_height_d": float(np.mean(inside)) if inside else None,
+        "far_field_mean_height_d": float(np.mean(far)) if far else None,
+    }
 
 
 def noise(pos0, rad, bed, w):
@@ -144,36 +158,49 @@ def noise(pos0, rad, bed, w):
     for s in (1.5, 2.5, 3.5, 4.5, 5.5):
         prof, _ = lateral_profile(pos0, rad, s * bed["depth_m"], bed)
         ly += [y for _, _, y in prof if np.isfinite(y)]
-    return {"centre_sd_d": float(np.std(cy, ddof=1)), "centre_mean_d": float(np.mean(cy)),
-            "lateral_sd_d": float(np.std(ly, ddof=1)), "lateral_mean_d": float(np.mean(ly))}
+    return {
+        "centre_sd_d": float(np.std(cy, ddof=1)),
+        "centre_mean_d": float(np.mean(cy)),
+        "lateral_sd_d": float(np.std(ly, ddof=1)),
+        "lateral_mean_d": float(np.mean(ly)),
+    }
 
 
 def spilled(pos, rad, pos0, face, bed, w, gamma_grain):
     """Weight (N, whole bin) of the grains whose centres lie above the bed's level, less
     the same per unit of plan area in the settled bed before the cut, by region."""
     level = bed["surface_level_m"]
-    d = bed["depth_m"]
+    bed["depth_m"]
     W = bed["half_width_m"]
     ok0 = np.isfinite(pos0[:, 0])
     a0 = (bed["x_end_m"] - bed["x_start_m"]) * W
-    vol = 4.0 / 3.0 * math.pi * rad ** 3
+    vol = 4.0 / 3.0 * math.pi * rad**3
     base = (vol[ok0 & (pos0[:, 1] > level)].sum() * gamma_grain) / a0  # N/m^2 of plan
     ok = np.isfinite(pos[:, 0])
     above = ok & (pos[:, 1] > level)
     x, z = pos[:, 0], pos[:, 2]
     regions = {
-        "ahead_inside": (x >= face) & (z < w / 2), "ahead_outside": (x >= face) & (z >= w / 2),
-        "behind_outside": (x < face) & (z >= w / 2), "behind_inside": (x < face) & (z < w / 2),
+        "ahead_inside": (x >= face) & (z < w / 2),
+        "ahead_outside": (x >= face) & (z >= w / 2),
+        "behind_outside": (x < face) & (z >= w / 2),
+        "behind_inside": (x < face) & (z < w / 2),
     }
     areas = {
-        "ahead_inside": (bed["x_end_m"] - face) * w / 2, "ahead_outside": (bed["x_end_m"] - face) * (W - w / 2),
-        "behind_inside": (face - bed["x_start_m"]) * w / 2, "behind_outside": (face - bed["x_start_m"]) * (W - w / 2),
+        "ahead_inside": (bed["x_end_m"] - face) * w / 2,
+        "ahead_outside": (bed["x_end_m"] - face) * (W - w / 2),
+        "behind_inside": (face - bed["x_start_m"]) * w / 2,
+        "behind_outside": (face - bed["x_start_m"]) * (W - w / 2),
     }
-    out = {k: SIDES * (vol[above & m].sum() * gamma_grain - base * areas[k]) for k, m in regions.items()}
+    out = {
+        k: SIDES * (vol[above & m].sum() * gamma_grain - base * areas[k])
+        for k, m in regions.items()
+    }
     ahead = out["ahead_inside"] + out["ahead_outside"]
     out["ahead_outside_share"] = out["ahead_outside"] / ahead if ahead > 0 else None
     total = sum(out[k] for k in regions)
-    out["outside_share_incl_behind"] = (out["ahead_outside"] + out["behind_outside"]) / total if total > 0 else None
+    out["outside_share_incl_behind"] = (
+        (out["ahead_outside"] + out["behind_outside"]) / total if total > 0 else None
+    )
     out["baseline_N_per_m2"] = base
     return out
 
@@ -186,7 +213,7 @@ def main():
         bed = dict(beds[meta["bed"]], half_width_m=meta["half_bin_width_m"])
         run = meta["run"]
         wd = meta["width_m"] / meta["depth_m"]
-        key = "w%g" % wd
+        key = f"w{wd:g}"
         cut = bed["cut_region"].get(key)
         gamma = cut["unit_weight_N_per_m3"]
         d, w = meta["depth_m"], meta["width_m"]
@@ -200,21 +227,31 @@ def main():
         with open(RES / name, "w") as out:
             out.write(",".join(cols) + "\n")
             for i in range(len(f["u_over_d"])):
-                out.write(",".join("%.6g" % f[c][i] for c in cols) + "\n")
+                out.write(",".join(f"{f[c][i]:.6g}" for c in cols) + "\n")
         entry = {
-            "seed": meta["seed"], "d_m": d, "w_m": w, "w_over_d": wd, "D_m": meta["mean_diameter_m"],
-            "d_over_D": meta["ratio_d_over_D"], "speed_m_per_s": meta["speed_m_per_s"],
-            "grains": meta["grains"], "wall_time_cut_s": meta["wall_time_s"],
+            "seed": meta["seed"],
+            "d_m": d,
+            "w_m": w,
+            "w_over_d": wd,
+            "D_m": meta["mean_diameter_m"],
+            "d_over_D": meta["ratio_d_over_D"],
+            "speed_m_per_s": meta["speed_m_per_s"],
+            "grains": meta["grains"],
+            "wall_time_cut_s": meta["wall_time_s"],
             "wall_time_bed_s": bed["wall_time_s"],
-            "gamma0_N_per_m3": gamma, "porosity": cut["porosity"],
+            "gamma0_N_per_m3": gamma,
+            "porosity": cut["porosity"],
             "gamma0_region": "grain centres in 0 <= x < 3 d, level - d <= y < level, |z| < w/2",
             "gamma0_bulk_N_per_m3": bed["bulk_unit_weight_N_per_m3"],
             "porosity_bulk": 1 - bed["bulk_solid_fraction"],
-            "half_bin_width_m": meta["half_bin_width_m"], "end_wall_x_m": meta["end_wall_x_m"],
+            "half_bin_width_m": meta["half_bin_width_m"],
+            "end_wall_x_m": meta["end_wall_x_m"],
             "floor_below_tip_m": meta["floor_below_tip_m"],
-            "norm_N": norm, "norm": "gamma0 d^2 w",
+            "norm_N": norm,
+            "norm": "gamma0 d^2 w",
             "travel_d": float(f["u_over_d"][-1]),
-            "complete": meta.get("complete", True), "dt_over_pwave": meta.get("dt_over_pwave"),
+            "complete": meta.get("complete", True),
+            "dt_over_pwave": meta.get("dt_over_pwave"),
             "trimmed_grains": meta.get("trimmed_grains", 0),
         }
         entry.update(windows(f, norm, 3))
@@ -245,9 +282,12 @@ def main():
                     xp, yp = max(ahead, key=lambda t: t[1])
                     fig["centre_peak_height_d"] = yp
                     fig["centre_peak_x_d"] = xp
-                    fig["centre_mean_height_0_1d"] = float(np.mean([y for x, y in ahead if x < 1.0]))
+                    fig["centre_mean_height_0_1d"] = float(
+                        np.mean([y for x, y in ahead if x < 1.0])
+                    )
                     fig["centre_pile_front_x_d"] = next(
-                        (x for x, y in ahead if x > xp and y < 2 * nz["centre_sd_d"]), None)
+                        (x for x, y in ahead if x > xp and y < 2 * nz["centre_sd_d"]), None
+                    )
                 for st in STATIONS:
                     prof, nx = lateral_profile(pk, rk, face + st * d, bed)
                     for zz, y, ys in prof:
@@ -261,42 +301,56 @@ def main():
                 with open(RES / f"pile_{key}.csv", "w") as out:
                     out.write("kind,u_over_d,x_station_d,coord_d,y_d,y_smoothed_d\n")
                     for kind, s, st, c, y, ys in rows:
-                        out.write(f"{kind},{s:g},{st if st == '' else '%g' % st},{c:.4f},{y:.4f},"
-                                  f"{'' if ys == '' else '%.4f' % ys}\n")
+                        out.write(
+                            f"{kind},{s:g},{st if st == '' else f'{st:g}'},{c:.4f},{y:.4f},"
+                            f"{'' if ys == '' else f'{ys:.4f}'}\n"
+                        )
         summary.setdefault(key, {})[f"seed_{meta['seed']}"] = entry
-    for key, e in summary.items():
+    for e in summary.values():
         seeds = [v for k, v in e.items() if k.startswith("seed_")]
         if len(seeds) > 1:
             e["seed_spread"] = {}
             for k in range(3):
                 vals = [s[f"window_{k}"]["draft_norm"] for s in seeds if f"window_{k}" in s]
                 if len(vals) > 1:
-                    e["seed_spread"][f"window_{k}_draft_norm"] = {"mean": float(np.mean(vals)),
-                                                                   "sd": float(np.std(vals, ddof=1)),
-                                                                   "n": len(vals)}
-    (RES / "summary.json").write_text(json.dumps(summary, indent=1, sort_keys=True, default=float) + "\n")
+                    e["seed_spread"][f"window_{k}_draft_norm"] = {
+                        "mean": float(np.mean(vals)),
+                        "sd": float(np.std(vals, ddof=1)),
+                        "n": len(vals),
+                    }
+    (RES / "summary.json").write_text(
+        json.dumps(summary, indent=1, sort_keys=True, default=float) + "\n"
+    )
     for key, e in sorted(summary.items()):
         for sk, s in sorted(e.items()):
             if not sk.startswith("seed_"):
                 continue
-            print(f"{key} {sk}: gamma0 {s['gamma0_N_per_m3']:.0f} N/m3, porosity {s['porosity']:.3f}, "
-                  f"grains {s['grains']}, cut {s['wall_time_cut_s']:.0f} s")
+            print(
+                f"{key} {sk}: gamma0 {s['gamma0_N_per_m3']:.0f} N/m3, porosity {s['porosity']:.3f}, "
+                f"grains {s['grains']}, cut {s['wall_time_cut_s']:.0f} s"
+            )
             for k in range(3):
                 wdw = s.get(f"window_{k}")
                 if wdw:
-                    print(f"  [{k},{k+1}) d: draft {wdw['draft_N']:.3f} N (sd {wdw['draft_sd_N']:.3f}), "
-                          f"P/(g d2 w) {wdw['draft_norm']:.2f} (sd {wdw['draft_sd_norm']:.2f}), "
-                          f"vertical {wdw['vertical_N']:.3f} N, all-contacts {wdw['draft_all_N']:.3f} N, "
-                          f"wall share {wdw['wall_share']:.2f}")
+                    print(
+                        f"  [{k},{k + 1}) d: draft {wdw['draft_N']:.3f} N (sd {wdw['draft_sd_N']:.3f}), "
+                        f"P/(g d2 w) {wdw['draft_norm']:.2f} (sd {wdw['draft_sd_norm']:.2f}), "
+                        f"vertical {wdw['vertical_N']:.3f} N, all-contacts {wdw['draft_all_N']:.3f} N, "
+                        f"wall share {wdw['wall_share']:.2f}"
+                    )
             for u, fig in s.get("pile", {}).items():
-                print(f"  {u}: centre peak {fig.get('centre_peak_height_d', float('nan')):.2f} d at "
-                      f"{fig.get('centre_peak_x_d', float('nan')):.2f} d, front {fig.get('centre_pile_front_x_d')}")
+                print(
+                    f"  {u}: centre peak {fig.get('centre_peak_height_d', float('nan')):.2f} d at "
+                    f"{fig.get('centre_peak_x_d', float('nan')):.2f} d, front {fig.get('centre_pile_front_x_d')}"
+                )
                 for st in STATIONS:
                     print(f"    ridge at {st:g} d: {fig[f'ridge_at_{st:g}d']}")
                 sp = fig["spilled"]
-                print(f"    spilled: ahead inside {sp['ahead_inside']:.3f} N, ahead outside {sp['ahead_outside']:.3f} N, "
-                      f"behind outside {sp['behind_outside']:.3f} N, share {sp['ahead_outside_share']}, "
-                      f"swept {sp['swept_weight_N']:.3f} N")
+                print(
+                    f"    spilled: ahead inside {sp['ahead_inside']:.3f} N, ahead outside {sp['ahead_outside']:.3f} N, "
+                    f"behind outside {sp['behind_outside']:.3f} N, share {sp['ahead_outside_share']}, "
+                    f"swept {sp['swept_weight_N']:.3f} N"
+                )
         if "seed_spread" in e:
             print(f"  seed spread: {e['seed_spread']}")
 

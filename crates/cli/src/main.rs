@@ -19,7 +19,7 @@ mod study_cmd;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    read_case, record_files, write_run_dir, InputError, LoadedCase, OutputError, Override,
+    read_case, record_kept, write_run_dir, InputError, LoadedCase, OutputError, Override,
     PictureError, RecordedRun,
 };
 use soilcut_model::{Case, Simulation};
@@ -57,7 +57,7 @@ Examples:
 const COMPARE_EXAMPLES: &str = "\
 Examples:
   soilcut compare out/original out/fine
-  soilcut compare out/original out/fine --measured tests.csv --out fig7.svg";
+  soilcut compare out/original out/fine --measured tests.csv --out out/fig7.svg";
 
 /// `soilcut --version`: the crate version and the commit it was built from
 /// (`build.rs`; `unknown` when built without git).
@@ -425,9 +425,18 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     warn_accuracy(case, quiet);
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
-    let RecordedRun { files, summary, .. } =
-        record_files(&loaded, &mut sim, || bar.inc(1)).map_err(|e| Failure::input(path, e))?;
+    let RecordedRun {
+        files,
+        summary,
+        stopped,
+        ..
+    } = record_kept(&loaded, &mut sim, || bar.inc(1));
     bar.finish_and_clear();
+    if let Some(e) = stopped {
+        return Err(stopped_run(path, &out, summary.steps, e, || {
+            write_run_dir(&out, &files, force, plots)
+        }));
+    }
     write_run_dir(&out, &files, force, plots).map_err(Failure::output)?;
     if quiet {
         return Ok(());
@@ -441,6 +450,31 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
         out.display()
     );
     Ok(())
+}
+
+/// The error of a run that stopped at `e` after `steps` increments, once
+/// `write` has kept them (if any) in `out`, marked as stopped: the exit
+/// code stays that of bad input.
+fn stopped_run(
+    path: &Path,
+    out: &Path,
+    steps: usize,
+    e: soilcut_model::StepError,
+    write: impl FnOnce() -> Result<(), OutputError>,
+) -> Failure {
+    if steps == 0 {
+        return Failure::input(path, e);
+    }
+    match write() {
+        Ok(()) => Failure::input(
+            path,
+            format!(
+                "{e}; the run stopped there: its {steps} increments are kept in {} (summary.json's \"stopped\" says where and why)",
+                out.display()
+            ),
+        ),
+        Err(w) => Failure::output(w),
+    }
 }
 
 /// A progress bar on stderr, only if it is a terminal and not `quiet`.

@@ -386,6 +386,7 @@ fn default_output_folder_and_result_line() {
     assert_eq!(
         files,
         [
+            ".soilcut",
             "animation.gif",
             "case.resolved.toml",
             "frames.csv",
@@ -488,13 +489,72 @@ fn existing_folder_refused_then_replaced_with_force() {
         "old"
     );
 
-    assert_ok(&run_base(&sandbox, "o", &["--force"]));
+    let o = run_base(&sandbox, "o", &["--force"]);
+    assert_eq!(o.status.code(), Some(2), "soilcut did not write o");
+    assert!(stderr(&o).contains("did not write it"), "{}", stderr(&o));
+    assert!(sandbox.path("o/stale.txt").exists());
+
+    assert_ok(&run_base(&sandbox, "p", &[]));
+    fs::write(sandbox.path("p/stale.txt"), "old").unwrap();
+    assert_ok(&run_base(&sandbox, "p", &["--force"]));
     assert!(
-        !sandbox.path("o/stale.txt").exists(),
-        "--force replaces the folder"
+        !sandbox.path("p/stale.txt").exists(),
+        "--force replaces a folder soilcut wrote"
     );
-    assert!(sandbox.path("o/history.csv").exists());
-    assert_eq!(sandbox.entries(), ["case.toml", "o"], "nothing left aside");
+    assert!(sandbox.path("p/history.csv").exists());
+    assert_eq!(
+        sandbox.entries(),
+        ["case.toml", "o", "p"],
+        "nothing left aside"
+    );
+}
+
+#[test]
+fn a_run_that_stops_keeps_its_increments_marked_as_stopped() {
+    let sandbox = Sandbox::new(BASE);
+    // The bin ends 0.4 beyond the travel: the slip lines reach its wall first.
+    let set = ["--set", "run.travel=80", "--set", "bin.length=80.4"];
+    let o = run_base(&sandbox, "o", &set);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(
+        err.contains("no admissible mechanism at increment") && err.contains("kept in o"),
+        "{err}"
+    );
+    let text = fs::read_to_string(sandbox.path("o/summary.json")).unwrap();
+    let s: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let steps = s["steps"].as_u64().unwrap();
+    assert!(steps > 100, "{text}");
+    assert_eq!(s["stopped"]["increment"].as_u64(), Some(steps + 1));
+    assert!(s["stopped"]["reason"]
+        .as_str()
+        .unwrap()
+        .contains("bin.length"));
+    let history = fs::read_to_string(sandbox.path("o/history.csv")).unwrap();
+    assert_eq!(history.lines().count() as u64, steps + 1, "header and rows");
+    assert!(sandbox.path("o/plots/force.png").exists());
+    assert_ok(&run_base(&sandbox, "p", &[]));
+    let finished = fs::read_to_string(sandbox.path("p/summary.json")).unwrap();
+    assert!(!finished.contains("stopped"), "{finished}");
+}
+
+#[test]
+fn a_file_is_never_replaced_by_an_output_folder() {
+    let sandbox = Sandbox::new(BASE);
+    fs::write(sandbox.path("notes.txt"), "mine").unwrap();
+    for extra in [&[][..], &["--force"]] {
+        let o = run_base(&sandbox, "notes.txt", extra);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}");
+        let err = stderr(&o);
+        assert!(
+            err.starts_with("error: notes.txt: ") && err.contains("not a folder (a file)"),
+            "{err}"
+        );
+    }
+    assert_eq!(
+        fs::read_to_string(sandbox.path("notes.txt")).unwrap(),
+        "mine"
+    );
 }
 
 #[test]

@@ -377,6 +377,13 @@ fn accuracy_judges_one_ensemble_folder_against_another() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("same travel"));
     let o = soilcut(&["accuracy", "a/k+0", "a"], tmp.path());
     assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with("error: a/k+0: a run folder, not an ensemble folder"),
+        "{err}"
+    );
+    let o = soilcut(&["accuracy", "a", "nowhere"], tmp.path());
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("error: nowhere: no such folder"));
 }
 
 #[test]

@@ -2,8 +2,9 @@
 //! README's shell examples run as written and in order, the default build
 //! is the command line's, and `scripts/test` says what it is doing.
 //!
-//! Every line of every `sh` block of README.md (continuations joined,
-//! comments dropped) is one of:
+//! Every line of every `sh` block of README.md and of the user guide's
+//! chapters ([`documents`]: docs/guide/, in its table of contents' order;
+//! continuations joined, comments dropped) is one of:
 //!
 //! 1. `soilcut ARGS` or `cargo run --release -- ARGS`: run with the
 //!    release build `scripts/test` names in `SOILCUT_BIN` (about 2 minutes
@@ -31,14 +32,39 @@ const BUILD_STEPS: &[&str] = &[
     "cargo bench ",
     "cargo doc ",
     "./scripts/test",
+    "./scripts/guide",
     "pip install ",
     "python3 -m venv ",
     ".venv/bin/python docs/scripts/",
     "cc ",
+    "c++ ",
 ];
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The text of the README, then of the user guide's chapters in the order
+/// of docs/guide/index.md's table of contents (its entries in docs/guide/;
+/// the documents beside the guide, as `/model`, have no examples to run).
+pub fn documents() -> String {
+    let guide = root().join("docs/guide");
+    let index = std::fs::read_to_string(guide.join("index.md")).unwrap();
+    let chapters = index
+        .split("```{toctree}")
+        .nth(1)
+        .and_then(|t| t.split("```").next())
+        .expect("a toctree in docs/guide/index.md");
+    let mut text = std::fs::read_to_string(root().join("README.md")).unwrap();
+    for entry in chapters.lines().map(str::trim) {
+        if entry.is_empty() || entry.starts_with([':', '/']) {
+            continue;
+        }
+        let chapter = guide.join(format!("{entry}.md"));
+        text.push('\n');
+        text.push_str(&std::fs::read_to_string(&chapter).unwrap());
+    }
+    text
 }
 
 /// The commands of the README's `sh` blocks, in order: continuation lines
@@ -110,7 +136,7 @@ pub fn copy_dir(from: &Path, to: &Path) {
 
 #[test]
 fn readme_shell_examples_run_in_order() {
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let readme = documents();
     let tmp = tempfile::tempdir().unwrap();
     copy_dir(&root().join("cases"), &tmp.path().join("cases"));
     let soilcut = std::env::var("SOILCUT_BIN").unwrap_or(env!("CARGO_BIN_EXE_soilcut").into());
@@ -142,6 +168,39 @@ fn readme_shell_examples_run_in_order() {
         "lab",
     ] {
         assert!(out.join(made).is_dir(), "out/{made}");
+    }
+    // Beside the cases, only out/, which git ignores: nothing lands in
+    // the repository's root.
+    let mut left: Vec<String> = std::fs::read_dir(tmp.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["cases", "out"]);
+}
+
+/// `cargo install` builds what the tests ran on (Cargo.lock's versions),
+/// and the examples' compilers write into target/, which git ignores.
+#[test]
+fn the_build_steps_are_locked_and_write_into_target() {
+    let readme = documents();
+    let lines = shell_lines(&readme);
+    let installs: Vec<&String> = lines
+        .iter()
+        .filter(|l| l.starts_with("cargo install "))
+        .collect();
+    assert!(!installs.is_empty());
+    for line in installs {
+        assert!(line.contains(" --locked"), "{line}");
+    }
+    let compiles: Vec<&String> = lines
+        .iter()
+        .filter(|l| l.starts_with("cc ") || l.starts_with("c++ "))
+        .collect();
+    assert_eq!(compiles.len(), 2, "the C and the C++ example");
+    for line in compiles {
+        let out = line.split_whitespace().skip_while(|w| *w != "-o").nth(1);
+        assert!(out.is_some_and(|o| o.starts_with("target/")), "{line}");
     }
 }
 
@@ -229,4 +288,28 @@ fn scripts_test_says_what_it_is_doing() {
         previous = command;
     }
     assert!(checked >= 5, "{checked} long steps found");
+}
+
+/// The guide is built in CI, warnings as errors, and its chapters are
+/// among the documents whose examples run.
+#[test]
+fn ci_builds_the_guide_with_warnings_as_errors() {
+    let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
+    assert!(ci.contains("./scripts/guide\n"), "{ci}");
+    let script = std::fs::read_to_string(root().join("scripts/guide")).unwrap();
+    assert!(script.contains("sphinx-build\" -E -W "), "{script}");
+    let text = documents();
+    assert!(text.contains("# Python API reference") && text.contains("# The command line"));
+}
+
+/// CI lints and checks the formatting of every Python file (the package,
+/// examples, docs/, fuzz/, validation/) by the one ruff.toml.
+#[test]
+fn ci_runs_ruff_over_every_python_file() {
+    let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
+    for command in ["ruff\" check .\n", "ruff\" format --check .\n"] {
+        assert!(ci.contains(command), "{command:?} not in .ci/run");
+    }
+    let config = std::fs::read_to_string(root().join("ruff.toml")).unwrap();
+    assert!(!config.contains("exclude = [\"validation") && !config.contains("extend-exclude"));
 }

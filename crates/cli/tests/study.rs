@@ -137,6 +137,10 @@ fn a_sweep_whose_every_run_fails_exits_2_with_its_files() {
     );
     let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
     assert_eq!(csv.lines().filter(|l| l.contains(",failed,")).count(), 2);
+    assert!(
+        !out.join("sweep-soil.friction.initial.png").exists(),
+        "no picture without a point"
+    );
     // One run that works is a sweep that works.
     args[3] = "soil.friction.initial=20,55";
     args.push("--force");
@@ -197,6 +201,30 @@ fn bad_study_arguments_exit_2() {
         "{err}"
     );
     assert!(!tmp.path().join("x").exists());
+}
+
+#[test]
+fn a_missing_measured_curve_is_named_as_such() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (case, out) = (refined(), tmp.path().join("x").display().to_string());
+    let nope = tmp.path().join("nope.csv").display().to_string();
+    let args = [
+        "fit",
+        &case,
+        "--measured",
+        &nope,
+        "--free",
+        "soil.friction.peak",
+        "--out",
+        &out,
+    ];
+    let o = soilcut(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with(&format!("error: {nope}: cannot read the measured curve: ")),
+        "{err}"
+    );
 }
 
 #[test]

@@ -203,20 +203,23 @@ fn the_c_and_cpp_examples_equal_soilcut_run_bit_for_bit() {
 }
 
 #[test]
-fn the_c_example_reports_a_bad_key() {
+fn the_c_and_cpp_examples_report_a_bad_key_naming_the_file_once() {
     let dir = tempfile::tempdir().unwrap();
-    let program = dir.path().join("run-c");
-    build_c(&program);
-    let output = Command::new(&program)
-        .arg(case())
-        .arg("blade.rake=10")
-        .output()
-        .unwrap();
-    assert_eq!(output.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(
-        stderr.starts_with("error: ") && stderr.contains(": blade.rake: "),
-        "{stderr}"
-    );
-    assert!(output.stdout.is_empty());
+    let (c_program, cpp_program) = (dir.path().join("run-c"), dir.path().join("run-cpp"));
+    build_c(&c_program);
+    build_cpp(&cpp_program);
+    for program in [&c_program, &cpp_program] {
+        let output = Command::new(program)
+            .env_remove("LD_LIBRARY_PATH")
+            .arg(case())
+            .arg("blade.rake=10")
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2));
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        let expected = format!("error: {}: blade.rake: ", s(&case()));
+        assert!(stderr.starts_with(&expected), "{stderr}");
+        assert_eq!(stderr.matches(&s(&case())).count(), 1, "{stderr}");
+        assert!(output.stdout.is_empty());
+    }
 }

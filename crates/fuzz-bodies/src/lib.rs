@@ -265,7 +265,7 @@ pub fn check_refused(e: &InputError) -> Outcome {
         InputError::Override { message, .. } => {
             assert!(!message.trim().is_empty(), "override error says nothing")
         }
-        InputError::Read(_) => panic!("no file is read: {e:?}"),
+        InputError::Read(_) | InputError::ReadMeasured(_) => panic!("no file is read: {e:?}"),
     }
     Outcome::Refused
 }

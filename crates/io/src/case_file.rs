@@ -402,7 +402,40 @@ fn schema_error(e: &serde_path_to_error::Error<toml::de::Error>) -> InputError {
         return InputError::key(&key, format!("unknown key{hint}"));
     }
     let key = if path == "." { "case" } else { &path };
-    InputError::key(key, message)
+    InputError::key(
+        key,
+        plain_type_error(message).unwrap_or_else(|| message.into()),
+    )
+}
+
+/// serde's `invalid type: string "abc", expected f64` in the words of the
+/// case file: `expected a number, got the string "abc"` (Rust's type names
+/// mean nothing to a user who wrote TOML).
+fn plain_type_error(message: &str) -> Option<String> {
+    let (got, expected) = message
+        .strip_prefix("invalid type: ")?
+        .rsplit_once(", expected ")?;
+    let expected = match expected {
+        "f64" | "f32" => "a number",
+        "u8" | "u16" | "u32" | "u64" | "usize" | "i32" | "i64" => "a whole number",
+        "a boolean" => "true or false",
+        "a sequence" => "an array",
+        other => other,
+    };
+    let (kind, value) = got.split_once(' ').unwrap_or((got, ""));
+    let kind = match kind {
+        "sequence" => "an array".to_string(),
+        "map" => "a table".to_string(),
+        "integer" => "the whole number".to_string(),
+        "floating" => "the number".to_string(),
+        other => format!("the {other}"),
+    };
+    let value = value.trim_start_matches("point ").replace('`', "");
+    Some(
+        format!("expected {expected}, got {kind} {value}")
+            .trim_end()
+            .to_string(),
+    )
 }
 
 /// The keys of serde's `expected` list (`` one of `a`, `b` `` or `` `a` ``)
@@ -609,9 +642,15 @@ fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
     let increment = *run.increment.get_or_insert_with(|| {
         default_increment(case.model, &case.soil, depth, (on_vertices, scheme))
     });
-    let node_spacing = *run
+    let node_spacing = run
         .node_spacing
-        .get_or_insert_with(|| default_node_spacing(&case.soil, depth, increment));
+        .unwrap_or_else(|| default_node_spacing(&case.soil, depth, increment));
+    // The vertex ground has no nodes: a node spacing it was not given is
+    // not written, so that the resolved file changed to the node grid
+    // takes that grid's default rather than a value the run never used.
+    if !on_vertices {
+        run.node_spacing = Some(node_spacing);
+    }
     case.run.time_scheme = scheme;
     case.run.vertex_spacing = vertex_spacing;
     case.run.increment = increment;
@@ -682,6 +721,29 @@ mod tests {
         match parse_case(text, &overrides) {
             Err(InputError::Key(e)) => e,
             other => panic!("expected a key error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_value_of_the_wrong_type_is_named_in_the_case_files_words() {
+        for (set, said) in [
+            (
+                "run.increment=abc",
+                "expected a number, got the string \"abc\"",
+            ),
+            (
+                "run.increment=true",
+                "expected a number, got the boolean true",
+            ),
+            (
+                "blade.depth_path=3",
+                "expected an array, got the whole number 3",
+            ),
+            ("name=3.5", "expected a string, got the number 3.5"),
+        ] {
+            let e = key_error(ORIGINAL, &[set]);
+            assert_eq!(e.message, said, "{set}");
+            assert!(!e.message.contains("f64"), "{set}");
         }
     }
 
@@ -776,19 +838,47 @@ mod tests {
 
     /// `resolved_grid` and `run.vertex_spacing` (0: the node grid).
     fn resolved_ground(text: &str, overrides: &[&str]) -> (f64, f64, f64, f64) {
+        let given = overrides.iter().any(|o| o.contains("node_spacing"));
         let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
         let loaded = parse_case(text, &overrides).unwrap();
         let run = &loaded.case.run;
         let resolved = loaded.resolved_toml();
         for line in [
             format!("increment = {:?}", run.increment),
-            format!("node_spacing = {:?}", run.node_spacing),
             format!("vertex_spacing = {:?}", run.vertex_spacing),
         ] {
             assert!(resolved.contains(&line), "{line} not in {resolved}");
         }
+        let nodes = format!("node_spacing = {:?}", run.node_spacing);
+        assert_eq!(
+            resolved.contains(&nodes),
+            run.vertex_spacing == 0.0 || given,
+            "{resolved}"
+        );
         let d = loaded.case.blade.depth;
         (d, run.increment, run.node_spacing, run.vertex_spacing)
+    }
+
+    #[test]
+    fn the_vertex_grounds_resolved_case_names_no_node_spacing() {
+        let loaded = parse_case(REFINED, &[]).unwrap();
+        assert!(loaded.case.run.vertex_spacing > 0.0);
+        let resolved = loaded.resolved_toml();
+        assert!(!resolved.contains("node_spacing"), "{resolved}");
+        assert_eq!(parse_case(&resolved, &[]).unwrap().case, loaded.case);
+        // Changed to the node grid, it takes the grid's default at its
+        // increment, as the case file itself would.
+        let v0 = format!("run.increment={:?}", loaded.case.run.increment);
+        let nodes = ["run.vertex_spacing=0", "run.time_scheme=\"explicit\""];
+        let on_nodes = nodes.map(|s| s.parse().unwrap());
+        let from_resolved = parse_case(&resolved, &on_nodes).unwrap();
+        let mut and_increment = on_nodes.to_vec();
+        and_increment.push(v0.parse().unwrap());
+        let from_file = parse_case(REFINED, &and_increment).unwrap();
+        assert_eq!(
+            from_resolved.case.run.node_spacing,
+            from_file.case.run.node_spacing
+        );
     }
 
     #[test]

@@ -10,6 +10,8 @@ use std::path::{Path, PathBuf};
 pub enum InputError {
     /// The case file could not be read at all.
     Read(std::io::Error),
+    /// A measured curve's file could not be read at all.
+    ReadMeasured(std::io::Error),
     /// The file is not valid TOML.
     Syntax {
         /// Line of the error, from 1.
@@ -46,6 +48,11 @@ impl fmt::Display for InputError {
             InputError::Read(e) => {
                 write!(f, "cannot read the case file: {}", one_line(&e.to_string()))
             }
+            InputError::ReadMeasured(e) => write!(
+                f,
+                "cannot read the measured curve: {}",
+                one_line(&e.to_string())
+            ),
             InputError::Syntax { line, message } => write!(f, "line {line}: {message}"),
             InputError::Key(e) => write!(f, "{e}"),
             InputError::Override { text, message } => {
@@ -64,6 +71,11 @@ pub enum OutputError {
     Exists(PathBuf),
     /// `force` cannot replace a path without a folder name (`.`, `..`, `/`).
     Unnamed(PathBuf),
+    /// The path exists and is not a folder (a file): never replaced.
+    NotAFolder(PathBuf),
+    /// `force` was given, but the folder holds no
+    /// [`OUTPUT_MARKER`](crate::OUTPUT_MARKER): soilcut did not write it.
+    NotOurs(PathBuf),
     /// A file system operation failed.
     Io {
         /// The path the operation was on.
@@ -85,6 +97,8 @@ impl OutputError {
         match self {
             OutputError::Exists(path)
             | OutputError::Unnamed(path)
+            | OutputError::NotAFolder(path)
+            | OutputError::NotOurs(path)
             | OutputError::Io { path, .. } => path,
         }
     }
@@ -100,6 +114,15 @@ impl fmt::Display for OutputError {
             OutputError::Unnamed(_) => write!(
                 f,
                 "cannot replace a folder given without a name (such as . or ..); choose another --out"
+            ),
+            OutputError::NotAFolder(_) => write!(
+                f,
+                "exists and is not a folder (a file); soilcut writes its outputs into a folder and never replaces a file: choose another --out"
+            ),
+            OutputError::NotOurs(_) => write!(
+                f,
+                "output folder exists and soilcut did not write it (it holds no {} file); --force replaces only soilcut's own output folders: choose another --out",
+                crate::OUTPUT_MARKER
             ),
             OutputError::Io { source, .. } => write!(f, "{}", one_line(&source.to_string())),
         }

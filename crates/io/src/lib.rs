@@ -63,9 +63,9 @@ pub use measured::{
 };
 pub use output::{
     check_output_dir, peak_prominence_rule, profile_columns, write_output_dir,
-    write_output_dir_then, RunOutput, RunTables, PROFILE_HEADER,
+    write_output_dir_then, RunOutput, RunTables, OUTPUT_MARKER, PROFILE_HEADER,
 };
 pub use overrides::{parse_value, Override};
 #[cfg(feature = "pictures")]
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
-pub use record::{record_files, record_run, RecordedRun, ANIMATION_FRAMES};
+pub use record::{record_files, record_kept, record_run, RecordedRun, ANIMATION_FRAMES};

@@ -28,7 +28,7 @@ pub fn read_measured(path: &Path) -> Result<Vec<(f64, f64)>, InputError> {
 
 /// Reads a measured curve with its weights.
 pub fn read_measured_curve(path: &Path) -> Result<MeasuredCurve, InputError> {
-    let bytes = std::fs::read(path).map_err(InputError::Read)?;
+    let bytes = std::fs::read(path).map_err(InputError::ReadMeasured)?;
     parse_measured_bytes(&bytes)
 }
 

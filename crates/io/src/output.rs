@@ -12,7 +12,7 @@ use serde::Serialize;
 use soilcut_model::summary::{
     sheared_fraction, JUMP_DEPTHS, PEAK_PROMINENCE, SHEARED_REACH_DEPTHS, SHEARED_THRESHOLD,
 };
-use soilcut_model::{ProfilePoint, StepRecord, Summary};
+use soilcut_model::{ProfilePoint, StepError, StepRecord, Summary};
 use std::fs;
 use std::path::{Path, PathBuf};
 
@@ -33,6 +33,9 @@ pub struct RunOutput<'a> {
     pub candidate_evaluations: u64,
     /// Time spent in the simulation, seconds.
     pub wall_time_s: f64,
+    /// Why the run stopped before its end, if it did: `history` then holds
+    /// the increments before the one that failed.
+    pub stopped: Option<&'a StepError>,
 }
 
 impl RunOutput<'_> {
@@ -112,6 +115,7 @@ impl RunOutput<'_> {
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
+            stopped: self.stopped.map(|e| StoppedJson::new(e, case.blade.depth)),
         }
     }
 }
@@ -210,6 +214,35 @@ struct SummaryJson<'a> {
     steps: usize,
     candidate_evaluations: u64,
     wall_time_s: f64,
+    // Only in the summary of a run that stopped: a finished run's file is
+    // as it was before runs could stop and keep their files.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stopped: Option<StoppedJson>,
+}
+
+/// Where and why a run stopped before its end.
+#[derive(Serialize)]
+struct StoppedJson {
+    /// The increment that failed (from 1); `steps` were made before it.
+    increment: usize,
+    /// u/d at the start of that increment.
+    u_over_d: f64,
+    reason: String,
+}
+
+impl StoppedJson {
+    fn new(e: &StepError, depth: f64) -> Self {
+        let (increment, u) = match *e {
+            StepError::NoAdmissibleMechanism { step, u }
+            | StepError::NoMechanismBeforeWall { step, u, .. } => (step, u),
+            StepError::TravelReached { steps } => (steps + 1, f64::NAN),
+        };
+        StoppedJson {
+            increment,
+            u_over_d: u / depth,
+            reason: e.to_string(),
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -218,15 +251,33 @@ struct PeakJson {
     force_norm: f64,
 }
 
-/// Whether `dir` is free for outputs: absent or an empty folder, or
-/// anything at all with `force`. Reads only.
+/// The file by which soilcut knows an output folder as its own: every
+/// folder it writes holds it, and `force` replaces no folder without it,
+/// so that a mistyped `--out` never deletes the user's files.
+pub const OUTPUT_MARKER: &str = ".soilcut";
+
+/// What [`OUTPUT_MARKER`] says to a person who finds it.
+fn marker_text() -> String {
+    format!(
+        "Written by soilcut {}. soilcut's --force (force=True in Python) replaces only folders holding this file.\n",
+        env!("CARGO_PKG_VERSION")
+    )
+}
+
+/// Whether `dir` is free for outputs: absent or an empty folder, or, with
+/// `force`, a folder soilcut wrote (holding [`OUTPUT_MARKER`]). Reads only.
 pub fn check_output_dir(dir: &Path, force: bool) -> Result<(), OutputError> {
-    if !occupied(dir)? {
+    let err = |make: fn(PathBuf) -> OutputError| Err(make(dir.to_path_buf()));
+    if dir.symlink_metadata().is_ok() && !dir.is_dir() {
+        err(OutputError::NotAFolder)
+    } else if !occupied(dir)? {
         Ok(())
     } else if !force {
-        Err(OutputError::Exists(dir.to_path_buf()))
+        err(OutputError::Exists)
     } else if dir.file_name().is_none() {
-        Err(OutputError::Unnamed(dir.to_path_buf()))
+        err(OutputError::Unnamed)
+    } else if !dir.join(OUTPUT_MARKER).is_file() {
+        err(OutputError::NotOurs)
     } else {
         Ok(())
     }
@@ -267,7 +318,8 @@ pub fn write_output_dir_then(
     };
     fs::create_dir_all(&parent).map_err(OutputError::io(&parent))?;
     let staging = Staging::create(&parent, dir, "tmp")?;
-    for (name, contents) in files {
+    let marker = (OUTPUT_MARKER, marker_text());
+    for (name, contents) in files.iter().chain([&marker]) {
         let path = staging.path.join(name);
         fs::write(&path, contents).map_err(OutputError::io(&path))?;
     }
@@ -365,6 +417,32 @@ mod tests {
         assert!(!dir.join("stale.txt").exists(), "force replaces the folder");
         let leftovers: Vec<_> = fs::read_dir(dir.parent().unwrap()).unwrap().collect();
         assert_eq!(leftovers.len(), 1, "no staging folders left behind");
+    }
+
+    #[test]
+    fn force_replaces_only_what_soilcut_wrote() {
+        let tmp = tempfile::tempdir().unwrap();
+        let file = tmp.path().join("notes.txt");
+        fs::write(&file, "mine").unwrap();
+        let foreign = tmp.path().join("mine");
+        fs::create_dir(&foreign).unwrap();
+        fs::write(foreign.join("notes.txt"), "mine").unwrap();
+        for force in [false, true] {
+            let e = write_output_dir(&file, &files(), force).unwrap_err();
+            assert!(matches!(e, OutputError::NotAFolder(_)), "{e:?}");
+            assert!(e.to_string().contains("not a folder"), "{e}");
+        }
+        let e = write_output_dir(&foreign, &files(), true).unwrap_err();
+        assert!(matches!(e, OutputError::NotOurs(_)), "{e:?}");
+        assert_eq!(fs::read_to_string(&file).unwrap(), "mine");
+        assert_eq!(
+            fs::read_to_string(foreign.join("notes.txt")).unwrap(),
+            "mine"
+        );
+        let ours = tmp.path().join("ours");
+        write_output_dir(&ours, &files(), false).unwrap();
+        assert!(ours.join(OUTPUT_MARKER).is_file());
+        write_output_dir(&ours, &files(), true).unwrap();
     }
 
     #[test]

@@ -249,41 +249,76 @@ impl Deformation<'_> {
             ),
         ];
         if !self.run.ridges.is_empty() {
-            entries.push((
-                "side heaps' crest beside the blade".to_string(),
-                Mark::Dashed(theme::RIDGE),
-            ));
+            entries.push(if crest_stretches(self.run, f64::INFINITY).is_empty() {
+                (
+                    "side heaps' crest: level with the ground surface".to_string(),
+                    Mark::Line(theme::GROUND_EDGE),
+                )
+            } else {
+                (
+                    "side heaps' crest beside the blade".to_string(),
+                    Mark::Dashed(theme::RIDGE),
+                )
+            });
         }
         Legend::new(entries, WIDTH - 60, PAPER)
     }
 }
 
 /// The crest of the side heaps beside a blade of finite width (dashed), over
-/// the ground in front of the blade.
+/// the ground in front of the blade, where it stands off the ground
+/// surface.
 fn draw_ridges<'a, DB: DrawingBackend + 'a>(
     chart: &mut Chart<'a, DB>,
     run: &RunData,
     ext: Extent,
 ) -> DrawResult {
-    if run.ridges.is_empty() {
-        return Ok(());
+    for stretch in crest_stretches(run, ext.x.1) {
+        chart
+            .draw_series(DashedLineSeries::new(
+                thin(chart, &stretch),
+                10,
+                6,
+                theme::RIDGE.stroke_width(PAPER.line),
+            ))
+            .map_err(text)?;
     }
-    let d = run.depth;
-    let crest: Vec<(f64, f64)> = run
-        .ridges
-        .iter()
-        .map(|&(x, h)| (x / d, h / d))
-        .filter(|p| p.0 <= ext.x.1)
-        .collect();
-    chart
-        .draw_series(DashedLineSeries::new(
-            thin(chart, &crest),
-            10,
-            6,
-            theme::RIDGE.stroke_width(PAPER.line),
-        ))
-        .map_err(text)?;
     Ok(())
+}
+
+/// The stretches of the side heaps' crest (in d, up to x = `x_max`) that
+/// stand off the final ground surface by more than a line's width (d/200):
+/// where the crest is the ground's own height, a dashed line on the ground
+/// line would hide it and say nothing.
+fn crest_stretches(run: &RunData, x_max: f64) -> Vec<Vec<(f64, f64)>> {
+    const APART: f64 = 0.005;
+    let d = run.depth;
+    let ground: Vec<(f64, f64)> = run.profile.iter().map(|p| (p.x / d, p.y / d)).collect();
+    let mut stretches: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut current = Vec::new();
+    for &(x, h) in &run.ridges {
+        let p = (x / d, h / d);
+        let off = p.0 <= x_max && ground_at(&ground, p.0).is_some_and(|y| (p.1 - y).abs() > APART);
+        if off {
+            current.push(p);
+        } else if !current.is_empty() {
+            stretches.push(std::mem::take(&mut current));
+        }
+    }
+    stretches.push(current);
+    stretches.retain(|s| s.len() >= 2);
+    stretches
+}
+
+/// The height of `ground` (points in increasing x) at `x`, linearly
+/// between its points; None outside them.
+fn ground_at(ground: &[(f64, f64)], x: f64) -> Option<f64> {
+    let i = ground.partition_point(|p| p.0 < x);
+    match (i.checked_sub(1).and_then(|k| ground.get(k)), ground.get(i)) {
+        (_, Some(b)) if b.0 == x => Some(b.1),
+        (Some(a), Some(b)) => Some(a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0)),
+        _ => None,
+    }
 }
 
 /// For each pixel column of `points`: its first x and largest value, so
@@ -500,4 +535,53 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
     let style = font(sizes.desc).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new("u/d (–)", (x + 10, y + 12), style))
         .map_err(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SurfacePoint;
+
+    fn run(ridges: Vec<(f64, f64)>) -> RunData {
+        let profile = (0..=10)
+            .map(|k| SurfacePoint {
+                x: f64::from(k),
+                y: 5.0 - 0.5 * f64::from(k),
+                accumulated_shear: 0.0,
+            })
+            .collect();
+        RunData {
+            title: "t".into(),
+            depth: 10.0,
+            rake: 90.0,
+            unit_weight: 1.0,
+            band_width: 0.0,
+            history: Vec::new(),
+            profile,
+            frames: Vec::new(),
+            ridges,
+        }
+    }
+
+    /// A crest level with the ground is not drawn over the ground line;
+    /// one standing above it is.
+    #[test]
+    fn the_crest_is_drawn_only_off_the_ground() {
+        let level: Vec<(f64, f64)> = (0..=10)
+            .map(|k| (f64::from(k), 5.0 - 0.5 * f64::from(k)))
+            .collect();
+        assert!(crest_stretches(&run(level), f64::INFINITY).is_empty());
+        let raised: Vec<(f64, f64)> = (0..=10)
+            .map(|k| {
+                (
+                    f64::from(k),
+                    5.0 - 0.5 * f64::from(k) + if k < 5 { 1.0 } else { 0.0 },
+                )
+            })
+            .collect();
+        let stretches = crest_stretches(&run(raised), f64::INFINITY);
+        assert_eq!(stretches.len(), 1);
+        assert_eq!(stretches[0].len(), 5);
+        assert_eq!(stretches[0][0], (0.0, 0.6));
+    }
 }

@@ -174,28 +174,44 @@ impl Picture for LandscapeMap {
             "distance ahead of the blade tip / d (–)",
             PAPER,
         )?;
-        let cells = self.columns.iter().flat_map(|(u, bins)| {
-            bins.iter().map(move |&(start, ratio)| {
-                let colour = if ratio == 1.0 {
-                    RED
-                } else {
-                    LEVELS
-                        .iter()
-                        .position(|l| ratio - 1.0 <= l.0)
-                        .map_or(theme::GRID, level_colour)
-                };
-                Rectangle::new(
-                    [(*u, start), (u + width, start + self.bin)],
-                    colour.filled(),
-                )
-            })
-        });
+        let spans = self.column_spans();
+        let cells = self
+            .columns
+            .iter()
+            .zip(spans)
+            .flat_map(|((_, bins), (u, end))| {
+                bins.iter().map(move |&(start, ratio)| {
+                    let colour = if ratio == 1.0 {
+                        RED
+                    } else {
+                        LEVELS
+                            .iter()
+                            .position(|l| ratio - 1.0 <= l.0)
+                            .map_or(theme::GRID, level_colour)
+                    };
+                    Rectangle::new([(u, start), (end, start + self.bin)], colour.filled())
+                })
+            });
         chart.draw_series(cells).map_err(text)?;
         Ok(())
     }
 }
 
 impl LandscapeMap {
+    /// Each column's (start, end) in u/d: to the next column's start, so
+    /// that columns a whole increment apart, whose spacing in u/d varies
+    /// by rounding, leave no white seam between them; the last one as
+    /// wide as the narrowest.
+    fn column_spans(&self) -> Vec<(f64, f64)> {
+        let width = self.column_width();
+        let starts: Vec<f64> = self.columns.iter().map(|c| c.0).collect();
+        starts
+            .iter()
+            .enumerate()
+            .map(|(i, &u)| (u, starts.get(i + 1).copied().unwrap_or(u + width)))
+            .collect()
+    }
+
     /// The smallest spacing of the columns in u/d (1 for a single one).
     fn column_width(&self) -> f64 {
         self.columns
@@ -203,5 +219,29 @@ impl LandscapeMap {
             .map(|w| w[1].0 - w[0].0)
             .fold(f64::INFINITY, f64::min)
             .min(1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Columns whose spacing varies by an increment's rounding abut: no
+    /// white seam between them.
+    #[test]
+    fn columns_abut_without_seams() {
+        let map = LandscapeMap {
+            title: "t".into(),
+            bin: 0.1,
+            columns: [0.0, 0.097, 0.2, 0.297]
+                .into_iter()
+                .map(|u| (u, vec![(0.0, 1.0)]))
+                .collect(),
+        };
+        let spans = map.column_spans();
+        for pair in spans.windows(2) {
+            assert_eq!(pair[0].1, pair[1].0, "{spans:?}");
+        }
+        assert!((spans[3].1 - 0.394).abs() < 1e-12, "{spans:?}");
     }
 }

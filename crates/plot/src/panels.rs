@@ -2,19 +2,27 @@
 //! parameter studies (sweep, fit, convergence), which plot any quantity
 //! against any other.
 
+use crate::axes::{title_height, titled};
 use crate::error::{text, DrawResult};
 use crate::render::{save, Picture};
-use crate::theme::{FAMILY, SERIES};
+use crate::theme::{font, GRID, SERIES};
 use crate::PlotError;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
 /// Panel size in pixels.
-const PANEL: (u32, u32) = (600, 420);
-/// Height of the title band.
-const TITLE_HEIGHT: u32 = 50;
-
+const PANEL: (u32, u32) = (600, 450);
+/// The narrowest picture: a single column of panels is as wide as the
+/// run's pictures, so that its text is the same size beside them.
+const MIN_WIDTH: u32 = 1200;
+/// Title, axis descriptions, tick labels and legend entries, px: at 150
+/// dpi about 12, 9.5, 8 and 8 pt (the run's pictures: 14, 12.5, 10.5).
+const TITLE: u32 = 26;
+const DESC: u32 = 20;
+const TICK: u32 = 17;
+const LEGEND: u32 = 17;
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SeriesMark {
@@ -67,7 +75,8 @@ pub struct Panel {
 }
 
 /// Draws `panels`, `columns` to a row under `title`, into `path` (PNG or
-/// SVG by its extension), each panel 600 × 420 px.
+/// SVG by its extension), each panel 600 × 450 px, the picture at least
+/// 1200 px wide (a single column's panels widen).
 pub fn draw_panels(
     title: &str,
     panels: &[Panel],
@@ -96,8 +105,8 @@ struct Panels<'a> {
 impl Picture for Panels<'_> {
     fn size(&self) -> (u32, u32) {
         (
-            PANEL.0 * self.columns as u32,
-            PANEL.1 * self.rows as u32 + TITLE_HEIGHT,
+            (PANEL.0 * self.columns as u32).max(MIN_WIDTH),
+            PANEL.1 * self.rows as u32 + title_height(TITLE),
         )
     }
 
@@ -105,8 +114,7 @@ impl Picture for Panels<'_> {
     /// among them, so that no panel is left empty.
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
         root.fill(&WHITE).map_err(text)?;
-        let (top, body) = root.split_vertically(TITLE_HEIGHT);
-        top.titled(self.title, (FAMILY, 26)).map_err(text)?;
+        let body = titled(root, self.title, TITLE)?;
         let rows = body.split_evenly((self.rows, 1));
         for (panels, row) in self.panels.chunks(self.columns).zip(&rows) {
             for (panel, area) in panels.iter().zip(&row.split_evenly((1, panels.len()))) {
@@ -127,7 +135,13 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     if !lo.is_finite() {
         return (0.0, 1.0);
     }
-    let span = hi - lo;
+    // Values that differ by round-off only are one value: an axis spanning
+    // 10⁻⁹ of them would label every tick alike.
+    let span = match hi - lo {
+        span if span <= 1e-9 * lo.abs().max(hi.abs()) => 0.0,
+        span => span,
+    };
+    let (lo, hi) = if span == 0.0 { (lo, lo) } else { (lo, hi) };
     let pad = if span > 0.0 {
         0.05 * span
     } else if lo != 0.0 {
@@ -139,6 +153,20 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) -> DrawResult {
+    let (scale, y_label) = y_scale(panel);
+    let scaled = Panel {
+        x_label: panel.x_label.clone(),
+        y_label,
+        series: panel
+            .series
+            .iter()
+            .map(|s| Series {
+                points: s.points.iter().map(|p| (p.0, p.1 * scale)).collect(),
+                ..s.clone()
+            })
+            .collect(),
+    };
+    let panel = &scaled;
     let all = || panel.series.iter().flat_map(|s| s.points.iter());
     let (x0, x1) = range(all().map(|p| p.0));
     let (y0, y1) = range(all().map(|p| p.1));
@@ -149,65 +177,212 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
         false => span_tick(x, x1 - x0),
     };
     let mut chart = ChartBuilder::on(area)
-        .margin(12)
-        .x_label_area_size(48)
-        .y_label_area_size(78)
+        .margin(14)
+        .margin_right(24)
+        .x_label_area_size(DESC * 3)
+        .y_label_area_size(DESC * 5 + 10)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(text)?;
     chart
         .configure_mesh()
         .x_desc(panel.x_label.as_str())
         .y_desc(panel.y_label.as_str())
-        .axis_desc_style((FAMILY, 18))
-        .label_style((FAMILY, 14))
-        .light_line_style(RGBColor(235, 235, 235))
-        .x_labels(6)
+        .axis_desc_style(font(DESC))
+        .label_style(font(TICK))
+        .bold_line_style(GRID)
+        .light_line_style(TRANSPARENT)
+        // Whole numbers only: a tick (and its grid line) at each of them,
+        // none between.
+        .x_labels(match whole {
+            true => ((x1 - x0).floor() as usize + 1).clamp(2, 6),
+            false => 6,
+        })
         .y_labels(6)
         .x_label_formatter(&|x| x_tick(*x))
         .y_label_formatter(&|y| span_tick(*y, y1 - y0))
         .draw()
         .map_err(text)?;
-    let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
     for (i, s) in panel.series.iter().enumerate() {
-        let colour = SERIES[i % SERIES.len()];
-        let points: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
-        let drawn = match s.mark {
-            SeriesMark::Points => chart
-                .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
-                .map_err(text)?,
-            SeriesMark::Line => chart
-                .draw_series(LineSeries::new(points, colour.stroke_width(2)))
-                .map_err(text)?,
-        };
-        if !s.label.is_empty() {
-            drawn.label(s.label.as_str()).legend(move |(x, y)| {
-                PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(3))
-            });
-        }
+        draw_series(&mut chart, s, SERIES[i % SERIES.len()])?;
     }
     if panel.series.iter().any(|s| !s.label.is_empty()) {
+        let corner = legend_corner(panel, (x0, x1), (y0, y1), legend_box(panel, area));
         chart
             .configure_series_labels()
-            .label_font((FAMILY, 14))
-            .background_style(WHITE.mix(0.85))
+            .label_font(font(LEGEND))
+            .background_style(WHITE.mix(0.9))
             .border_style(RGBColor(180, 180, 180))
-            .position(SeriesLabelPosition::UpperLeft)
+            .position(corner)
             .draw()
             .map_err(text)?;
     }
     Ok(())
 }
 
+type PanelChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The power of ten a panel's y values are shown in, with the axis label
+/// saying so: values below 10⁻³ or from 10⁵ on read as 1.07 (×10⁻¹⁵), and
+/// plotters' ticks on spans of 10⁻¹⁵ fell outside the panel.
+fn y_scale(panel: &Panel) -> (f64, String) {
+    let largest = panel
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1.abs()))
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    if largest == 0.0 || (1e-3..1e5).contains(&largest) {
+        return (1.0, panel.y_label.clone());
+    }
+    let exponent = largest.log10().floor() as i32;
+    let label = match panel.y_label.rsplit_once(" (") {
+        Some((name, unit)) => format!("{name} (×10{} {unit}", superscript(exponent)),
+        None => format!("{} (×10{})", panel.y_label, superscript(exponent)),
+    };
+    (10f64.powi(-exponent), label.replace(" –)", ")"))
+}
+
+fn superscript(n: i32) -> String {
+    n.to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => "⁰¹²³⁴⁵⁶⁷⁸⁹"
+                .chars()
+                .nth(d.to_digit(10).unwrap_or(0) as usize)
+                .unwrap_or(d),
+        })
+        .collect()
+}
+
+/// A series: dots (smaller where there are many), or a line broken where a value is missing (a lone
+/// point between gaps is a dot, which a line of one point would not
+/// show); its legend entry drawn as the series is.
+fn draw_series<'a, DB: DrawingBackend + 'a>(
+    chart: &mut PanelChart<'a, DB>,
+    s: &Series,
+    colour: RGBColor,
+) -> DrawResult {
+    // Many dots shrink, so that a line drawn over them (a fit over the
+    // measured points) stays visible.
+    let radius = if s.points.len() > 60 { 2 } else { 4 };
+    let dot = move |p: (f64, f64)| Circle::new(p, radius, colour.filled());
+    for run in finite_runs(&s.points) {
+        match (s.mark, run) {
+            (SeriesMark::Points, _) | (SeriesMark::Line, [_]) => {
+                chart
+                    .draw_series(run.iter().map(|&p| dot(p)))
+                    .map_err(text)?;
+            }
+            (SeriesMark::Line, _) => {
+                let line = LineSeries::new(run.iter().copied(), colour.stroke_width(2));
+                chart.draw_series(line).map_err(text)?;
+            }
+        }
+    }
+    if !s.label.is_empty() {
+        // One element type for both marks: the one not drawn is transparent.
+        let (dot, line) = match s.mark {
+            SeriesMark::Points => (colour.filled(), TRANSPARENT.stroke_width(0)),
+            SeriesMark::Line => (TRANSPARENT.filled(), colour.stroke_width(3)),
+        };
+        chart
+            .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
+            .map_err(text)?
+            .label(s.label.as_str())
+            .legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + Circle::new((10, 0), 5, dot)
+                    + PathElement::new([(0, 0), (20, 0)], line)
+            });
+    }
+    Ok(())
+}
+
+/// The runs of consecutive finite points: a line is not drawn across a
+/// missing value.
+fn finite_runs(points: &[(f64, f64)]) -> impl Iterator<Item = &[(f64, f64)]> {
+    points
+        .split(|p| !(p.0.is_finite() && p.1.is_finite()))
+        .filter(|run| !run.is_empty())
+}
+
+/// The legend's size as fractions of the plotting area (estimated from
+/// its text).
+fn legend_box<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) -> (f64, f64) {
+    let labels: Vec<&str> = panel
+        .series
+        .iter()
+        .filter(|s| !s.label.is_empty())
+        .map(|s| s.label.as_str())
+        .collect();
+    let widest = labels
+        .iter()
+        .map(|l| area.estimate_text_size(l, &font(LEGEND)).map_or(0, |b| b.0))
+        .max()
+        .unwrap_or(0);
+    let (w, h) = area.dim_in_pixel();
+    let plot_w = f64::from(w.saturating_sub(DESC * 4 + 50).max(1));
+    let plot_h = f64::from(h.saturating_sub(DESC * 3 + 30).max(1));
+    let box_w = f64::from(widest + 50);
+    let box_h = f64::from(LEGEND * 3 / 2) * labels.len() as f64 + 14.0;
+    (box_w / plot_w, box_h / plot_h)
+}
+
+/// The corner of the plotting area whose legend box of `size` (fractions
+/// of the area) covers the fewest points of the series, lines followed
+/// between their points: the legend hides as little as it can.
+fn legend_corner(
+    panel: &Panel,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+    (w, h): (f64, f64),
+) -> SeriesLabelPosition {
+    let scaled = |p: &(f64, f64)| ((p.0 - x0) / (x1 - x0), (p.1 - y0) / (y1 - y0));
+    let mut samples = Vec::new();
+    for s in &panel.series {
+        for run in finite_runs(&s.points) {
+            samples.push(scaled(&run[0]));
+            for pair in run.windows(2) {
+                let (a, b) = (scaled(&pair[0]), scaled(&pair[1]));
+                samples.extend((1..=16).map(|k| {
+                    let t = f64::from(k) / 16.0;
+                    (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+                }));
+            }
+        }
+    }
+    let corners = [
+        (SeriesLabelPosition::UpperLeft, (0.0, 1.0 - h)),
+        (SeriesLabelPosition::UpperRight, (1.0 - w, 1.0 - h)),
+        (SeriesLabelPosition::LowerRight, (1.0 - w, 0.0)),
+        (SeriesLabelPosition::LowerLeft, (0.0, 0.0)),
+    ];
+    let covered = |(left, bottom): (f64, f64)| {
+        samples
+            .iter()
+            .filter(|p| p.0 >= left && p.0 <= left + w && p.1 >= bottom && p.1 <= bottom + h)
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|(_, at)| covered(*at))
+        .map(|(corner, _)| corner)
+        .unwrap_or(SeriesLabelPosition::UpperLeft)
+}
+
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
 /// apart and no trailing zeros (1, 2.5, not 1.00, 2.50), or scientific
-/// notation for very small or large spans.
+/// notation, with as many digits, for very small or large values.
 fn span_tick(value: f64, span: f64) -> String {
+    let magnitude = value.abs().max(span);
     if value.abs() < 1e-9 * span {
         "0".to_string()
-    } else if !(1e-3..1e5).contains(&span) {
-        format!("{value:.2e}")
+    } else if !(1e-3..1e5).contains(&magnitude) {
+        let digits = ((magnitude / span).log10().ceil() + 1.0).clamp(2.0, 12.0) as usize;
+        format!("{value:.digits$e}")
     } else {
-        let decimals = (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize;
+        let decimals = (2.0 - span.log10().floor()).clamp(0.0, 12.0) as usize;
         let fixed = format!("{value:.decimals$}");
         match fixed.contains('.') {
             true => fixed
@@ -232,6 +407,99 @@ mod tests {
         assert_eq!(span_tick(2e-15, 4e-15), "2.00e-15");
         assert_eq!(span_tick(1500.0, 2000.0), "1500");
         assert_eq!(span_tick(-1.26e-29, 1e-13), "0");
+    }
+
+    #[test]
+    fn ticks_of_a_narrow_span_differ() {
+        let labels: Vec<String> = [1.3201, 1.3202, 1.3203]
+            .iter()
+            .map(|&v| span_tick(v, 0.0004))
+            .collect();
+        assert_eq!(labels, ["1.3201", "1.3202", "1.3203"]);
+        let small: Vec<String> = [1.0e-7, 1.1e-7]
+            .iter()
+            .map(|&v| span_tick(v, 2e-8))
+            .collect();
+        assert_ne!(small[0], small[1]);
+        // Round-off differences are one value, drawn with a margin around it.
+        let (lo, hi) = range([1.32, 1.32 + 2e-16].into_iter());
+        assert!(hi - lo > 0.1, "{lo} {hi}");
+    }
+
+    #[test]
+    fn tiny_values_are_shown_in_a_power_of_ten_named_on_the_axis() {
+        let panel = Panel {
+            x_label: "x".into(),
+            y_label: "mass drift Δm/m₀ (–)".into(),
+            series: vec![Series::points("", vec![(1.0, -1.07e-15), (2.0, 3e-17)])],
+        };
+        let (scale, label) = y_scale(&panel);
+        assert_eq!(scale, 1e15);
+        assert_eq!(label, "mass drift Δm/m₀ (×10⁻¹⁵)");
+        let plain = Panel {
+            y_label: "P (γ·length²)".into(),
+            series: vec![Series::points("", vec![(1.0, 3.0)])],
+            ..panel
+        };
+        assert_eq!(y_scale(&plain), (1.0, "P (γ·length²)".to_string()));
+    }
+
+    #[test]
+    fn a_line_breaks_at_a_missing_value() {
+        let p = [
+            (0.0, 1.0),
+            (1.0, f64::NAN),
+            (2.0, 3.0),
+            (3.0, 4.0),
+            (4.0, f64::NAN),
+        ];
+        let runs: Vec<&[(f64, f64)]> = finite_runs(&p).collect();
+        assert_eq!(runs, [&p[0..1], &p[2..4]]);
+    }
+
+    #[test]
+    fn the_legend_goes_where_it_covers_the_fewest_points() {
+        let panel = |points: Vec<(f64, f64)>| Panel {
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series: vec![Series::line("a", points)],
+        };
+        // A line starting high at the left: not the upper left corner.
+        let falling = panel(vec![(0.0, 10.0), (10.0, 0.0)]);
+        let corner = legend_corner(&falling, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperRight),
+            "{corner:?}"
+        );
+        let rising = panel(vec![(0.0, 0.0), (10.0, 10.0)]);
+        let corner = legend_corner(&rising, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperLeft),
+            "{corner:?}"
+        );
+    }
+
+    /// A single column is as wide as the run's pictures, and the title
+    /// sits clear of the top edge.
+    #[test]
+    fn one_column_is_full_width_and_the_title_is_clear_of_the_top() {
+        let panels = [Panel {
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series: vec![Series::points("", vec![(1.0, 1.0), (2.0, 3.0)])],
+        }];
+        let picture = Panels {
+            title: "A title",
+            panels: &panels,
+            columns: 1,
+            rows: 1,
+        };
+        let (w, _) = picture.size();
+        assert_eq!(w, 1200);
+        let pixels = crate::render::rgb(&picture).unwrap();
+        let row = w as usize * 3;
+        let first_inked = pixels.chunks(row).position(|r| r.iter().any(|&c| c != 255));
+        assert!(first_inked.is_some_and(|y| y >= 10), "{first_inked:?}");
     }
 
     /// Three panels two to a row: the third spans the last row, whose right

@@ -89,10 +89,12 @@ impl Case {
 }
 
 /// Whether a string given where a case is expected is a case file's path,
-/// not its text: one line ending in `.toml` or naming a file (a case's
-/// text has a `key = value` line at least, and no file is named so).
+/// not its text: one line ending in `.toml`, naming a file or without `=`
+/// (a case's text has a `key = value` line at least, and no file is named
+/// so), so that a mistyped path is reported as a missing file.
 fn names_a_file(text: &str) -> bool {
-    !text.contains('\n') && (text.trim_end().ends_with(".toml") || Path::new(text).is_file())
+    !text.contains('\n')
+        && (text.trim_end().ends_with(".toml") || !text.contains('=') || Path::new(text).is_file())
 }
 
 #[pymethods]

@@ -4,11 +4,11 @@
 
 use crate::case::Case;
 use crate::convert::{arrays, json};
-use crate::errors::{case_error, detached};
+use crate::errors::{case_error, detached, step_error, stopped_error};
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_io::{record_files, Columns, LoadedCase, OutputError, RecordedRun, RunTables};
+use soilcut_io::{record_kept, Columns, LoadedCase, OutputError, RecordedRun, RunTables};
 use soilcut_model::Simulation;
 use std::path::PathBuf;
 
@@ -107,8 +107,13 @@ pub fn run(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<RunRecords> {
     let loaded = &case.get().loaded;
     crate::errors::warn_accuracy(py, &loaded.case)?;
     let mut sim = Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
-    let run = detached(py, || record_files(loaded, &mut sim, || {}))?;
-    Ok(RunRecords::new(loaded.clone(), &run))
+    let run = detached(py, || Ok(record_kept(loaded, &mut sim, || {})))?;
+    let records = RunRecords::new(loaded.clone(), &run);
+    match run.stopped {
+        None => Ok(records),
+        Some(e) if run.history.is_empty() => Err(step_error(py, e)),
+        Some(e) => Err(stopped_error(py, e, run.history, records)),
+    }
 }
 
 /// The columns of one of soilcut's CSV files of numbers (history.csv,
@@ -122,12 +127,20 @@ pub fn csv_columns<'py>(py: Python<'py>, name: &str, text: &str) -> PyResult<Bou
 }
 
 /// An output folder's error as Python's: `FileExistsError` for an occupied
-/// folder, `ValueError` for one without a name, `OSError` for I/O.
+/// folder (or a file, or with `force` a folder soilcut did not write),
+/// `ValueError` for one without a name, `OSError` for I/O.
 pub fn output_error(e: OutputError) -> PyErr {
     let path = e.path().display();
     match e {
         OutputError::Exists(_) => PyFileExistsError::new_err(format!(
-            "{path}: the folder exists and is not empty; pass force=True to replace it"
+            "{path}: the folder exists and is not empty; pass force=True to replace it (only a folder soilcut wrote)"
+        )),
+        OutputError::NotAFolder(_) => PyFileExistsError::new_err(format!(
+            "{path}: exists and is not a folder (a file); soilcut never replaces a file: choose another folder"
+        )),
+        OutputError::NotOurs(_) => PyFileExistsError::new_err(format!(
+            "{path}: the folder exists and soilcut did not write it (it holds no {} file); force=True replaces only soilcut's own output folders: choose another folder",
+            soilcut_io::OUTPUT_MARKER
         )),
         OutputError::Unnamed(_) => PyValueError::new_err(format!("{path}: {e}")),
         OutputError::Io { .. } => PyOSError::new_err(format!("{path}: {e}")),

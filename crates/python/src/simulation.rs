@@ -6,7 +6,7 @@ use crate::case::Case;
 use crate::convert::arrays;
 use crate::errors::{advance_error, case_error, detached, detached_map, snapshot_error};
 use crate::step::Step;
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyTuple};
 use soilcut_io::{case_from_note, profile_columns, LoadedCase};
@@ -81,7 +81,16 @@ impl Simulation {
     /// with `depth`, the tip goes linearly to that depth at x
     /// (`Simulation::advance_to` of soilcut-model).
     #[pyo3(signature = (x, depth=None))]
-    fn advance_to(&mut self, py: Python<'_>, x: f64, depth: Option<f64>) -> PyResult<Vec<Step>> {
+    fn advance_to(
+        &mut self,
+        py: Python<'_>,
+        x: &Bound<'_, PyAny>,
+        depth: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Vec<Step>> {
+        let x = number_argument("advance_to", "x", x)?;
+        let depth = depth
+            .map(|d| number_argument("advance_to", "depth", d))
+            .transpose()?;
         let sim = &mut self.sim;
         let made = detached_map(py, || sim.advance_to(x, depth), advance_error);
         // The case may be steered even if an increment failed.
@@ -97,7 +106,8 @@ impl Simulation {
 
     /// Advances by up to `n` increments without returning their records;
     /// returns how many were made.
-    fn advance(&mut self, py: Python<'_>, n: usize) -> PyResult<usize> {
+    fn advance(&mut self, py: Python<'_>, n: &Bound<'_, PyAny>) -> PyResult<usize> {
+        let n = count_argument("advance", "n", n)?;
         let sim = &mut self.sim;
         detached(py, || {
             let mut made = 0;
@@ -115,6 +125,23 @@ impl Simulation {
     /// a blade of finite width, 0 in plane strain).
     fn surface<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         arrays(py, &profile_columns(&self.sim.profile()))
+    }
+
+    /// The case's name, the increments done of all, the blade's position
+    /// and the tip's depth.
+    fn __repr__(&self) -> String {
+        let name = self
+            .loaded
+            .as_ref()
+            .map_or("(restored)", |l| l.case.name.as_str());
+        format!(
+            // {:?}: the shortest round trip, as Python's repr of a float.
+            "Simulation({name:?}: {} of {} increments, u = {:?}, tip depth {:?})",
+            self.sim.steps_done(),
+            self.sim.case().steps(),
+            self.sim.blade_position(),
+            self.sim.tip_depth()
+        )
     }
 
     /// Blade displacement u (length): the face is at x = u.
@@ -185,4 +212,37 @@ impl Simulation {
         }
         self.step(py).map(Some)
     }
+}
+
+/// A number given as `method`'s argument `name`; anything else is a
+/// `TypeError` naming them (Python's own message names neither).
+fn number_argument(method: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<f64> {
+    value.extract::<f64>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{method}: {name} must be a number (a length), not {}",
+            type_name(value)
+        ))
+    })
+}
+
+/// A count given as `method`'s argument `name`: a whole number >= 0.
+fn count_argument(method: &str, name: &str, value: &Bound<'_, PyAny>) -> PyResult<usize> {
+    let n = value.extract::<i64>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{method}: {name} must be a whole number >= 0 (increments), not {}",
+            type_name(value)
+        ))
+    })?;
+    usize::try_from(n).map_err(|_| {
+        PyValueError::new_err(format!(
+            "{method}: {name} must be a whole number >= 0 (increments), got {n}"
+        ))
+    })
+}
+
+fn type_name(value: &Bound<'_, PyAny>) -> String {
+    value
+        .get_type()
+        .name()
+        .map_or_else(|_| "that".to_string(), |n| n.to_string())
 }

@@ -29,6 +29,39 @@ pub const MEANINGS: [&str; 9] = [
     "increments run",
 ];
 
+/// The axis labels of the figures in pictures, symbol and unit (forces
+/// over γ0 d², dimensionless; counts).
+pub const LABELS: [&str; 9] = [
+    "first P/(γ₀d²) (–)",
+    "largest P/(γ₀d²) (–)",
+    "u/d at the largest force (–)",
+    "last P/(γ₀d²) (–)",
+    "force peaks (count)",
+    "mean P/(γ₀d²), last half (–)",
+    "mass drift Δm/m₀ (–)",
+    "band jumps (count)",
+    "increments (count)",
+];
+
+/// A case key as an axis label: the key with its unit, by the kind of
+/// quantity its last part names (the case's own length and force units).
+pub fn key_label(key: &str) -> String {
+    let last = key.rsplit('.').next().unwrap_or(key);
+    let parent = key.rsplit('.').nth(1).unwrap_or("");
+    let unit = match (parent, last) {
+        ("friction" | "dilation", _) | (_, "wall_friction" | "rake" | "repose") => "°",
+        (_, "unit_weight") => "force/length³",
+        (_, "cohesion" | "adhesion" | "surcharge") => "force/length²",
+        (
+            _,
+            "d50" | "band_width" | "depth" | "width" | "increment" | "travel" | "node_spacing"
+            | "vertex_spacing" | "length" | "peak_shear" | "residual_shear",
+        ) => "length",
+        _ => "–",
+    };
+    format!("{key} ({unit})")
+}
+
 /// Summary figures of a finished run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Figures {

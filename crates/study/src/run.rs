@@ -171,6 +171,7 @@ impl RunResult {
             summary: &self.summary,
             candidate_evaluations: self.evaluations,
             wall_time_s: self.wall_time_s,
+            stopped: None,
         }
         .files()
     }

@@ -7,7 +7,7 @@
 
 use crate::error::StudyError;
 use crate::field;
-use crate::figures::{Figures, NAMES};
+use crate::figures::{key_label, Figures, LABELS, NAMES};
 use crate::run::{override_of, BaseCase};
 use crate::sample::{points, Sample, Vary};
 use crate::Progress;
@@ -197,33 +197,23 @@ impl SweepResult {
     }
 
     /// Draws `sweep-<key>.png` into `dir` for every numeric varied key:
-    /// each figure against that key, one panel per figure. Returns the
-    /// files written.
+    /// each figure against that key, one panel per figure; nothing if every
+    /// run failed. Returns the files written.
     pub fn draw(&self, dir: &Path) -> Result<Vec<PathBuf>, StudyError> {
         let mut written = Vec::new();
+        if self.rows.iter().all(|r| r.outcome.is_err()) {
+            // Panels without a point say nothing sweep.csv does not.
+            return Ok(written);
+        }
         for (k, key) in self.keys.iter().enumerate() {
             let xs: Vec<Option<f64>> = self.rows.iter().map(|r| number(&r.values[k])).collect();
             if xs.iter().any(Option::is_none) {
                 continue;
             }
-            let panels: Vec<soilcut_plot::Panel> = NAMES
-                .iter()
-                .enumerate()
-                .map(|(f, name)| soilcut_plot::Panel {
-                    x_label: key.clone(),
-                    y_label: name.to_string(),
-                    series: vec![soilcut_plot::Series::points(
-                        "",
-                        self.rows
-                            .iter()
-                            .zip(&xs)
-                            .filter_map(|(r, x)| {
-                                Some((x.unwrap(), r.outcome.as_ref().ok()?.values()[f]))
-                            })
-                            .collect(),
-                    )],
-                })
-                .collect();
+            let panels = self.panels_against(key, &xs);
+            if panels.is_empty() {
+                continue;
+            }
             let path = dir.join(format!("sweep-{key}.png"));
             soilcut_plot::draw_panels(
                 &format!("Sweep: summary figures against {key}"),
@@ -237,10 +227,82 @@ impl SweepResult {
     }
 }
 
+impl SweepResult {
+    /// A panel per figure against `key` (`xs` its values), but none for a
+    /// figure every run gave alike: a flat row of dots says only that
+    /// (sweep.csv has it).
+    fn panels_against(&self, key: &str, xs: &[Option<f64>]) -> Vec<soilcut_plot::Panel> {
+        (0..NAMES.len())
+            .filter_map(|f| {
+                let points: Vec<(f64, f64)> = self
+                    .rows
+                    .iter()
+                    .zip(xs)
+                    .filter_map(|(r, x)| Some(((*x)?, r.outcome.as_ref().ok()?.values()[f])))
+                    .collect();
+                let first = points.first()?.1;
+                let varies = points.iter().any(|p| p.1.to_bits() != first.to_bits());
+                varies.then(|| soilcut_plot::Panel {
+                    x_label: key_label(key),
+                    y_label: LABELS[f].to_string(),
+                    series: vec![soilcut_plot::Series::points("", points)],
+                })
+            })
+            .collect()
+    }
+}
+
 fn number(v: &toml::Value) -> Option<f64> {
     match v {
         toml::Value::Float(x) => Some(*x),
         toml::Value::Integer(i) => Some(*i as f64),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(run: usize, peak: f64, max: f64) -> SweepRow {
+        let figures = Figures {
+            initial_force_norm: 1.32,
+            max_force_norm: max,
+            u_over_d_at_max: 0.5,
+            final_force_norm: max,
+            peaks: 1,
+            mean_force_norm_last_half: max,
+            mass_drift_rel: 1e-16 * run as f64,
+            band_jumps: run,
+            steps: 100,
+        };
+        SweepRow {
+            run,
+            values: vec![toml::Value::Float(peak)],
+            outcome: Ok(figures),
+            wall_time_s: 0.0,
+        }
+    }
+
+    #[test]
+    fn panels_name_units_and_leave_out_figures_alike_in_every_run() {
+        let result = SweepResult {
+            keys: vec!["soil.friction.peak".into()],
+            rows: vec![row(1, 30.0, 2.0), row(2, 35.0, 2.5), row(3, 40.0, 3.0)],
+        };
+        let xs = [Some(30.0), Some(35.0), Some(40.0)];
+        let panels = result.panels_against("soil.friction.peak", &xs);
+        let labels: Vec<&str> = panels.iter().map(|p| p.y_label.as_str()).collect();
+        assert_eq!(
+            labels,
+            [
+                "largest P/(γ₀d²) (–)",
+                "last P/(γ₀d²) (–)",
+                "mean P/(γ₀d²), last half (–)",
+                "mass drift Δm/m₀ (–)",
+                "band jumps (count)"
+            ]
+        );
+        assert!(panels.iter().all(|p| p.x_label == "soil.friction.peak (°)"));
     }
 }

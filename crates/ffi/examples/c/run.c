@@ -21,15 +21,20 @@
 
 #include "soilcut.h"
 
-/* Prints the last error of `sim` (NULL: of this thread) and returns the
- * exit status for `code`. */
+/* Prints the last error of `sim` (NULL: of this thread), after `what`
+ * unless it is NULL (a constructor's message names the file itself), and
+ * returns the exit status for `code`. */
 static int report(const SoilcutSimulation *sim, const char *what, int code)
 {
     size_t needed = soilcut_last_error(sim, NULL, 0);
     char *message = malloc(needed);
     if (message != NULL) {
         soilcut_last_error(sim, message, needed);
-        fprintf(stderr, "error: %s: %s\n", what, message);
+        if (what != NULL) {
+            fprintf(stderr, "error: %s: %s\n", what, message);
+        } else {
+            fprintf(stderr, "error: %s\n", message);
+        }
         free(message);
     }
     return code == SOILCUT_ERR_INPUT || code == SOILCUT_ERR_STEP ? 2 : 1;
@@ -83,8 +88,9 @@ int main(int argc, char **argv)
     SoilcutSimulation *sim = NULL;
     int code = soilcut_new_from_file(argv[1], (const char *const *)(argv + 2), (size_t)(argc - 2), &sim);
     if (code != SOILCUT_OK) {
-        /* No handle yet: the thread keeps the message. */
-        return report(NULL, argv[1], code);
+        /* No handle yet: the thread keeps the message, which starts with
+         * the file's path. */
+        return report(NULL, NULL, code);
     }
     printf("%s\n", soilcut_history_header());
     SoilcutState state;

@@ -10,10 +10,11 @@
 // and checks that the forces repeat bit for bit. Exit status 2 on bad
 // input, 1 on any other error.
 //
-// Build (see README.md, "C and C++"):
+// Build (README.md, "C and C++"; the rpath is absolute, so that the binary
+// finds the library from any folder):
 //     cargo build --release -p soilcut-ffi
 //     c++ -std=c++17 -I crates/ffi/include crates/ffi/examples/cpp/run.cpp
-//         -L target/release -lsoilcut_ffi -Wl,-rpath,target/release -o run
+//         -L target/release -lsoilcut_ffi -Wl,-rpath,"$PWD/target/release" -o target/run-cpp
 #include <cinttypes>
 #include <cstdint>
 #include <cstdio>
@@ -177,7 +178,13 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "restored at increment %" PRIu64 ": %zu increments repeat bit for bit; final surface: %zu points\n",
                      half, second_half.size(), surface.first.size());
     } catch (const soilcut::Error &e) {
-        std::fprintf(stderr, "error: %s: %s\n", argv[1], e.what());
+        // The constructor's message names the file already.
+        const std::string file = std::string(argv[1]) + ": ";
+        if (std::strncmp(e.what(), file.c_str(), file.size()) == 0) {
+            std::fprintf(stderr, "error: %s\n", e.what());
+        } else {
+            std::fprintf(stderr, "error: %s: %s\n", argv[1], e.what());
+        }
         return e.code() == SOILCUT_ERR_INPUT || e.code() == SOILCUT_ERR_STEP ? 2 : 1;
     }
     return 0;

@@ -237,6 +237,9 @@ impl RecordedSpread {
     /// Reads `dir/ensemble.csv` and `dir/summary.json`.
     pub fn read(dir: &Path) -> Result<RecordedSpread, soilcut_io::RunFilesError> {
         let csv = dir.join("ensemble.csv");
+        if !csv.exists() {
+            return Err(not_an_ensemble(dir));
+        }
         let table = Columns::read(&csv)?;
         let [n, mean, std, min, max] = table
             .columns(["members", "mean", "std", "min", "max"])
@@ -288,5 +291,20 @@ impl RecordedSpread {
             &reference.windows,
             &reference.whole_run,
         )
+    }
+}
+
+/// Why `dir`, which holds no `ensemble.csv`, is not an ensemble folder.
+fn not_an_ensemble(dir: &Path) -> soilcut_io::RunFilesError {
+    let what = if !dir.is_dir() {
+        "no such folder"
+    } else if dir.join("history.csv").exists() {
+        "a run folder, not an ensemble folder (no ensemble.csv)"
+    } else {
+        "not an ensemble folder (no ensemble.csv)"
+    };
+    soilcut_io::RunFilesError {
+        path: dir.to_path_buf(),
+        message: format!("{what}: give folders written by `soilcut run CASE --ensemble N`"),
     }
 }

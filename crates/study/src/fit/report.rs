@@ -319,8 +319,8 @@ impl FitResult {
             .map(|g| (g.evaluations as f64, g.median_rms))
             .collect();
         let panel = Panel {
-            x_label: "runs".to_string(),
-            y_label: "RMS error".to_string(),
+            x_label: "runs (count)".to_string(),
+            y_label: "RMS error of P (γ·length²)".to_string(),
             series: vec![
                 Series::line("best so far", best),
                 Series::line("median", median),
@@ -354,8 +354,8 @@ impl FitResult {
                     clip(force_curve(&self.best_runs[k])),
                 ));
                 Panel {
-                    x_label: "u (case length unit)".to_string(),
-                    y_label: "force per unit width".to_string(),
+                    x_label: "u (length)".to_string(),
+                    y_label: "P per unit width (γ·length²)".to_string(),
                     series,
                 }
             })
