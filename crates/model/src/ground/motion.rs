@@ -79,7 +79,7 @@ impl Ground {
     /// over, which a band narrower than the vertices resolve does.
     pub fn apply(&mut self, cut: &Cut) -> Option<Moved> {
         let emergence = self.split_at(cut.emergence);
-        let line = Line::through(self, cut.depth, emergence);
+        let line = LowerBoundary::through(self, cut.depth, emergence);
         let banded = cut.thickness > 0.0;
         let (corner, emergence) = if banded {
             if line.position(self, 0, cut.thickness) < 1.0 {
@@ -94,7 +94,7 @@ impl Ground {
         } else {
             0.0
         };
-        let before = Snapshot::of(self, (emergence + 1).min(self.pieces()));
+        let before = PiecesBefore::of(self, (emergence + 1).min(self.pieces()));
         // Nothing beyond the second vertex after the emergence point moves:
         // the sums that keep area and mass exact stop there.
         let end = self.x[(emergence + 2).min(self.pieces())];
@@ -151,7 +151,7 @@ impl Ground {
     /// of the block (g ≥ 1) and the emergence vertex after them.
     fn split_at_upper_boundary(
         &mut self,
-        line: &Line,
+        line: &LowerBoundary,
         (e, snap): (f64, f64),
         emergence: usize,
     ) -> (usize, usize) {
@@ -191,7 +191,7 @@ impl Ground {
     /// images fold over.
     fn shear_band(
         &mut self,
-        line: &Line,
+        line: &LowerBoundary,
         cut: &Cut,
         corner: usize,
         emergence: usize,
@@ -259,7 +259,7 @@ impl Ground {
     /// the band's shear, takes the mean ut of the ground that lay under its
     /// new extent before the increment (a conservative remap within the
     /// band; the block's pieces carry theirs).
-    fn keep_band_state(&mut self, before: &Snapshot, band: std::ops::Range<usize>) {
+    fn keep_band_state(&mut self, before: &PiecesBefore, band: std::ops::Range<usize>) {
         for k in band {
             let (xa, xb) = (self.x[k], self.x[k + 1]);
             self.accumulated_shear[k] = before.mean_shear(xa, xb);
@@ -295,7 +295,13 @@ impl Ground {
     /// weighed the band's whole dilation at their own γ and M27 took that
     /// weight from the band's pieces at the emergence point alone, which a
     /// band that stays for many increments drove below zero (issue 38).
-    fn mix_block_pieces(&mut self, before: &Snapshot, line: &Line, block_end: usize, gap: f64) {
+    fn mix_block_pieces(
+        &mut self,
+        before: &PiecesBefore,
+        line: &LowerBoundary,
+        block_end: usize,
+        gap: f64,
+    ) {
         let floor = self.floor;
         let at_rest = |x: f64| line.lower(x) - floor;
         // The block's pieces and the old pieces are both in order of x: the
@@ -332,16 +338,16 @@ impl Ground {
 /// The band's lower boundary: from the tip (x_0, −d) to the emergence
 /// vertex, frozen at the increment's start.
 #[derive(Clone, Copy, Debug)]
-struct Line {
+struct LowerBoundary {
     x0: f64,
     depth: f64,
     tan_beta: f64,
 }
 
-impl Line {
+impl LowerBoundary {
     fn through(ground: &Ground, depth: f64, emergence: usize) -> Self {
         let x0 = ground.x[0];
-        Line {
+        LowerBoundary {
             x0,
             depth,
             tan_beta: (ground.y[emergence] + depth) / (ground.x[emergence] - x0),
@@ -370,16 +376,16 @@ impl Line {
 
 /// The ground from the face to the emergence vertex before the motion:
 /// where each old piece lay and its unit weight.
-struct Snapshot {
+struct PiecesBefore {
     x: Vec<f64>,
     unit_weight: Vec<f64>,
     shear: Vec<f64>,
 }
 
-impl Snapshot {
+impl PiecesBefore {
     /// The pieces before vertex `end`.
     fn of(ground: &Ground, end: usize) -> Self {
-        Snapshot {
+        PiecesBefore {
             x: ground.x[..=end].to_vec(),
             unit_weight: ground.unit_weight[..end].to_vec(),
             shear: ground.accumulated_shear[..end].to_vec(),
