@@ -892,13 +892,15 @@ mod tests {
         assert_eq!(h, v0);
         let (d, v0, h) = resolved_grid(&original, &["soil.friction.residual=35"]);
         assert_eq!((v0, h), (d / 250.0, 10.0 * (d / 250.0)));
-        // The refined model in softening soil, a vertical blade at constant
-        // depth: d/350 on the vertex ground, vertices d/50 apart; on nodes
-        // (given node spacing, or no vertices, or a raked blade that the
-        // vertex ground does not take) d/1250, nodes every increment.
+        // The refined model in softening soil: d/350 on the vertex ground,
+        // vertices d/50 apart (d/100 under a raked blade); on nodes (given
+        // node spacing, or no vertices, or a finite width that the vertex
+        // ground does not take) d/1250, nodes every increment.
         let (d, v0, _, vertices) = resolved_ground(&refined, &[]);
         assert_eq!((v0, vertices), (d / 350.0, d / 50.0));
-        for nodes in ["run.vertex_spacing=0", "blade.rake=70"] {
+        let (d, v0, _, vertices) = resolved_ground(&refined, &["blade.rake=70"]);
+        assert_eq!((v0, vertices), (d / 350.0, d / 100.0));
+        for nodes in ["run.vertex_spacing=0", "blade.width=40"] {
             let (d, v0, h, vertices) = resolved_ground(&refined, &[nodes]);
             assert_eq!((v0, h, vertices), (d / 1250.0, d / 1250.0, 0.0), "{nodes}");
         }

@@ -170,6 +170,12 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     let all = || panel.series.iter().flat_map(|s| s.points.iter());
     let (x0, x1) = range(all().map(|p| p.0));
     let (y0, y1) = range(all().map(|p| p.1));
+    let labelled = panel.series.iter().any(|s| !s.label.is_empty());
+    let legend = legend_box(panel, area);
+    let (y1, corner) = match labelled {
+        true => legend_room(panel, (x0, x1), (y0, y1), legend),
+        false => (y1, SeriesLabelPosition::UpperLeft),
+    };
     // Counts (levels, runs) across: a tick between them means nothing.
     let whole = all().all(|p| p.0.fract() == 0.0) && x1 - x0 <= 20.0;
     let x_tick = |x: f64| match whole && x.fract().abs() > 1e-9 {
@@ -205,8 +211,7 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     for (i, s) in panel.series.iter().enumerate() {
         draw_series(&mut chart, s, SERIES[i % SERIES.len()])?;
     }
-    if panel.series.iter().any(|s| !s.label.is_empty()) {
-        let corner = legend_corner(panel, (x0, x1), (y0, y1), legend_box(panel, area));
+    if labelled {
         chart
             .configure_series_labels()
             .label_font(font(LEGEND))
@@ -329,15 +334,36 @@ fn legend_box<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     (box_w / plot_w, box_h / plot_h)
 }
 
+/// The top of the y axis and the legend's corner: the corner whose box
+/// covers no point of the series if one does; else the axis is raised
+/// until the box fits above every point, in an upper corner (a legend
+/// over the start of a curve hid it, issue 41).
+fn legend_room(
+    panel: &Panel,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+    (w, h): (f64, f64),
+) -> (f64, SeriesLabelPosition) {
+    let (corner, covered) = legend_corner(panel, (x0, x1), (y0, y1), (w, h));
+    // A gap of 2 % of the raised axis between the curves and the box.
+    if covered == 0 || h >= 0.5 {
+        return (y1, corner);
+    }
+    let raised = y0 + (y1 - y0) / (0.98 - h);
+    let (corner, _) = legend_corner(panel, (x0, x1), (y0, raised), (w, h));
+    (raised, corner)
+}
+
 /// The corner of the plotting area whose legend box of `size` (fractions
 /// of the area) covers the fewest points of the series, lines followed
-/// between their points: the legend hides as little as it can.
+/// between their points, and how many it covers: the legend hides as
+/// little as it can.
 fn legend_corner(
     panel: &Panel,
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
     (w, h): (f64, f64),
-) -> SeriesLabelPosition {
+) -> (SeriesLabelPosition, usize) {
     let scaled = |p: &(f64, f64)| ((p.0 - x0) / (x1 - x0), (p.1 - y0) / (y1 - y0));
     let mut samples = Vec::new();
     for s in &panel.series {
@@ -366,9 +392,9 @@ fn legend_corner(
     };
     corners
         .into_iter()
-        .min_by_key(|(_, at)| covered(*at))
-        .map(|(corner, _)| corner)
-        .unwrap_or(SeriesLabelPosition::UpperLeft)
+        .map(|(corner, at)| (corner, covered(at)))
+        .min_by_key(|&(_, n)| n)
+        .unwrap_or((SeriesLabelPosition::UpperLeft, 0))
 }
 
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
@@ -466,17 +492,41 @@ mod tests {
         };
         // A line starting high at the left: not the upper left corner.
         let falling = panel(vec![(0.0, 10.0), (10.0, 0.0)]);
-        let corner = legend_corner(&falling, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
+        let (corner, _) = legend_corner(&falling, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
         assert!(
             matches!(corner, SeriesLabelPosition::UpperRight),
             "{corner:?}"
         );
         let rising = panel(vec![(0.0, 0.0), (10.0, 10.0)]);
-        let corner = legend_corner(&rising, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
+        let (corner, _) = legend_corner(&rising, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
         assert!(
             matches!(corner, SeriesLabelPosition::UpperLeft),
             "{corner:?}"
         );
+    }
+
+    #[test]
+    fn where_every_corner_holds_a_curve_the_axis_makes_room_for_the_legend() {
+        // Five curves fanning out from both ends, as converge's quantities
+        // do: every corner of the box holds points until the axis rises.
+        let series = (0..5)
+            .map(|i| {
+                let a = f64::from(i) * 2.5;
+                Series::line("q", vec![(0.0, a), (5.0, 10.0 - a), (10.0, a)])
+            })
+            .collect();
+        let panel = Panel {
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series,
+        };
+        let (_, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
+        assert!(covered > 0, "the test needs crowded corners");
+        let (top, corner) = legend_room(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
+        assert!(top > 10.0, "the axis rose: {top}");
+        let (again, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, top), (0.4, 0.3));
+        assert_eq!(covered, 0, "the legend covers no point");
+        assert_eq!(format!("{again:?}"), format!("{corner:?}"));
     }
 
     /// A single column is as wide as the run's pictures, and the title
