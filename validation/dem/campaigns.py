@@ -30,7 +30,7 @@ YARDSTICK = "damp0"
 
 
 def config_key(meta):
-    """A cut's configuration: cut, d/D, slab, short bin, speed (when not 40 mm/s),
+    """A cut's configuration: cut, d/D, slab, short or long bin, speed (when not 40 mm/s),
     and the numerical settings that differ from the defaults (as in the run names)."""
     settings = ""
     if meta.get("damping", 0.2) != 0.2:
@@ -41,9 +41,10 @@ def config_key(meta):
         settings += "_E%g" % meta["young_Pa"]
     if meta.get("dt_factor", 0.5) != 0.5:
         settings += "_dt%g" % meta["dt_factor"]
-    return "%s_r%g%s%s%s%s" % (meta["name"], meta["ratio_d_over_D"],
+    return "%s_r%g%s%s%s%s%s" % (meta["name"], meta["ratio_d_over_D"],
                                "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
                                "_short" if "_short" in meta["run"] else "",
+                               "_long" if "_long" in meta["run"] else "",
                                "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3),
                                settings)
 
@@ -57,10 +58,11 @@ def compared_key(name, campaign):
 
 
 def bed_tag(meta):
-    """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short]."""
-    return "r%g_s%d%s%s" % (meta["ratio_d_over_D"], meta["seed"],
-                            "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
-                            "_short" if "_short" in meta["run"] else "")
+    """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short|_long]."""
+    return "r%g_s%d%s%s%s" % (meta["ratio_d_over_D"], meta["seed"],
+                              "_slab%d" % meta["slab_layers"] if meta["slab_layers"] else "",
+                              "_short" if "_short" in meta["run"] else "",
+                              "_long" if "_long" in meta["run"] else "")
 
 
 def campaign_option(argv, default="reference"):
