@@ -23,9 +23,10 @@ field so far; neither fields/ nor checkpoints/ is committed). Writes
   `beta_deg`, `emergence_over_d` (ahead of the tip), `block_ratio`: the
   band's angle, where it reaches the ground and the block's speed ratio
   (mechanism.interval); `pile_height_over_d`, `pile_ahead_over_d`,
-  `pile_slope_deg` (mechanism.pile), `pile_area_over_d2` (the ground above
-  the level from the face to 10 d ahead of the tip); `phi_mob_deg`, the
-  friction angle the block mobilises on the band (below);
+  `pile_slope_deg` (mechanism.pile), `pile_area_over_d2` (the ground's rise
+  above the level, signed, summed over the columns from the face to 10 d
+  ahead of the tip: the swept soil u d and the block's dilation);
+  `phi_mob_deg`, the friction angle the block mobilises on the band (below);
   `wall_rise_norm`, the end wall's force over the interval less its mean
   over the first 0.1 d, over gamma d^2 (whether the far wall is loaded);
 - results/DIR/RUN_profile.csv: the ground ahead of the face every 0.25 d
@@ -237,7 +238,7 @@ def series(meta, forces, grounds, field):
         front = sorted(
             (x * 1e-3, y * 1e-3) for x, y in ground if face < x * 1e-3 <= tip_x + AHEAD * d
         )
-        area = sum(max(y, 0.0) for _, y in front) * meta["mean_diameter_m"] if front else math.nan
+        area = sum(y for _, y in front) * meta["mean_diameter_m"] if front else math.nan
         rows.append(
             (
                 s,
@@ -296,6 +297,7 @@ def main(argv):
         out = argv[i + 1]
         del argv[i : i + 2]
     folder = HERE / "results" / out
+    folder.mkdir(parents=True, exist_ok=True)
     finished = {p.stem for p in folder.glob("*.json")}
     runs = argv or sorted(
         finished
