@@ -99,6 +99,8 @@ from campaigns import bed_tag  # noqa: E402
 from mechanism import flagged, interval  # noqa: E402
 
 FIELD = 0.25  # the field's interval (in d), cut.py's FIELD
+SLACK = 0.01  # half cut.py's RECORD (d): a force record and a field taken at the same step
+# carry the same u, which the forces file rounds to 6 digits
 AHEAD = 10.0  # the profile's and pile area's reach ahead of the tip (in d)
 COLUMNS = (
     "u_over_d",
@@ -221,7 +223,7 @@ def series(meta, forces, grounds, field):
     for k in range(1, len(u)):
         s0, s = u[k - 1] / d, u[k] / d
         key = round(s / FIELD) * FIELD
-        sel = [r for r in forces if s0 < r["u_over_d"] <= s + 1e-6]
+        sel = [r for r in forces if s0 + SLACK < r["u_over_d"] <= s + SLACK]
         if key not in grounds or not sel:
             continue
         tip_x = u[k]
