@@ -1,14 +1,16 @@
 """Rain and level the grain bed of the soil bin; saves beds/bed_TAG.yade.gz and
 results/beds/bed_TAG.json (TAG: grains.tag(), options: grains.py).
 
-Run: yade -n -j1 -x bed.py [--seed S] [--ratio R] [--slab N]
+Run: yade -n -j1 -x bed.py [--seed S] [--ratio R] [--slab N] [--short | --long]
 
 The bin: a rough floor at y = 0, frictionless end walls at x = X_START and
 x = X_END (10 d ahead of the blade's start at x = 0 for d = 20 mm; the end
 wall's force is recorded by cut.py, which shows where the wall acts), the
 bed levelled at HEIGHT (the floor 2.75 d below the tip of a 20 mm cut,
-2 d below a 25 mm one). Grains rained from a jittered lattice with a low
-contact friction, levelled, then given their working friction and settled.
+2 d below a 25 mm one; --short: end wall at 140 mm, bed 60 mm; --long: end
+wall at 300 mm, 15 d from the start, the same bed height). Grains rained
+from a jittered lattice with a low contact friction, levelled, then given
+their working friction and settled.
 """
 
 import json
@@ -22,7 +24,7 @@ import yade  # noqa: E402
 from yade import O, utils  # noqa: E402
 
 X_START = -0.040  # left end (m): room behind the start for the raked blade's face
-X_END = 0.200  # far end wall (m); 0.140 in the short bin (--short)
+X_END = 0.200  # far end wall (m); 0.140 in the short bin (--short), 0.300 in the long (--long)
 HEIGHT = 0.075  # levelled bed height (m); 0.060 in the short bin
 START = time.time()
 
@@ -32,6 +34,8 @@ def main():
     g.configure(sys.argv[1:])
     if g.SHORT:
         X_END, HEIGHT = 0.140, 0.060
+    if g.LONG:
+        X_END = 0.300
     grain, _, wall = g.materials(O, yade.CohFrictMat)
     hz = g.half_z()
     length = X_END - X_START

@@ -42,7 +42,7 @@ YARDSTICK = "damp0"
 
 
 def config_key(meta):
-    """A cut's configuration: cut, d/D, slab, short bin, speed (when not 40 mm/s),
+    """A cut's configuration: cut, d/D, slab, short or long bin, speed (when not 40 mm/s),
     and the numerical settings that differ from the defaults (as in the run names)."""
     settings = ""
     if meta.get("damping", 0.2) != 0.2:
@@ -53,12 +53,13 @@ def config_key(meta):
         settings += "_E{:g}".format(meta["young_Pa"])
     if meta.get("dt_factor", 0.5) != 0.5:
         settings += "_dt{:g}".format(meta["dt_factor"])
-    return "{}_r{:g}{}{}{}{}".format(
+    return "{}_r{:g}{}{}{}{}{}".format(
         meta["name"],
         meta["ratio_d_over_D"],
         f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
         "_short" if "_short" in meta["run"] else "",
-        "" if meta["speed_m_per_s"] == 0.04 else "_v%g" % (meta["speed_m_per_s"] * 1e3),
+        "_long" if "_long" in meta["run"] else "",
+        "" if meta["speed_m_per_s"] == 0.04 else "_v{:g}".format(meta["speed_m_per_s"] * 1e3),
         settings,
     )
 
@@ -80,12 +81,13 @@ def compared_key(name, campaign):
 
 
 def bed_tag(meta):
-    """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short]."""
-    return "r{:g}_s{:d}{}{}".format(
+    """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short|_long]."""
+    return "r{:g}_s{:d}{}{}{}".format(
         meta["ratio_d_over_D"],
         meta["seed"],
         f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
         "_short" if "_short" in meta["run"] else "",
+        "_long" if "_long" in meta["run"] else "",
     )
 
 

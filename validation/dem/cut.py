@@ -1,13 +1,16 @@
 """A blade cut through a rained bed (bed.py first): forces, ground and grain field.
 
-Run: yade -n -j1 -x cut.py NAME [--seed S] [--ratio R] [--slab N] [--speed V] [--travel T]
+Run: yade -n -j1 -x cut.py NAME [--seed S] [--ratio R] [--slab N] [--short | --long]
+                              [--speed V] [--travel T]
                               [--damping C] [--undamped-gravity] [--young E] [--dt-factor F]
                               [--energy] [--out DIR] [--checkpoint T] [--resume]
 NAME: vertical | raked30 | deep (table CUTS); options: grains.py.
 
 The blade's tip starts at x = 0, depth d below the levelled surface, and moves
 in +x at constant depth and speed to the travel. The face leans back at the
-rake angle alpha (90: vertical). Writes, with RUN = NAME_TAG[_vV][SETTINGS]
+rake angle alpha (90: vertical); it reaches BLADE_HEIGHT d above the tip
+(LONG_BLADE_HEIGHT in the long bin, --long, where the pile of a 5 d cut
+would come near the top of the shorter one). Writes, with RUN = NAME_TAG[_vV][SETTINGS]
 (TAG the bed's, V the speed in mm/s when not the default, SETTINGS the
 numerical settings that differ from the defaults, grains.settings()), in
 results/cuts (or results/OUT with --out OUT):
@@ -22,7 +25,10 @@ results/cuts (or results/OUT with --out OUT):
   in every D-wide column, x from the tip's start and y from the levelled
   surface, mm).
 - fields/RUN.npz (not committed; 1-5 MB): every grain's in-plane position
-  every 0.25 d, read by mechanism.py.
+  every 0.25 d (u: the travels, m; pos: positions, m; radius: radii, m),
+  read by mechanism.py and mechanism_series.py. A checkpoint holds the
+  field so far (and, since the long runs, the radii), so an unfinished run
+  can be reduced from checkpoints/RUN.pkl.
 - results/cuts/RUN.json: the run's figures and its wall time.
 - with --energy, results/cuts/RUN_energy.csv: per 0.02 d, the cumulative
   work of the blade on the grains (from every contact of the blade) and
@@ -62,6 +68,8 @@ CUTS = {  # depth d (m), rake alpha (degrees), travel (in d; --travel overrides)
     "deep": (0.025, 90.0, 2.0),
 }
 HALF_THICKNESS = 0.5e-3  # blade half-thickness (m)
+BLADE_HEIGHT = 3.5  # the blade's top above its tip (in d)
+LONG_BLADE_HEIGHT = 5.0  # the same in the long bin (--long)
 RECORD = 0.02  # force record interval (in d)
 FIELD = 0.25  # surface and field record interval (in d)
 ENERGY_KEYS = ("nonviscDamp", "plastDissip", "shearDissip", "kinetic", "gravWork", "elastPotential")
@@ -210,15 +218,17 @@ class Recorder:
             self.forces,
         )
         g.write_csv(base + "_surface.csv", ["u_over_d", "x_mm", "y_mm"], self.surfaces)
-        radii = np.array(
-            [O.bodies[i].shape.radius if O.bodies[i] is not None else np.nan for i in self.ids]
-        )
+        radii = np.array(self.radii())
         np.savez_compressed(
             g.path("fields", self.run + ".npz"),
             u=np.array(self.field_u),
             pos=np.array(self.fields),
             radius=radii,
         )
+
+    def radii(self):
+        """The radii of the recorded grains (m; NaN for a grain removed for the trench)."""
+        return [O.bodies[i].shape.radius if O.bodies[i] is not None else math.nan for i in self.ids]
 
 
 def kinetic():
@@ -269,6 +279,7 @@ def save_checkpoint(run, argv, rec, it0, steps):
                 "steps": steps,
                 "blade": rec.blade.id,
                 "recorder": rec.state(),
+                "radius": rec.radii(),
             },
             f,
         )
@@ -331,7 +342,8 @@ def main():
             settle_steps = rescale_stiffness(g.YOUNG / 5.0e5)
         level = bed["surface_level_m"]
         tip = (0.0, level - depth)
-        length = 3.5 * depth / math.sin(math.radians(alpha))
+        height = LONG_BLADE_HEIGHT if g.LONG else BLADE_HEIGHT
+        length = height * depth / math.sin(math.radians(alpha))
         body, normal = blade_body(tip, alpha, length, O.materials["blade"])
         for b in list(O.bodies):
             if not b.dynamic:
@@ -380,6 +392,8 @@ def main():
         "end_wall_mm": bed["x_end_m"] * 1e3,
         "wall_time_s": rec.elapsed(),
     }
+    if g.LONG:
+        meta["blade_height_d"] = LONG_BLADE_HEIGHT
     if g.settings() or g.ENERGY or g.CHECKPOINT or g.RESUME:
         meta.update(
             {

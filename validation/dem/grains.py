@@ -17,6 +17,10 @@ Every script takes the same options after its name (`configure`):
                   end wall at 140 mm, bed 60 mm deep (7 d and 2 d from the
                   tip of a 20 mm cut), for the costly beds (d/D = 15, the
                   slab) and 1 d of travel
+    --long        the long bin (bed.py makes it, cut.py cuts it): end wall
+                  at 300 mm (15 d from the tip's start for d = 20 mm), the
+                  same 75 mm deep bed, grains and raining, for the cuts to
+                  5 d; cut.py's blade is 5 d tall in it (3.5 d otherwise)
 
 The numerical settings (issue 31's rate study; the defaults are those of
 every earlier run, and a run's name records each one that differs):
@@ -51,6 +55,7 @@ SLAB = 0  # 0: monolayer; else lattice layers between frictionless side walls
 SPEED = 0.04  # blade speed (m/s)
 TRAVEL = None  # travel in d (None: the cut's own)
 SHORT = False  # the short bin (bed.py)
+LONG = False  # the long bin (bed.py)
 RADIUS = 1.0e-3  # mean grain radius (m), set by configure from RATIO
 FUZZ = 0.25  # radii uniform in RADIUS * (1 -/+ FUZZ)
 DENSITY = 2650.0  # grain density (kg/m^3)
@@ -74,10 +79,10 @@ THICKNESS = 2.0 * RADIUS  # slab thickness that turns forces into forces per uni
 
 def configure(argv):
     """Reads the options of the module docstring from argv; returns the positional words."""
-    global SEED, RATIO, SLAB, SPEED, TRAVEL, SHORT, RADIUS, THICKNESS
+    global SEED, RATIO, SLAB, SPEED, TRAVEL, SHORT, LONG, RADIUS, THICKNESS
     global DAMPING, DAMP_GRAVITY, YOUNG, DT_FACTOR, ENERGY, OUT, CHECKPOINT, RESUME
     words, i = [], 0
-    flags = ("--short", "--undamped-gravity", "--energy", "--resume")
+    flags = ("--short", "--long", "--undamped-gravity", "--energy", "--resume")
     while i < len(argv):
         a = argv[i]
         if a in (
@@ -117,6 +122,8 @@ def configure(argv):
         elif a in flags:
             if a == "--short":
                 SHORT = True
+            elif a == "--long":
+                LONG = True
             elif a == "--undamped-gravity":
                 DAMP_GRAVITY = False
             elif a == "--energy":
@@ -129,16 +136,19 @@ def configure(argv):
             i += 1
     if 0 < SLAB < 3:
         raise SystemExit("--slab must be 0 (monolayer) or >= 3 layers")
+    if SHORT and LONG:
+        raise SystemExit("--short and --long are two bins: one at a time")
     RADIUS = DEPTH_REF / RATIO / 2
     THICKNESS = 2.0 * RADIUS if SLAB == 0 else SLAB * PITCH * RADIUS
     return words
 
 
 def tag():
-    """The name of a bed: r<ratio>_s<seed>[_slab<N>][_short]."""
+    """The name of a bed: r<ratio>_s<seed>[_slab<N>][_short|_long]."""
     slab = f"_slab{SLAB}" if SLAB else ""
     short = "_short" if SHORT else ""
-    return f"r{RATIO:g}_s{SEED}{slab}{short}"
+    long = "_long" if LONG else ""
+    return f"r{RATIO:g}_s{SEED}{slab}{short}{long}"
 
 
 def settings():

@@ -62,18 +62,32 @@ def pile(ground, tip_x, face_x):
     return top, xt - tip_x, slope
 
 
-def interval(meta, p0, p1, du, tip_x, ground):
+def flagged(meta, p0, p1, du, tip_x):
+    """The grains of an interval: (ok, x, y, r, ahead, moving), ok the grains
+    present at both ends (a mask of p1's rows), x, y their positions at the end,
+    r their speed ratios, `ahead` those ahead of the face and `moving` the
+    moving block's (r >= MOVING, ahead of the face, not below the tip's level
+    by more than D); the last four over the ok grains."""
     d = meta["depth_mm"] * 1e-3
     D = meta["mean_diameter_m"]
-    level = meta["surface_level_m"]
     cot = 1.0 / math.tan(math.radians(meta["rake_deg"]))
-    tip_y = level - d
+    tip_y = meta["surface_level_m"] - d
     ok = ~np.isnan(p0[:, 0]) & ~np.isnan(p1[:, 0])
     x, y = p1[ok, 0], p1[ok, 1]
     r = np.hypot(*(p1[ok] - p0[ok]).T) / du
     face = tip_x - (y - tip_y) * cot  # the face's x at height y
     ahead = x > face
     moving = ahead & (r >= MOVING) & (y >= tip_y - D)
+    return ok, x, y, r, ahead, moving
+
+
+def interval(meta, p0, p1, du, tip_x, ground):
+    d = meta["depth_mm"] * 1e-3
+    D = meta["mean_diameter_m"]
+    level = meta["surface_level_m"]
+    cot = 1.0 / math.tan(math.radians(meta["rake_deg"]))
+    tip_y = level - d
+    _, x, y, r, ahead, moving = flagged(meta, p0, p1, du, tip_x)
     # the ground at each grain's column, for the slices and the emergence
     gx = np.array([q[0] for q in ground]) * 1e-3
     gy = np.array([q[1] for q in ground]) * 1e-3 + level
