@@ -9,8 +9,11 @@
 //! of the default before issue 20, unchanged since: the old rule stays as
 //! it was.
 //!
-//! Regenerate the golden files only deliberately, after a change that is
-//! meant to change results, with
+//! Both were last regenerated for M26's dilation gap (issue 38, commit
+//! 3ca1a29, which changes every refined run with a dilating band; the
+//! first increment, Coulomb's wedge, is unchanged). Regenerate the golden
+//! files only deliberately, after a change that is meant to change
+//! results, with
 //!
 //! ```sh
 //! SOILCUT_BLESS=1 cargo test -p soilcut-io --test integration golden::
