@@ -29,6 +29,10 @@ field so far; neither fields/ nor checkpoints/ is committed). Writes
   `phi_mob_deg`, the friction angle the block mobilises on the band (below);
   `wall_rise_norm`, the end wall's force over the interval less its mean
   over the first 0.1 d, over gamma d^2 (whether the far wall is loaded);
+  `W_band_norm`, `phi_mob_band_deg`: the same weight and angle counting only
+  the moving grains above the band's line (within D of it): W_norm also
+  counts the grains rolling down the pile's front beyond the emergence,
+  which the band does not carry, and a larger W gives a smaller phi;
 - results/DIR/RUN_profile.csv: the ground ahead of the face every 0.25 d
   (`u_over_d`, `x_ahead_over_d` from the tip, `height_over_d` above the
   level; D-wide columns, to 10 d ahead of the tip);
@@ -118,6 +122,8 @@ COLUMNS = (
     "pile_area_over_d2",
     "phi_mob_deg",
     "wall_rise_norm",
+    "W_band_norm",
+    "phi_mob_band_deg",
 )
 
 
@@ -233,6 +239,13 @@ def series(meta, forces, grounds, field):
         )
         ok, *_, moving = flagged(meta, pos[k - 1], pos[k], u[k] - u[k - 1], tip_x)
         w = float(np.sum(weight[ok][moving]))  # N per m of width
+        # the part of it on the band's side of the line through the tip at beta
+        # (within D): without the grains rolling down the pile's front beyond it
+        t = math.radians(beta)
+        x, y = pos[k][ok, 0], pos[k][ok, 1]
+        tip_y = meta["surface_level_m"] - d
+        below = (x - tip_x) * math.sin(t) - (y - tip_y) * math.cos(t)  # distance below the line
+        w_band = float(np.sum(weight[ok][moving & (below <= meta["mean_diameter_m"])]))
         h = statistics.fmean(r["h"] for r in sel)
         v = statistics.fmean(r["v"] for r in sel)
         wall = statistics.fmean(r["wall"] for r in sel) - wall0
@@ -258,6 +271,8 @@ def series(meta, forces, grounds, field):
                 area / d**2,
                 mobilised_phi(h, v, w, beta),
                 wall / norm,
+                w_band / norm,
+                mobilised_phi(h, v, w_band, beta),
             )
         )
         profile += [(s, (x - tip_x) / d, y / d) for x, y in front]
