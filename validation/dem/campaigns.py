@@ -53,14 +53,21 @@ def config_key(meta):
         settings += "_E{:g}".format(meta["young_Pa"])
     if meta.get("dt_factor", 0.5) != 0.5:
         settings += "_dt{:g}".format(meta["dt_factor"])
-    return "{}_r{:g}{}{}{}{}{}".format(
+    return "{}_r{:g}{}{}{}".format(
         meta["name"],
         meta["ratio_d_over_D"],
+        bin_suffix(meta),
+        "" if meta["speed_m_per_s"] == 0.04 else "_v{:g}".format(meta["speed_m_per_s"] * 1e3),
+        settings,
+    )
+
+
+def bin_suffix(meta):
+    """The slab and bin of a run's name and bed tag: [_slab<N>][_short|_long]."""
+    return "{}{}{}".format(
         f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
         "_short" if "_short" in meta["run"] else "",
         "_long" if "_long" in meta["run"] else "",
-        "" if meta["speed_m_per_s"] == 0.04 else "_v{:g}".format(meta["speed_m_per_s"] * 1e3),
-        settings,
     )
 
 
@@ -82,13 +89,7 @@ def compared_key(name, campaign):
 
 def bed_tag(meta):
     """The bed a cut ran in (grains.tag()): r<ratio>_s<seed>[_slab<N>][_short|_long]."""
-    return "r{:g}_s{:d}{}{}{}".format(
-        meta["ratio_d_over_D"],
-        meta["seed"],
-        f"_slab{meta['slab_layers']:d}" if meta["slab_layers"] else "",
-        "_short" if "_short" in meta["run"] else "",
-        "_long" if "_long" in meta["run"] else "",
-    )
+    return "r{:g}_s{:d}{}".format(meta["ratio_d_over_D"], meta["seed"], bin_suffix(meta))
 
 
 def campaign_option(argv, default="reference"):

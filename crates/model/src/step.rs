@@ -76,6 +76,18 @@ pub enum StepError {
     },
 }
 
+impl StepError {
+    /// Why increment `step`, the blade at u, has no mechanism: none before
+    /// the end wall where there is one (`length`, `bin.length`), else none
+    /// admissible at all (either ground).
+    pub(crate) fn no_mechanism(step: usize, u: f64, wall: Option<f64>) -> Self {
+        match wall {
+            Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
+            None => StepError::NoAdmissibleMechanism { step, u },
+        }
+    }
+}
+
 impl fmt::Display for StepError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

@@ -4,10 +4,12 @@
 //! lets the slopes avalanche (`avalanche`), as the node
 //! grid's increment does (docs/model.md §1).
 //!
-//! For a vertical blade in plane strain, at constant depth or on a depth
-//! path, in a bin or not, under the default choices (the full band shear, the band's uniform unit weight)
-//! and the sampled search; the case validation refuses other cases with
-//! the key that is not supported (`Case::validate`, docs/model.md §19).
+//! For a blade in plane strain, vertical or raked (the ground held in the
+//! sheared coordinates of `Rake`), at constant depth or on a depth path, in
+//! a bin or not, under the default choices (the full band shear, the
+//! band's uniform unit weight) and the sampled search; the case validation
+//! refuses other cases with the key that is not supported
+//! (`Case::validate`, docs/model.md §19).
 
 use super::midpoint::midpoint_force;
 use super::motion::Cut;
@@ -79,13 +81,10 @@ impl Cutting {
         (at, scan): (&Context, &Scan),
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {
-        let (step, u) = (at.done + 1, self.ground.x[0]);
+        let u = self.ground.x[0];
         self.search
             .run(&mut self.ground, scan, observer)
-            .ok_or(match at.case.bin.length {
-                Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
-                None => StepError::NoAdmissibleMechanism { step, u },
-            })
+            .ok_or_else(|| StepError::no_mechanism(at.done + 1, u, at.case.bin.length))
     }
 
     /// The tip's depth now and its rise per unit of travel over the next
@@ -242,8 +241,8 @@ impl Discretisation for Cutting {
             }
         };
         let (d, u) = (c.blade.depth, self.ground.x[0]);
-        let (tip, climb) = self.tip(c);
-        let face = at.laws.face.for_climb(climb);
+        // The tip's depth and the face friction of the search's scan.
+        let (tip, face) = (scan.depth, scan.face);
         let cut = self.cut(c, &pick);
         let moved = match self.ground.apply(&cut) {
             Some(moved) => moved,

@@ -162,11 +162,7 @@ impl NodeGrid {
 
     /// Why the next increment has no mechanism.
     fn no_mechanism(&self, at: &Context) -> StepError {
-        let (step, u) = (at.done + 1, self.blade_position());
-        match at.case.bin.length {
-            Some(length) => StepError::NoMechanismBeforeWall { step, u, length },
-            None => StepError::NoAdmissibleMechanism { step, u },
-        }
+        StepError::no_mechanism(at.done + 1, self.blade_position(), at.case.bin.length)
     }
 
     /// The candidate `choice` as the landscape shows it.
