@@ -424,6 +424,15 @@ fn span_tick(value: f64, span: f64) -> String {
 mod tests {
     use super::*;
 
+    /// A panel of `series` on axes labelled x and y.
+    fn xy(series: Vec<Series>) -> Panel {
+        Panel {
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series,
+        }
+    }
+
     #[test]
     fn ticks_fit_the_span() {
         assert_eq!(span_tick(32.5, 10.0), "32.5");
@@ -485,11 +494,7 @@ mod tests {
 
     #[test]
     fn the_legend_goes_where_it_covers_the_fewest_points() {
-        let panel = |points: Vec<(f64, f64)>| Panel {
-            x_label: "x".into(),
-            y_label: "y".into(),
-            series: vec![Series::line("a", points)],
-        };
+        let panel = |points: Vec<(f64, f64)>| xy(vec![Series::line("a", points)]);
         // A line starting high at the left: not the upper left corner.
         let falling = panel(vec![(0.0, 10.0), (10.0, 0.0)]);
         let (corner, _) = legend_corner(&falling, (0.0, 10.0), (0.0, 10.0), (0.4, 0.2));
@@ -515,11 +520,7 @@ mod tests {
                 Series::line("q", vec![(0.0, a), (5.0, 10.0 - a), (10.0, a)])
             })
             .collect();
-        let panel = Panel {
-            x_label: "x".into(),
-            y_label: "y".into(),
-            series,
-        };
+        let panel = xy(series);
         let (_, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
         assert!(covered > 0, "the test needs crowded corners");
         let (top, corner) = legend_room(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
@@ -533,11 +534,7 @@ mod tests {
     /// sits clear of the top edge.
     #[test]
     fn one_column_is_full_width_and_the_title_is_clear_of_the_top() {
-        let panels = [Panel {
-            x_label: "x".into(),
-            y_label: "y".into(),
-            series: vec![Series::points("", vec![(1.0, 1.0), (2.0, 3.0)])],
-        }];
+        let panels = [xy(vec![Series::points("", vec![(1.0, 1.0), (2.0, 3.0)])])];
         let picture = Panels {
             title: "A title",
             panels: &panels,
