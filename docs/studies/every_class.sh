@@ -65,6 +65,10 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row validation-deep "soil bin (DEM's, 8 d)" cases/validation/deep.toml
   row scoop "depth path (the scoop)" cases/tools/scoop.toml
   row fig5-rake60 "raked blade (Fig. 5, α = 60°)" cases/paper/fig5.toml --set blade.rake=60
+  row fig5-w40 "finite width (Fig. 5, w = 40 mm)" cases/paper/fig5.toml --set blade.width=40
+  row original "original model" cases/paper/original.toml
+  row tine "original model, finite width (the tine)" cases/tools/tine.toml
+  row dozer "original model, finite width (the dozer)" cases/tools/dozer.toml
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 cat "$out"

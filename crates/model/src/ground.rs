@@ -28,6 +28,7 @@ use serde::{Deserialize, Serialize};
 mod avalanche;
 pub(crate) mod cutting;
 mod merge;
+mod spill;
 mod midpoint;
 pub mod motion;
 pub(crate) mod search;

@@ -24,16 +24,18 @@
 //! Mass is exact: what the strip loses at node i, γ_i w (h_i − h'_i) times
 //! the node's trapezoid share of Δx (M24), is what the side heaps gain, so
 //! the soil ahead of the blade plus the soil spilled is the soil the blade
-//! has met, to round-off. Spill is one way: a side heap does not flow back
+//! has met, to round-off (each ground sums the strip's loss by its own mass
+//! rule: the node grid's trapezoid shares, the vertex ground's pieces). Spill is one way: a side heap does not flow back
 //! when the strip later drops (the blade passes between its ridges, and a
 //! heap at repose beside a lower strip is stable). It is local in x, the
 //! pile's long axis being the direction of travel. As w → ∞, h' → h.
 
-use crate::surface::{compensated_sum, Surface};
-use std::ops::Range;
+use serde::{Deserialize, Serialize};
 
-/// The side heaps of a blade of finite width, per node of the grid.
-#[derive(Clone, Debug, Default)]
+/// The side heaps of a blade of finite width: a field at fixed x, node i
+/// at x = i h for the field's spacing h (the node grid's nodes; on the
+/// vertex ground, whose vertices move with the soil, its vertex spacing).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct SideHeaps {
     /// S_i: cross-section area of both side heaps at node i.
     pub area: Vec<f64>,
@@ -43,58 +45,86 @@ pub struct SideHeaps {
     pub unit_weight: Vec<f64>,
     /// Weight spilled so far, per unit of the blade's width.
     pub spilled: f64,
-    /// The strip's losses of one spill, summed compensated.
-    lost: Vec<f64>,
+}
+
+/// A column of the strip that may spill (M45).
+#[derive(Clone, Copy, Debug)]
+pub struct Column {
+    /// h: its height above the original ground (length).
+    pub height: f64,
+    /// γ of its soil (force per volume).
+    pub unit_weight: f64,
+}
+
+/// The blade's width w and tan θr of the heaps' flanks.
+#[derive(Clone, Copy, Debug)]
+pub struct Edges {
+    /// w (length).
+    pub width: f64,
+    /// tan θr.
+    pub tan_repose: f64,
+}
+
+impl Edges {
+    /// h': the height the strip keeps at a column of height h beside side
+    /// heaps of section S (M45), if it spills: the positive root of
+    /// cot h'² + w h' − (w h + S) = 0, in the form without cancellation.
+    fn kept(&self, h: f64, s: f64) -> Option<f64> {
+        let (w, cot) = (self.width, 1.0 / self.tan_repose);
+        if h <= 0.0 || h * h * cot <= s {
+            return None;
+        }
+        let section = w * h + s;
+        let kept = 2.0 * section / (w + (w * w + 4.0 * cot * section).sqrt());
+        (kept < h).then_some(kept)
+    }
 }
 
 impl SideHeaps {
-    /// Spills the strip's soil at `nodes` (ahead of the face) into the side
-    /// heaps of a blade of width `width` (M45); returns the weight spilled
-    /// per unit width.
-    pub fn spill(
+    /// Spills `column`, standing at node i of the field, into the heaps
+    /// there (M45); returns the height the strip keeps, if it spilled.
+    pub fn spill_at_node(&mut self, i: usize, column: Column, edges: Edges) -> Option<f64> {
+        self.reach(i + 1);
+        let kept = edges.kept(column.height, self.area[i])?;
+        let moved = edges.width * (column.height - kept);
+        self.deposit(i, moved, column.unit_weight, edges);
+        Some(kept)
+    }
+
+    /// Spills `column`, standing at x between the field's nodes `spacing`
+    /// apart and holding the strip over a length `share` of x, into the
+    /// heaps (M45, S read linearly between the nodes); returns the height
+    /// the strip keeps, if it spilled. The section w (h − h') it gives
+    /// over `share` goes to the two nodes about x by the hat functions,
+    /// so that the field's volume Σ S_i h grows by exactly w (h − h') share.
+    pub fn spill_at(
         &mut self,
-        surface: &mut Surface,
-        width: f64,
-        tan_repose: f64,
-        nodes: Range<usize>,
-    ) -> f64 {
-        let n = surface.len();
-        if self.area.len() < n {
-            self.area.resize(n, 0.0);
-            self.height.resize(n, 0.0);
-            self.unit_weight.resize(n, 0.0);
+        (x, spacing): (f64, f64),
+        share: f64,
+        column: Column,
+        edges: Edges,
+    ) -> Option<f64> {
+        let at = x / spacing;
+        let i = at.floor() as usize;
+        self.reach(i + 2);
+        let t = at - i as f64;
+        let s = self.area[i] + t * (self.area[i + 1] - self.area[i]);
+        let kept = edges.kept(column.height, s)?;
+        let moved = edges.width * (column.height - kept) * share / spacing;
+        self.deposit(i, moved * (1.0 - t), column.unit_weight, edges);
+        self.deposit(i + 1, moved * t, column.unit_weight, edges);
+        Some(kept)
+    }
+
+    /// h_s at x for the field's `spacing`, linear between nodes (0 beyond).
+    pub fn height_at(&self, x: f64, spacing: f64) -> f64 {
+        let at = x / spacing;
+        let i = at.floor() as usize;
+        match (self.height.get(i), self.height.get(i + 1)) {
+            (Some(a), Some(b)) => a + (at - i as f64) * (b - a),
+            (Some(a), None) => *a,
+            _ => 0.0,
         }
-        let cot = 1.0 / tan_repose;
-        let first = surface.face.node;
-        self.lost.clear();
-        for i in nodes {
-            let (h, s) = (surface.height[i], self.area[i]);
-            if h <= 0.0 || h * h * cot <= s {
-                continue;
-            }
-            // The positive root of cot h'² + w h' − (w h + S) = 0, in the
-            // form without cancellation.
-            let section = width * h + s;
-            let kept = 2.0 * section / (width + (width * width + 4.0 * cot * section).sqrt());
-            if kept >= h {
-                continue;
-            }
-            let gamma = surface.unit_weight[i];
-            let moved = width * (h - kept);
-            let area = s + moved;
-            self.unit_weight[i] = (self.unit_weight[i] * s + gamma * moved) / area;
-            self.area[i] = area;
-            self.height[i] = (area * tan_repose).sqrt();
-            // The strip's loss by its own mass rule (M24), so that the
-            // balance is exact.
-            let before = surface.unit_weight[i] * surface.column_area(i, first);
-            surface.height[i] = kept;
-            self.lost
-                .push(before - gamma * surface.column_area(i, first));
-        }
-        let weight = compensated_sum(self.lost.iter().copied());
-        self.spilled += weight;
-        weight
     }
 
     /// Whether any side heap lies at or after node `from`.
@@ -102,5 +132,28 @@ impl SideHeaps {
         self.height
             .get(from..)
             .is_some_and(|h| h.iter().any(|&v| v > 0.0))
+    }
+
+    /// The field holds at least `nodes` nodes (0 beyond its heaps, which
+    /// the crescents read linearly: a field that ended at its last heap
+    /// would hold that heap's height beyond it).
+    pub fn reach(&mut self, nodes: usize) {
+        if self.area.len() < nodes {
+            self.area.resize(nodes, 0.0);
+            self.height.resize(nodes, 0.0);
+            self.unit_weight.resize(nodes, 0.0);
+        }
+    }
+
+    /// Adds the section `moved` of soil of unit weight γ to node i.
+    fn deposit(&mut self, i: usize, moved: f64, gamma: f64, edges: Edges) {
+        if moved <= 0.0 {
+            return;
+        }
+        let s = self.area[i];
+        let area = s + moved;
+        self.unit_weight[i] = (self.unit_weight[i] * s + gamma * moved) / area;
+        self.area[i] = area;
+        self.height[i] = (area * edges.tan_repose).sqrt();
     }
 }

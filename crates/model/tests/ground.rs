@@ -39,6 +39,8 @@ fn cut(ground: &Ground, beta: f64, psi: f64, band_width: f64, v0: f64) -> Cut {
             v0 / beta.cos()
         },
         tan_psi: if band_width > 0.0 { psi.tan() } else { 0.0 },
+        band_shear: Default::default(),
+        unit_weight: Default::default(),
     }
 }
 

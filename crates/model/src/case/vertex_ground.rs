@@ -6,8 +6,8 @@
 use super::{BandShearRule, Case, CaseError, UnitWeightRule};
 
 impl Case {
-    /// Whether the vertex ground can run this case: a blade in plane
-    /// strain, vertical or raked, at constant depth or on a depth path (a
+    /// Whether the vertex ground can run this case: a blade vertical or
+    /// raked, of finite width or in plane strain, at constant depth or on a depth path (a
     /// vertical one), with or without an end wall (the same), under the default
     /// choices and a sampled search (`run.samples_per_band` > 0); else the first key it cannot take.
     pub fn vertex_ground_supports(&self) -> Result<(), CaseError> {
@@ -20,9 +20,6 @@ impl Case {
                 ),
             ))
         };
-        if self.blade.width.is_some() {
-            return unsupported("blade.width", "a blade of finite width");
-        }
         if self.choices.band_shear != BandShearRule::Full {
             return unsupported("choices.band_shear", "a band shear other than full");
         }

@@ -17,11 +17,13 @@ use super::search::{Pick, PickObserver, Scan, VertexSearch};
 use super::{Ground, Quiet};
 use crate::band::stretch;
 use crate::case::{Case, TimeScheme};
+use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::kinematics::BandMotion;
 use crate::landscape::Candidate;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
+use crate::spill::{Edges, SideHeaps};
 use crate::step::{ProfilePoint, StepError, StepRecord};
 
 /// Flat fresh ground appended when the search reaches the end, in d.
@@ -37,6 +39,11 @@ pub struct Cutting {
     rake: Rake,
     ground: Ground,
     search: VertexSearch,
+    /// Soil spilled around the edges of a blade of finite width, a field
+    /// at fixed x every `run.vertex_spacing` (the vertices move).
+    side: SideHeaps,
+    /// w for a blade of finite width, else 1: forces and masses per blade.
+    per_blade: f64,
 }
 
 impl Cutting {
@@ -52,19 +59,21 @@ impl Cutting {
         let length = case.bin.length.map_or(ahead, |wall| wall.min(ahead));
         let spacing = case.run.vertex_spacing;
         let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
-        Self::resumed(case, ground, 0)
+        Self::resumed(case, (ground, SideHeaps::default()), 0)
     }
 
-    /// The cut of `case` resumed on `ground` after `evaluations` Eq. (1)
-    /// evaluations (a restored snapshot; the search keeps no state from
-    /// one increment to the next).
-    pub(crate) fn resumed(case: &Case, ground: Ground, evaluations: u64) -> Self {
+    /// The cut of `case` resumed on `ground` beside `side` after
+    /// `evaluations` Eq. (1) evaluations (a restored snapshot; the search
+    /// keeps no state from one increment to the next).
+    pub(crate) fn resumed(case: &Case, (ground, side): (Ground, SideHeaps), evaluations: u64) -> Self {
         let mut search = VertexSearch::default();
         search.evaluations = evaluations;
         Cutting {
             rake: Rake::new(case.blade.rake),
             ground,
             search,
+            side,
+            per_blade: case.blade.width.unwrap_or(1.0),
         }
     }
 
@@ -73,17 +82,22 @@ impl Cutting {
         &self.ground
     }
 
+    /// The side heaps now (empty in plane strain).
+    pub fn side_heaps(&self) -> &SideHeaps {
+        &self.side
+    }
+
     /// The least-force mechanism of the next increment (§2 on the ground)
     /// under `scan` (`Cutting::scan`), every first-stage candidate handed
     /// to `observer` if there is one.
     fn search_next(
-        &mut self,
+        (search, ground): (&mut VertexSearch, &mut Ground),
         (at, scan): (&Context, &Scan),
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {
-        let u = self.ground.x[0];
-        self.search
-            .run(&mut self.ground, scan, observer)
+        let u = ground.x[0];
+        search
+            .run(ground, scan, observer)
             .ok_or_else(|| StepError::no_mechanism(at.done + 1, u, at.case.bin.length))
     }
 
@@ -95,8 +109,10 @@ impl Cutting {
         (depth, (depth - case.tip_depth(u + v0)) / v0)
     }
 
-    /// What the search needs besides the ground, this increment.
-    fn scan<'a>(&self, at: &Context<'a>) -> Scan<'a> {
+    /// What the search needs besides the ground, this increment, beside
+    /// `side`, the cut's side heaps (borrowed apart from the cut, which
+    /// the search then advances).
+    fn scan<'a>(&self, at: &Context<'a>, side: &'a SideHeaps) -> Scan<'a> {
         let (c, d) = (at.case, at.case.blade.depth);
         let u = self.ground.x[0];
         let band_width = c.soil.band_width;
@@ -118,6 +134,19 @@ impl Cutting {
             // The ground never grows past the end wall.
             reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
             rake: self.rake,
+            crescents: c.blade.width.map(|width| {
+                let spacing = c.run.vertex_spacing;
+                Crescents {
+                    width,
+                    unit_weight: c.soil.unit_weight,
+                    tan_repose: c.soil.repose.to_radians().tan(),
+                    face_x: u,
+                    spacing,
+                    ridges: side.any_from((u / spacing).floor() as usize),
+                    ridge_height: &side.height,
+                    ridge_unit_weight: &side.unit_weight,
+                }
+            }),
         }
     }
 
@@ -141,6 +170,8 @@ impl Cutting {
             slip: 0.0,
             tan_psi: 0.0,
             rake: self.rake,
+            band_shear: c.choices.band_shear,
+            unit_weight: c.choices.unit_weight,
         };
         match BandMotion::new((t, pick.angles.dilation), &self.rake, v0) {
             Some(m) if line.thickness > 0.0 => Cut {
@@ -160,12 +191,11 @@ impl Discretisation for Cutting {
     }
 
     fn mass(&self) -> f64 {
-        self.ground.mass()
+        self.ground.mass() * self.per_blade
     }
 
-    /// No side heaps: a blade of finite width is refused.
     fn mass_spilled(&self) -> f64 {
-        0.0
+        self.side.spilled * self.per_blade
     }
 
     fn evaluations(&self) -> u64 {
@@ -190,7 +220,7 @@ impl Discretisation for Cutting {
                     y: g.y[k],
                     accumulated_shear: g.accumulated_shear[piece],
                     unit_weight: g.unit_weight[piece],
-                    ridge_height: 0.0,
+                    ridge_height: self.side.height_at(g.x[k], at.case.run.vertex_spacing),
                 }
             })
             .collect()
@@ -205,8 +235,9 @@ impl Discretisation for Cutting {
     /// force half an increment on).
     fn landscape(&mut self, at: &Context) -> Result<Vec<Candidate>, StepError> {
         let mut picks = Vec::new();
-        let scan = self.scan(at);
-        let chosen = self.search_next((at, &scan), Some(&mut |p: &Pick| picks.push(*p)))?;
+        let scan = self.scan(at, &self.side);
+        let parts = (&mut self.search, &mut self.ground);
+        let chosen = Self::search_next(parts, (at, &scan), Some(&mut |p: &Pick| picks.push(*p)))?;
         if !picks.contains(&chosen) {
             // In order along the ground, as the samples are.
             let at = picks.partition_point(|p| p.x < chosen.x);
@@ -220,7 +251,7 @@ impl Discretisation for Cutting {
                 x_emergence: self.rake.x(p.x, p.y, tip),
                 y_emergence: p.y,
                 beta_deg: p.tan_beta.atan().to_degrees(),
-                force: p.force,
+                force: p.force * self.per_blade,
                 force_norm: p.force / scale,
                 friction_deg: p.angles.friction.to_degrees(),
                 dilation_deg: p.angles.dilation.to_degrees(),
@@ -231,8 +262,8 @@ impl Discretisation for Cutting {
     /// The increment (M48, M49, M50), its force components by (M12).
     fn step(&mut self, at: &Context) -> Result<StepRecord, StepError> {
         let c = at.case;
-        let scan = self.scan(at);
-        let pick = self.search_next((at, &scan), None)?;
+        let scan = self.scan(at, &self.side);
+        let pick = Self::search_next((&mut self.search, &mut self.ground), (at, &scan), None)?;
         let pick = match c.run.time_scheme {
             TimeScheme::Explicit => pick,
             TimeScheme::MidpointForce => {
@@ -275,28 +306,37 @@ impl Discretisation for Cutting {
             };
             self.ground.merge_quiet(1, self.ground.pieces(), &quiet);
         }
+        if let Some(width) = c.blade.width {
+            let edges = Edges {
+                width,
+                tan_repose: c.soil.repose.to_radians().tan(),
+            };
+            self.ground
+                .spill(&mut self.side, edges, c.run.vertex_spacing);
+        }
         let omega = at
             .laws
             .face
             .angle(face.mobilisation(pick.tan_beta, pick.angles.dilation));
+        let force = pick.force * self.per_blade;
         Ok(StepRecord {
             step: at.done + 1,
             u,
             u_over_d: u / d,
-            force: pick.force,
+            force,
             force_norm: pick.force / c.force_scale(),
-            force_h: pick.force * omega.cos(),
-            force_v: pick.force * omega.sin(),
+            force_h: force * omega.cos(),
+            force_v: force * omega.sin(),
             beta_deg: pick.tan_beta.atan().to_degrees(),
             x_emergence: self.rake.x(pick.x, pick.y, tip),
-            mass: self.ground.mass(),
+            mass: self.mass(),
             y_emergence: pick.y,
             friction_deg: pick.angles.friction.to_degrees(),
             slip: cut.slip,
             dilation_deg: pick.angles.dilation.to_degrees(),
             dilation_area: moved.dilation_area,
             depth: tip,
-            mass_spilled: 0.0,
+            mass_spilled: self.mass_spilled(),
         })
     }
 }

@@ -32,10 +32,8 @@ pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip
         .laws
         .band_angles(footprint_means(ground, scan, &pick, half_slip));
     let factor = scan.laws.factor(angles, pick.tan_beta, scan.face);
-    match scan
-        .loads
-        .force(&factor, pick.weight, pick.length, pick.tan_beta)
-    {
+    let geometry = (pick.weight, pick.length, pick.tan_beta);
+    match scan.force(&factor, geometry, pick.x - ground.x[0]) {
         Some(force) => Pick {
             force,
             angles,

@@ -26,6 +26,7 @@
 //! keeps the weight of soil unchanged (M27).
 
 use super::Ground;
+use crate::case::{BandShearRule, UnitWeightRule};
 use crate::kinematics::dilation_gap;
 use crate::surface::compensated_sum;
 
@@ -59,6 +60,10 @@ pub struct Cut {
     /// The shear of a raked blade's coordinates, in which the ground is
     /// held (`Rake`; the identity for a vertical blade).
     pub rake: crate::rake::Rake,
+    /// How much of Δut the band's pieces accumulate (M22).
+    pub band_shear: BandShearRule,
+    /// How the band's unit weight is updated (M25, M27).
+    pub unit_weight: UnitWeightRule,
 }
 
 /// What an increment did to the ground.
@@ -104,10 +109,10 @@ impl Ground {
         let below_path = -self.floor - cut.depth - 0.5 * cut.deepening;
         let target_area = area_before - cut.advance * below_path + dilation_area;
         let trench_mass = self.unit_weight[0] * cut.advance * below_path;
-        let band = if banded {
+        let (band, shares) = if banded {
             self.shear_band(&line, cut, corner, emergence)?
         } else {
-            self.slide_over(cut, emergence)
+            (self.slide_over(cut, emergence), Vec::new())
         };
         // The swept soil, ½ v0 (e + rise), on the face's piece (M20), and
         // the tip's path's share, ½ v0 Δd (M38), over the ground within v0
@@ -132,11 +137,21 @@ impl Ground {
         if banded {
             self.keep_band_state(&before, band.clone());
         }
-        for ut in &mut self.accumulated_shear[band.clone()] {
-            *ut += cut.slip;
-        }
+        self.accumulate_shear(band.clone(), &shares, cut);
         self.trench_mass += trench_mass;
-        self.weigh_band(band.clone(), mass_before - trench_mass, end);
+        match cut.unit_weight {
+            UnitWeightRule::BandUniform => {
+                self.weigh_band(band.clone(), mass_before - trench_mass, end)
+            }
+            UnitWeightRule::PerNodeFormula if banded && dilation_area != 0.0 => {
+                // The paper's A_new = A0 (1 + Δut tan ψ / dB) on each piece.
+                let strain = cut.slip * cut.tan_psi / cut.width;
+                for g in &mut self.unit_weight[band.clone()] {
+                    *g /= 1.0 + strain;
+                }
+            }
+            UnitWeightRule::PerNodeFormula => {}
+        }
         let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
         let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
         Some(Moved {
@@ -187,15 +202,15 @@ impl Ground {
     }
 
     /// The band's motion: vertex k moves by f_k (v0, rise), f_k = g_k
-    /// clamped to [0, 1]; returns the band's pieces, or `None` if the
-    /// images fold over.
+    /// clamped to [0, 1]; returns the band's pieces and every vertex's
+    /// f_k up to the emergence vertex, or `None` if the images fold over.
     fn shear_band(
         &mut self,
         line: &LowerBoundary,
         cut: &Cut,
         corner: usize,
         emergence: usize,
-    ) -> Option<std::ops::Range<usize>> {
+    ) -> Option<(std::ops::Range<usize>, Vec<f64>)> {
         // The corner's g is 1 to round-off: it moves with the block.
         let share = |k: usize| match k <= corner {
             true => 1.0,
@@ -212,7 +227,23 @@ impl Ground {
         for (y, f) in self.y.iter_mut().zip(&shares) {
             *y += f * cut.rise;
         }
-        Some(corner..emergence)
+        Some((corner..emergence, shares))
+    }
+
+    /// Δut on the band's pieces (M22): all of it, or by position, a piece
+    /// the mean of its vertices' f, its soil's mean displacement relative
+    /// to the ground below the band (f is affine along a piece, which no
+    /// upper boundary crosses). A slip line's piece lies on the line
+    /// (f = 0), as the node grid's emergence node does.
+    fn accumulate_shear(&mut self, band: std::ops::Range<usize>, shares: &[f64], cut: &Cut) {
+        for k in band {
+            let share = match cut.band_shear {
+                BandShearRule::Full => 1.0,
+                BandShearRule::ByPosition if shares.is_empty() => 0.0,
+                BandShearRule::ByPosition => 0.5 * (shares[k] + shares[k + 1]),
+            };
+            self.accumulated_shear[k] += share * cut.slip;
+        }
     }
 
     /// The slip line's motion (M14): the block's vertices move by

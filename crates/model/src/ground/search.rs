@@ -26,9 +26,10 @@
 
 use super::Ground;
 use crate::band::stretch;
+use crate::crescent::{BandTerms, Crescents};
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
-use crate::mechanism::Loads;
+use crate::mechanism::{ForceFactor, Loads};
 use crate::rake::Rake;
 use crate::search::bounds::{may_win, Lower};
 
@@ -71,6 +72,43 @@ pub(crate) struct Scan<'a> {
     /// The shear of a raked blade's coordinates (the ground is held in
     /// x' = x + (y + d) cot α, where the face is vertical; `Rake`).
     pub(crate) rake: Rake,
+    /// The side crescents of a blade of finite width (`None`: plane
+    /// strain); forces compared are then the blade's per unit width.
+    pub(crate) crescents: Option<Crescents<'a>>,
+}
+
+impl Scan<'_> {
+    /// P: Eq. (1) with the loads for a band of weight W and slip line of
+    /// horizontal length L at tan β = `t` (M4, M6, M8), emerging `rupture`
+    /// ahead of the face in the ground's coordinates; for a blade of
+    /// finite width, plus its side crescents per unit width (M42).
+    pub(crate) fn force(
+        &self,
+        factor: &ForceFactor,
+        (weight, length, t): (f64, f64, f64),
+        rupture: f64,
+    ) -> Option<f64> {
+        let band = self.loads.force(factor, weight, length, t)?;
+        let Some(crescents) = &self.crescents else {
+            return Some(band);
+        };
+        let terms = BandTerms {
+            factor: factor.at(t)?,
+            cohesion: self.loads.cohesion * length * factor.cohesion_at(t),
+            surcharge: self.loads.surcharge,
+        };
+        Some(band + crescents.force_per_width(terms, rupture, self.depth, self.rake.cot))
+    }
+
+    /// The weight the bounds use for a band of weight W emerging `rupture`
+    /// ahead of the face: W, plus the crescents' least weight per unit
+    /// width for a blade of finite width (`Crescents::weight_floor`).
+    fn bound_weight(&self, weight: f64, rupture: f64) -> f64 {
+        match &self.crescents {
+            None => weight,
+            Some(c) => weight + c.weight_floor(rupture, self.depth, self.rake.cot),
+        }
+    }
 }
 
 /// The chosen mechanism.
@@ -248,8 +286,9 @@ impl VertexSearch {
             return false;
         }
         let row = &self.rows[k];
-        let t = (ground.y[k] + scan.depth) / (ground.x[k] - ground.x[0]);
-        (row.sum_a - t * row.sum_b) * scan.laws.min_factor > best.force
+        let run = ground.x[k] - ground.x[0];
+        let t = (ground.y[k] + scan.depth) / run;
+        scan.bound_weight(row.sum_a - t * row.sum_b, run) * scan.laws.min_factor > best.force
     }
 
     /// The first stage on piece k: candidates from x_k (not the face) at
@@ -362,18 +401,19 @@ impl VertexSearch {
         let weight = sum_a - grid * sum_b;
         // No band here can come within the slack of the best: P ≥ W f_min.
         let (_, lower) = self.least.expect("a piece scanned");
-        if !lower.can_beat(weight, t, bar, &scan.face) {
+        let bound = scan.bound_weight(weight, run);
+        if !lower.can_beat(bound, t, bar, &scan.face) {
             return None;
         }
         let (angles, rear) = self.footprint_angles(ground, scan, (k, x, y), (grid, t));
         let angles = scan.laws.band_angles(angles);
         // Eq. (1) at the band's φ rounded down on the table's grid.
-        if !may_win((scan.laws, &scan.face), (weight, t), &angles, bar) {
+        if !may_win((scan.laws, &scan.face), (bound, t), &angles, bar) {
             return None;
         }
         self.evaluations += 1;
         let factor = scan.laws.factor(angles, t, scan.face);
-        let force = scan.loads.force(&factor, weight, length, t)?;
+        let force = scan.force(&factor, (weight, length, t), run)?;
         Some(Pick {
             x,
             y,

@@ -17,9 +17,10 @@ use crate::laws::Laws;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::search::{Choice, Observer, Search, SearchInput};
-use crate::spill::SideHeaps;
+use crate::spill::{Column, Edges, SideHeaps};
 use crate::step::{ProfilePoint, StepError, StepRecord};
-use crate::surface::Surface;
+use crate::surface::{compensated_sum, Surface};
+use std::ops::Range;
 
 /// Depths the domain grows by when the search reaches its end.
 const GROW_DEPTHS: f64 = 4.0;
@@ -52,6 +53,8 @@ pub(crate) struct NodeGrid {
     avalanche: Avalanche,
     /// Soil spilled around the edges of a blade of finite width.
     pub(super) side: SideHeaps,
+    /// The strip's losses of one spill, summed compensated.
+    lost: Vec<f64>,
     /// The grid's shear for a raked blade (identity for 90°).
     rake: Rake,
     /// Steepest slopes on the grid, downhill and uphill in +x (`Rake`).
@@ -85,6 +88,7 @@ impl NodeGrid {
             kinematics: Kinematics::default(),
             avalanche: Avalanche::default(),
             side: SideHeaps::default(),
+            lost: Vec::new(),
             rake,
             repose_slopes: rake.repose_slopes(tan_repose),
             per_blade: case.blade.width.unwrap_or(1.0),
@@ -240,8 +244,32 @@ impl NodeGrid {
         if let Some(width) = at.case.blade.width {
             let tan_repose = at.case.soil.repose.to_radians().tan();
             let ahead = first..self.surface.pristine_from.min(self.surface.len());
-            self.side.spill(&mut self.surface, width, tan_repose, ahead);
+            self.spill(Edges { width, tan_repose }, ahead);
         }
+    }
+
+    /// Spills the strip's soil at `nodes` (ahead of the face) into the
+    /// side heaps (M45), each node a node of their field; the strip's loss
+    /// by its own mass rule (M24), so that the balance is exact.
+    fn spill(&mut self, edges: Edges, nodes: Range<usize>) {
+        let first = self.surface.face.node;
+        self.side.reach(self.surface.len());
+        self.lost.clear();
+        for i in nodes {
+            let s = &mut self.surface;
+            let gamma = s.unit_weight[i];
+            let column = Column {
+                height: s.height[i],
+                unit_weight: gamma,
+            };
+            let Some(kept) = self.side.spill_at_node(i, column, edges) else {
+                continue;
+            };
+            let before = gamma * s.column_area(i, first);
+            s.height[i] = kept;
+            self.lost.push(before - gamma * s.column_area(i, first));
+        }
+        self.side.spilled += compensated_sum(self.lost.iter().copied());
     }
 }
 

@@ -35,14 +35,14 @@ use crate::laws::Laws;
 use crate::search::Search;
 use crate::spill::SideHeaps;
 use crate::surface::Surface;
-use check::{check_state, finite, finite_all, StateCheck};
+use check::{check_side_heaps, check_state, finite, finite_all, StateCheck};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 
 /// The first bytes of every snapshot.
 pub const MAGIC: [u8; 8] = *b"SOILCUT\x01";
 /// The layout's version: raised whenever the body changes.
-pub const FORMAT_VERSION: u32 = 6;
+pub const FORMAT_VERSION: u32 = 7;
 /// The crate version a snapshot must come from.
 pub const CRATE_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Bytes of the CRC-32 that ends every snapshot.
@@ -60,6 +60,8 @@ struct Body<'a> {
     /// Increments done; the face follows from them.
     done: usize,
     initial_mass: f64,
+    /// The side heaps of a blade of finite width, on either ground.
+    side: Cow<'a, SideHeaps>,
     /// The node grid; empty on the vertex ground, and not read there.
     nodes: NodeBody<'a>,
     /// The vertex ground and its evaluations, where the case has one
@@ -86,11 +88,6 @@ struct NodeBody<'a> {
     /// The search's seed and its count of evaluations.
     seed: Option<usize>,
     evaluations: u64,
-    /// The side heaps: the weight spilled, and S, h_s, γs per node.
-    spilled: f64,
-    side_area: Cow<'a, [f64]>,
-    side_height: Cow<'a, [f64]>,
-    side_unit_weight: Cow<'a, [f64]>,
 }
 
 impl Simulation {
@@ -134,11 +131,12 @@ impl Simulation {
     }
 
     fn body<'a>(&'a self, note: &'a [u8]) -> Body<'a> {
-        let (nodes, vertices) = match &self.ground {
-            Discretised::Nodes(grid) => (NodeBody::of(grid), None),
+        let (nodes, vertices, side) = match &self.ground {
+            Discretised::Nodes(grid) => (NodeBody::of(grid), None, &grid.side),
             Discretised::Vertices(cutting) => (
                 NodeBody::default(),
                 Some((Cow::Borrowed(cutting.ground()), cutting.evaluations())),
+                cutting.side_heaps(),
             ),
         };
         Body {
@@ -146,6 +144,7 @@ impl Simulation {
             note: Cow::Borrowed(note),
             done: self.done,
             initial_mass: self.initial_mass,
+            side: Cow::Borrowed(side),
             nodes,
             vertices,
         }
@@ -157,9 +156,13 @@ impl Simulation {
         let case = b.case.into_owned();
         let initial_mass = finite("initial mass", b.initial_mass)?;
         let laws = Laws::new(&case);
+        let side = side_heaps(&case, b.side.into_owned())?;
         let ground = match resumed_vertices(&case, b.vertices)? {
-            Some(cutting) => Discretised::Vertices(Box::new(cutting)),
-            None => Discretised::Nodes(Box::new(b.nodes.restore(&case, &laws, b.done)?)),
+            Some(ground) => {
+                let (ground, evaluations) = ground;
+                Discretised::Vertices(Box::new(Cutting::resumed(&case, (ground, side), evaluations)))
+            }
+            None => Discretised::Nodes(Box::new(b.nodes.restore(&case, &laws, (b.done, side))?)),
         };
         Ok(Simulation {
             laws,
@@ -173,7 +176,7 @@ impl Simulation {
 
 impl<'a> NodeBody<'a> {
     fn of(grid: &'a NodeGrid) -> Self {
-        let (s, side) = (&grid.surface, &grid.side);
+        let s = &grid.surface;
         NodeBody {
             floor: s.floor,
             pristine_from: s.pristine_from,
@@ -187,16 +190,18 @@ impl<'a> NodeBody<'a> {
             dilation: Cow::Borrowed(&s.dilation),
             seed: grid.search.previous(),
             evaluations: grid.search.evaluations,
-            spilled: side.spilled,
-            side_area: Cow::Borrowed(&side.area),
-            side_height: Cow::Borrowed(&side.height),
-            side_unit_weight: Cow::Borrowed(&side.unit_weight),
         }
     }
 
-    /// The node grid of `case` after `done` increments, once the numbers
-    /// are finite and the state one that runs reach (`check_state`).
-    fn restore(self, case: &Case, laws: &Laws, done: usize) -> Result<NodeGrid, SnapshotError> {
+    /// The node grid of `case` after `done` increments beside `side`, once
+    /// the numbers are finite and the state one that runs reach
+    /// (`check_state`).
+    fn restore(
+        self,
+        case: &Case,
+        laws: &Laws,
+        (done, side): (usize, SideHeaps),
+    ) -> Result<NodeGrid, SnapshotError> {
         let floor = finite("surface floor", self.floor)?;
         let column = |what, v: Cow<[f64]>| finite_all(what, v.into_owned());
         let height = column("surface heights", self.height)?;
@@ -204,11 +209,6 @@ impl<'a> NodeBody<'a> {
         let unit_weight = column("unit weights", self.unit_weight)?;
         let friction = column("friction angles", self.friction)?;
         let dilation = column("dilation angles", self.dilation)?;
-        let mut side = SideHeaps::default();
-        side.spilled = finite("mass spilled", self.spilled)?;
-        side.area = column("side heaps", self.side_area)?;
-        side.height = column("side heaps", self.side_height)?;
-        side.unit_weight = column("side heaps", self.side_unit_weight)?;
         let k = case.increments_per_node();
         // The face follows from the increments done (`Scheme::face_after`).
         let face = FaceNode {
@@ -250,12 +250,26 @@ impl<'a> NodeBody<'a> {
     }
 }
 
-/// The vertex ground of a restored snapshot: there exactly where its case
-/// asks for one, and one that runs make (`Ground::defect`).
+/// The side heaps of a restored snapshot, once their numbers are finite
+/// and their columns of one length, and none without a blade width.
+fn side_heaps(case: &Case, side: SideHeaps) -> Result<SideHeaps, SnapshotError> {
+    let side = SideHeaps {
+        spilled: finite("mass spilled", side.spilled)?,
+        area: finite_all("side heaps", side.area)?,
+        height: finite_all("side heaps", side.height)?,
+        unit_weight: finite_all("side heaps", side.unit_weight)?,
+    };
+    check_side_heaps(case, &side)?;
+    Ok(side)
+}
+
+/// The vertex ground of a restored snapshot and its evaluations: there
+/// exactly where its case asks for one, and one that runs make
+/// (`Ground::defect`).
 fn resumed_vertices(
     case: &Case,
     vertices: Option<(Cow<Ground>, u64)>,
-) -> Result<Option<Cutting>, SnapshotError> {
+) -> Result<Option<(Ground, u64)>, SnapshotError> {
     let wanted = case.run.vertex_spacing > 0.0;
     match vertices {
         None if !wanted => Ok(None),
@@ -264,7 +278,7 @@ fn resumed_vertices(
             if let Some(defect) = ground.defect() {
                 return Err(SnapshotError::invalid("vertex ground", defect));
             }
-            Ok(Some(Cutting::resumed(case, ground, evaluations)))
+            Ok(Some((ground, evaluations)))
         }
         _ => Err(SnapshotError::invalid(
             "vertex ground",

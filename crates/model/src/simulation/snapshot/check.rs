@@ -41,7 +41,7 @@ pub(super) struct StateCheck<'a> {
 pub(super) fn check_state(c: &StateCheck) -> Result<(), SnapshotError> {
     check_nodes(c)?;
     check_ground(c)?;
-    check_side_heaps(c)
+    check_side_heaps_within(c)
 }
 
 /// The node columns: of one length, from the face to the end wall at
@@ -115,26 +115,36 @@ fn check_ground(c: &StateCheck) -> Result<(), SnapshotError> {
     Ok(())
 }
 
-/// The side heaps: columns of one length within the surface, and none
-/// without a blade width.
-fn check_side_heaps(c: &StateCheck) -> Result<(), SnapshotError> {
-    let n = c.n;
-    let side = c.side;
+/// The side heaps: columns of one length, and none without a blade width;
+/// on the node grid within the surface.
+pub(super) fn check_side_heaps(case: &Case, side: &SideHeaps) -> Result<(), SnapshotError> {
     let m = side.area.len();
-    if side.height.len() != m || side.unit_weight.len() != m || m > n {
+    if side.height.len() != m || side.unit_weight.len() != m {
         return Err(SnapshotError::invalid(
             "side heaps",
             format!(
-                "columns of {m}, {} and {} nodes for a surface of {n}",
+                "columns of {m}, {} and {} nodes",
                 side.height.len(),
                 side.unit_weight.len()
             ),
         ));
     }
-    if c.case.blade.width.is_none() && (m > 0 || side.spilled != 0.0) {
+    if case.blade.width.is_none() && (m > 0 || side.spilled != 0.0) {
         return Err(SnapshotError::invalid(
             "side heaps",
             "a blade without blade.width has none".to_string(),
+        ));
+    }
+    Ok(())
+}
+
+/// The node grid's side heaps lie within its surface.
+fn check_side_heaps_within(c: &StateCheck) -> Result<(), SnapshotError> {
+    let (m, n) = (c.side.area.len(), c.n);
+    if m > n {
+        return Err(SnapshotError::invalid(
+            "side heaps",
+            format!("columns of {m} nodes for a surface of {n}"),
         ));
     }
     Ok(())
