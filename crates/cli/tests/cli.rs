@@ -115,17 +115,20 @@ fn missing_key() {
 /// What the vertex ground does not do is refused by `run` and `check`
 /// alike, naming its key (docs/model.md §19).
 #[test]
-fn the_vertex_ground_refuses_what_it_does_not_do() {
-    let vertices = "run.vertex_spacing=0.4";
+fn the_time_scheme_is_refused_where_it_cannot_run() {
     assert_bad_input(
         REFINED,
-        &[vertices, "run.samples_per_band=0"],
-        "run.samples_per_band: must be > 0 with run.vertex_spacing > 0 (got 0)",
+        &[
+            "run.vertex_spacing=0.4",
+            "choices.face_friction=\"sign\"",
+            "run.time_scheme=\"midpoint-force\"",
+        ],
+        "run.time_scheme: \"midpoint-force\" needs choices.face_friction = \"mobilised\"",
     );
     assert_bad_input(
         REFINED,
-        &[vertices, "blade.width=40"],
-        "blade.width: a blade of finite width: not supported on the vertex ground",
+        &["run.vertex_spacing=0", "run.time_scheme=\"midpoint-force\""],
+        "run.time_scheme: \"midpoint-force\" runs on the vertex ground only",
     );
 }
 

@@ -9,7 +9,6 @@
 mod defaults;
 mod error;
 mod validate;
-mod vertex_ground;
 mod warnings;
 
 pub use defaults::{

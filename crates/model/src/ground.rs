@@ -28,10 +28,10 @@ use serde::{Deserialize, Serialize};
 mod avalanche;
 pub(crate) mod cutting;
 mod merge;
-mod spill;
 mod midpoint;
 pub mod motion;
 pub(crate) mod search;
+mod spill;
 
 pub use merge::Quiet;
 

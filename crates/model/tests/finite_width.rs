@@ -245,6 +245,9 @@ fn spilled_soil_on_vertices_is_conserved_and_follows_the_grid() {
     });
     for (what, g, v) in [("mean force", a.0, b.0), ("spilled", a.1, b.1)] {
         let rel = v / g - 1.0;
-        assert!(rel.abs() < 0.02, "{what}: vertices {v} vs grid {g} ({rel:+.4})");
+        assert!(
+            rel.abs() < 0.02,
+            "{what}: vertices {v} vs grid {g} ({rel:+.4})"
+        );
     }
 }

@@ -90,22 +90,74 @@ fn the_vertices_do_not_multiply_with_the_resolution() {
     );
 }
 
+/// The band rules beyond the default run on the vertex ground as on the
+/// reference grid (Table 1 S, 3 d, vertices d/50 at d/250 against nodes
+/// at d/2000): by position, every unit window within 2 % (measured 0.2-1.3
+/// %); the paper's per-node unit weight within 2 % (0.1-0.9 %), and it
+/// loses soil on both grounds (the band's dilation divides γ instead of
+/// adding volume; −1.3 % of the mass on the grid, −2.1 % here), where the
+/// default keeps it.
 #[test]
-fn what_the_vertex_ground_does_not_do_is_refused_by_its_key() {
-    let mut wide = table1_s(1.0, 250.0);
-    wide.blade.width = Some(40.0);
-    let e = Simulation::new(&wide).unwrap_err();
-    assert_eq!(e.key, "blade.width");
-    let mut by_position = table1_s(1.0, 250.0);
-    by_position.choices.band_shear = soilcut_model::BandShearRule::ByPosition;
-    let e = Simulation::new(&by_position).unwrap_err();
-    assert_eq!(e.key, "choices.band_shear");
-    // The vertex ground has no exhaustive search to fall back on.
-    let mut exhaustive = table1_s(1.0, 250.0);
+fn the_band_rules_run_on_the_vertex_ground_as_on_the_grid() {
+    use soilcut_model::{BandShearRule, UnitWeightRule};
+    let d = 20.0;
+    let by_position = |mut case: soilcut_model::Case| {
+        case.choices.band_shear = BandShearRule::ByPosition;
+        case
+    };
+    let per_node = |mut case: soilcut_model::Case| {
+        case.choices.unit_weight = UnitWeightRule::PerNodeFormula;
+        case
+    };
+    let rules: [(&str, &dyn Fn(soilcut_model::Case) -> soilcut_model::Case); 2] = [
+        ("by-position", &by_position),
+        ("per-node-formula", &per_node),
+    ];
+    for (rule, with) in rules {
+        let (ours, sim) = common::run(&with(table1_s(3.0, 250.0)));
+        let mut grid = common::refined("table1-s", 3.0, 2000.0);
+        grid.run.samples_per_band = 0.0;
+        let (theirs, _) = common::run(&with(grid));
+        let windows = |h| common::window_means(h, d, 3);
+        for (w, (a, b)) in windows(&ours).iter().zip(&windows(&theirs)).enumerate() {
+            assert!((a - b).abs() < 0.02 * b, "{rule}, window {w}: {a} vs {b}");
+        }
+        let drift = ours.last().unwrap().mass / sim.initial_mass() - 1.0;
+        match rule {
+            "by-position" => assert!(drift.abs() < 1e-12, "{rule}: drift {drift:e}"),
+            _ => assert!(drift < -1e-3, "{rule}: drift {drift:e}"),
+        }
+    }
+}
+
+/// `run.samples_per_band = 0` on the vertex ground is the exhaustive
+/// search: every emergence point v0 apart and every vertex, its local
+/// minima narrowed to v0. On the same ground it never ends above the
+/// sampled search (K = 8): the two runs take the same increments, bit for
+/// bit, until one of them picks another band, and before that the
+/// exhaustive force is never the higher.
+#[test]
+fn the_exhaustive_vertex_search_is_never_above_the_sampled() {
+    let sampled = table1_s(2.0, 250.0);
+    let mut exhaustive = sampled.clone();
     exhaustive.run.samples_per_band = 0.0;
-    let e = exhaustive.validate().unwrap_err();
-    assert_eq!(e.key, "run.samples_per_band");
-    assert!(e.message.contains("run.vertex_spacing > 0"), "{e}");
+    let (a, _) = common::run(&sampled);
+    let (b, _) = common::run(&exhaustive);
+    let mut same = 0;
+    for (s, e) in a.iter().zip(&b) {
+        assert!(
+            e.force <= s.force * (1.0 + 1e-12),
+            "step {}: exhaustive {} above sampled {}",
+            s.step,
+            e.force,
+            s.force
+        );
+        if s != e {
+            break;
+        }
+        same += 1;
+    }
+    assert!(same > 10, "only {same} increments on the same ground");
 }
 
 #[test]

@@ -3,6 +3,7 @@
 //! thinner than the vertex spacing, and a band that stays at one emergence
 //! point for many increments while it dilates.
 
+use crate::common;
 use soilcut_model::{AngleLaw, Case, Simulation};
 
 /// The law through (initial, peak, residual), degrees.
@@ -88,4 +89,39 @@ fn a_band_that_stays_and_dilates_keeps_its_soil() {
     case.run.node_spacing = 0.0008;
     case.run.samples_per_band = 1.0;
     runs_with_its_mass(&case);
+}
+
+/// A controller that pulls the tip up faster than the face can hold soil
+/// (from 20 to 0.3 in one increment of d/500; the C ABI's fuzz corpus):
+/// the tip path's strip is taken from as much ground as keeps the face
+/// vertex at the tip's new depth, so every force after it is positive
+/// and the soil is kept (before: the face sank 0.34 below the tip and the
+/// forces went negative).
+#[test]
+fn a_tip_pulled_up_at_once_keeps_the_face_at_the_tip() {
+    let mut case = common::original(5.0, 500.0);
+    case.run.samples_per_band = 8.0;
+    let case = common::on_vertices(case, 50.0);
+    let mut sim = Simulation::new(&case).unwrap();
+    let mut history = sim.advance_to(0.04, Some(0.3)).unwrap();
+    history.extend(sim.advance_to(2.0, Some(0.3)).unwrap());
+    for r in &history {
+        assert!(r.force > 0.0, "step {}: force {}", r.step, r.force);
+        let drift = r.mass / sim.initial_mass() - 1.0;
+        assert!(drift.abs() < 1e-12, "step {}: drift {drift:e}", r.step);
+    }
+    let face = sim.profile()[0].y;
+    assert!(face >= -0.3 - 1e-12, "the face at {face}, below the tip");
+    // Pulled up over three increments of d/100, the soil above the tip at
+    // the face is thinner than v0: no band emerges within v0 of the face,
+    // which would carry the face over its emergence point (a piece of no
+    // length, and the mass NaN, before).
+    let mut case = common::original(5.0, 100.0);
+    case.run.samples_per_band = 8.0;
+    let mut sim = Simulation::new(&common::on_vertices(case, 50.0)).unwrap();
+    let history = sim.advance_to(1.6, Some(1.0)).unwrap();
+    for r in &history {
+        let drift = r.mass / sim.initial_mass() - 1.0;
+        assert!(r.force >= 0.0 && drift.abs() < 1e-12, "{r:?}");
+    }
 }

@@ -103,7 +103,11 @@ pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 
 /// `run.increment` when a case does not give it: d over
 /// `default_increments_per_depth` on the node grid; on the vertex ground
-/// over `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
+/// over `ORIGINAL_INCREMENTS_PER_DEPTH` in the original model (the
+/// original, tine and dozer cases at d/250 with vertices d/50 and the
+/// midpoint force: worst window / tolerance 0.46, 0.34, 0.35 against their
+/// reference ensembles, `docs/studies/every-class/`), in the refined
+/// model over `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
 /// `VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH` under the explicit rule.
 pub fn default_increment(
     model: Model,
@@ -112,6 +116,7 @@ pub fn default_increment(
     (on_vertices, scheme): (bool, TimeScheme),
 ) -> f64 {
     match (on_vertices, scheme) {
+        (true, _) if model == Model::Original => depth / ORIGINAL_INCREMENTS_PER_DEPTH,
         (true, TimeScheme::MidpointForce) => depth / VERTEX_INCREMENTS_PER_DEPTH,
         (true, TimeScheme::Explicit) => depth / VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
         (false, _) => depth / default_increments_per_depth(model, soil),
@@ -119,19 +124,18 @@ pub fn default_increment(
 }
 
 /// `run.vertex_spacing` when a case gives neither it nor
-/// `run.node_spacing`: d / `VERTICES_PER_DEPTH` for the refined model in
-/// softening soil where the vertex ground runs the case (d /
-/// `RAKED_VERTICES_PER_DEPTH` under a raked blade)
-/// (`Case::vertex_ground_supports`), as there it is accurate at fewer
-/// increments than the node grid and its cost grows as the increments do,
-/// not as their square (docs/performance.md); else 0, the node grid, which
-/// is accurate at d/250 or d/500 in the other classes, where the vertex
-/// ground is not faster (Fig. 8b: 0.63 of the tolerance at d/500 and three
-/// times the time of the coarse node grid). Reads the case's model, soil,
-/// blade, bin, choices and `run.samples_per_band`.
+/// `run.node_spacing`: d / `VERTICES_PER_DEPTH` in soil that softens, in
+/// either model (d / `RAKED_VERTICES_PER_DEPTH` under a raked blade), as
+/// there it is accurate at as few increments as the node grid or fewer
+/// and its cost grows as the increments do, not as their square
+/// (docs/performance.md; the original model's tine and dozer a third and
+/// a half of their node grid's time, its paper case about the same);
+/// else 0, the coarse node grid, which is accurate at d/250 or d/500 in
+/// soil that never softens, where the vertex ground is not yet faster
+/// (Fig. 8b: 0.63 of the tolerance at d/500 and 4.5 times the time of the
+/// coarse node grid). Reads the case's soil, rake and depth.
 pub fn default_vertex_spacing(case: &Case) -> f64 {
-    let class = case.model == Model::Refined && case.soil.softens();
-    if !(class && case.vertex_ground_supports().is_ok()) {
+    if !case.soil.softens() {
         return 0.0;
     }
     if case.blade.rake == 90.0 {

@@ -87,14 +87,13 @@ impl Case {
         self.validate_loads()?;
         self.validate_run()?;
         self.validate_bin()?;
-        self.validate_vertex_ground()
+        self.validate_time_scheme()
     }
 
-    /// What the vertex ground (`run.vertex_spacing` > 0, docs/model.md §19)
-    /// does not do, refused by its key: here, so that `soilcut check`
-    /// refuses it as `run` does, and a case steered by
-    /// `Simulation::advance_to` is held to it.
-    fn validate_vertex_ground(&self) -> Result<(), CaseError> {
+    /// `run.time_scheme`: the midpoint force on the vertex ground
+    /// (`run.vertex_spacing` > 0, docs/model.md §19) under the mobilised
+    /// face friction only.
+    fn validate_time_scheme(&self) -> Result<(), CaseError> {
         if self.run.vertex_spacing == 0.0 {
             if self.run.time_scheme == TimeScheme::MidpointForce {
                 return Err(CaseError::new(
@@ -115,7 +114,7 @@ impl Case {
                  band the search chose can cross half an increment on; \"explicit\" runs it",
             ));
         }
-        self.vertex_ground_supports()
+        Ok(())
     }
 
     /// `run.merge_tolerance` in [0, `MAX_MERGE_TOLERANCE`], above 0 on the

@@ -65,7 +65,11 @@ impl Cutting {
     /// The cut of `case` resumed on `ground` beside `side` after
     /// `evaluations` Eq. (1) evaluations (a restored snapshot; the search
     /// keeps no state from one increment to the next).
-    pub(crate) fn resumed(case: &Case, (ground, side): (Ground, SideHeaps), evaluations: u64) -> Self {
+    pub(crate) fn resumed(
+        case: &Case,
+        (ground, side): (Ground, SideHeaps),
+        evaluations: u64,
+    ) -> Self {
         let mut search = VertexSearch::default();
         search.evaluations = evaluations;
         Cutting {
@@ -123,12 +127,9 @@ impl Cutting {
             face: at.laws.face.for_climb(climb),
             depth: tip,
             band_width,
-            sample: if band_width > 0.0 {
-                band_width / c.run.samples_per_band
-            } else {
-                SLIP_LINE_SAMPLES * d
-            },
+            sample: sample_spacing(c),
             resolution: c.run.increment,
+            advance: c.run.increment,
             snap: 0.5 * c.run.vertex_spacing,
             grow: GROW_DEPTHS * d,
             // The ground never grows past the end wall.
@@ -338,6 +339,24 @@ impl Discretisation for Cutting {
             depth: tip,
             mass_spilled: self.mass_spilled(),
         })
+    }
+}
+
+/// Spacing of the search's first-stage samples along the ground: dB / K
+/// (`run.samples_per_band` = K, (M47)), d/64 for a slip line (it has no
+/// band width); with K = 0 the exhaustive search, every v0 (the
+/// increment, as the reference grid's nodes are), its local minima within
+/// the slack narrowed to v0 as every search's are: the least force of
+/// every emergence point v0 apart and every vertex, and nothing the
+/// bounds do not prove to lose.
+fn sample_spacing(case: &Case) -> f64 {
+    let (band_width, samples) = (case.soil.band_width, case.run.samples_per_band);
+    if samples == 0.0 {
+        case.run.increment
+    } else if band_width > 0.0 {
+        band_width / samples
+    } else {
+        SLIP_LINE_SAMPLES * case.blade.depth
     }
 }
 

@@ -123,8 +123,9 @@ impl Ground {
         let first = self.x[1] - self.x[0];
         self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
         if cut.deepening != 0.0 {
-            let reach = self.x.partition_point(|&x| x <= self.x[0] + cut.advance);
-            self.lift_band(0..reach.max(1), 0.5 * cut.advance * cut.deepening);
+            let strip = 0.5 * cut.advance * cut.deepening;
+            let reach = self.path_reach(cut, strip);
+            self.lift_band(0..reach, strip);
         }
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
@@ -297,20 +298,47 @@ impl Ground {
         }
     }
 
+    /// The vertices that take the tip path's strip ½ v0 Δd (M38): those
+    /// within v0 of the face, as the node grid's face node does, and, where
+    /// a tip rising that fast would leave the face below it (the model's
+    /// face holds soil from the tip up), as many more as keep the face
+    /// vertex at the tip's new depth or above (a controller pulling the tip
+    /// up by 19.7 d in one increment of d/500, from the fuzz corpus of the
+    /// C ABI: the face sank 0.34 below the tip and the force went negative).
+    fn path_reach(&self, cut: &Cut, strip: f64) -> usize {
+        let near = self
+            .x
+            .partition_point(|&x| x <= self.x[0] + cut.advance)
+            .max(1);
+        if strip >= 0.0 {
+            return near;
+        }
+        let room = self.y[0] + cut.depth + cut.deepening;
+        let mut weight: f64 = (0..near).map(|k| self.vertex_share(k)).sum();
+        let mut reach = near;
+        while reach < self.pieces() && -strip > room * weight {
+            weight += self.vertex_share(reach);
+            reach += 1;
+        }
+        reach
+    }
+
+    /// Half of each piece beside vertex k: the length its height stands for.
+    fn vertex_share(&self, k: usize) -> f64 {
+        let left = if k == 0 {
+            0.0
+        } else {
+            self.x[k] - self.x[k - 1]
+        };
+        0.5 * (left + self.x[k + 1] - self.x[k])
+    }
+
     /// Raises `vertices` (the band's, from the block's corner to before the
     /// emergence vertex, or those near the face) by one height, so that
     /// the area changes by `residual` (M21: exactly the old area less the
     /// trench plus the dilation).
     fn lift_band(&mut self, vertices: std::ops::Range<usize>, residual: f64) {
-        let weight = |k: usize| {
-            let left = if k == 0 {
-                0.0
-            } else {
-                self.x[k] - self.x[k - 1]
-            };
-            0.5 * (left + self.x[k + 1] - self.x[k])
-        };
-        let total: f64 = vertices.clone().map(weight).sum();
+        let total: f64 = vertices.clone().map(|k| self.vertex_share(k)).sum();
         let lift = residual / total;
         for y in &mut self.y[vertices] {
             *y += lift;

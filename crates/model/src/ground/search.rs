@@ -61,6 +61,8 @@ pub(crate) struct Scan<'a> {
     pub(crate) sample: f64,
     /// Width at which a local minimum's bracket stops narrowing (length).
     pub(crate) resolution: f64,
+    /// v0: the block's advance in the increment (length).
+    pub(crate) advance: f64,
     /// An emergence point this close to a vertex moves to it (length).
     pub(crate) snap: f64,
     /// Flat fresh ground appended when the scan reaches the end, up to
@@ -170,6 +172,29 @@ pub(crate) struct VertexSearch {
     hints: [usize; 2],
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
+}
+
+/// What the prefix sums count below the line at the face where the face
+/// vertex lies below the tip (a tip pulled up faster than the ground
+/// follows): there the line runs through air, which weighs nothing, so
+/// the block's weight is ∫ max(y − y_line, 0), and this adds back the
+/// negative part over piece 0, γ_0 ½ Δx g_0² / (g_end − g_0) with g the
+/// height above the line (g_0 < 0 at the face, g_end ≥ 0 at the piece's
+/// end by (M3), or 0 at the emergence point on piece 0). 0 where the face
+/// vertex is at or above the tip, as every cut that does not steer keeps it.
+fn air_at_face(ground: &Ground, (k, x, y): (usize, f64, f64), (d, grid): (f64, f64)) -> f64 {
+    let g0 = ground.y[0] + d;
+    if g0 >= 0.0 {
+        return 0.0;
+    }
+    let x0 = ground.x[0];
+    let (end, y_end) = if k == 0 {
+        (x, y)
+    } else {
+        (ground.x[1], ground.y[1])
+    };
+    let g_end = (y_end + d - grid * (end - x0)).max(0.0);
+    ground.unit_weight[0] * 0.5 * (end - x0) * g0 * g0 / (g_end - g0)
 }
 
 /// Is handed every candidate the first stage evaluates, which then prunes
@@ -387,7 +412,10 @@ impl VertexSearch {
         } else {
             row.least_slope
         };
-        if !(t > 0.0 && t <= least) {
+        // The block's rear, the face, stays behind the emergence point: a
+        // band within v0 of the face would carry the face over it (the
+        // node grid's emergence node is at least one node, v0, ahead).
+        if !(t > 0.0 && t <= least && run > scan.advance) {
             return None;
         }
         // tan β physical (β < 90°, M34) and the slip line's length.
@@ -398,7 +426,9 @@ impl VertexSearch {
         let part = x - xa;
         let sum_a = row.sum_a + g * 0.5 * part * (ya + y + 2.0 * d);
         let sum_b = row.sum_b + g * 0.5 * part * (xa + x - 2.0 * x0);
-        let weight = sum_a - grid * sum_b;
+        // ≥ 0: a band through air at the face (`air_at_face`) weighs 0, not
+        // its round-off.
+        let weight = (sum_a - grid * sum_b + air_at_face(ground, (k, x, y), (d, grid))).max(0.0);
         // No band here can come within the slack of the best: P ≥ W f_min.
         let (_, lower) = self.least.expect("a piece scanned");
         let bound = scan.bound_weight(weight, run);

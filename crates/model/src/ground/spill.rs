@@ -27,8 +27,15 @@ impl Ground {
                 if k == 0 { 0.0 } else { half(k - 1) },
                 if k == last { 0.0 } else { half(k) },
             );
-            let weight = (if k == 0 { 0.0 } else { self.unit_weight[k - 1] * left })
-                + (if k == last { 0.0 } else { self.unit_weight[k] * right });
+            let weight = (if k == 0 {
+                0.0
+            } else {
+                self.unit_weight[k - 1] * left
+            }) + (if k == last {
+                0.0
+            } else {
+                self.unit_weight[k] * right
+            });
             let share = left + right;
             let column = Column {
                 height,

@@ -160,7 +160,11 @@ impl Simulation {
         let ground = match resumed_vertices(&case, b.vertices)? {
             Some(ground) => {
                 let (ground, evaluations) = ground;
-                Discretised::Vertices(Box::new(Cutting::resumed(&case, (ground, side), evaluations)))
+                Discretised::Vertices(Box::new(Cutting::resumed(
+                    &case,
+                    (ground, side),
+                    evaluations,
+                )))
             }
             None => Discretised::Nodes(Box::new(b.nodes.restore(&case, &laws, (b.done, side))?)),
         };
