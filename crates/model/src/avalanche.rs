@@ -15,48 +15,9 @@
 //! unit weight and accumulated shear become the mass-weighted mean of their
 //! column and the deposit. Mass is therefore conserved exactly as well.
 
+use crate::repose::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 use crate::surface::Surface;
 use std::ops::Range;
-
-/// Violations smaller than this fraction of s are round-off, not slopes.
-pub(crate) const SLOPE_TOLERANCE: f64 = 1e-9;
-/// Alternating passes before giving up on the last round-off residue.
-pub(crate) const MAX_PASSES: usize = 64;
-
-/// A pooled run of nodes: first node, node count, Σw, Σw g and their
-/// quotient, the pool's mean of g (kept, not recomputed per comparison).
-/// The vertex ground's avalanching (`ground::avalanche`) pools the same.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Pool {
-    pub(crate) start: usize,
-    pub(crate) len: usize,
-    pub(crate) weight: f64,
-    pub(crate) weighted: f64,
-    pub(crate) mean: f64,
-}
-
-impl Pool {
-    /// One node of weight w and value g.
-    fn new(start: usize, w: f64, g: f64) -> Self {
-        let weighted = w * g;
-        Pool {
-            start,
-            len: 1,
-            weight: w,
-            weighted,
-            // (1 · g) / 1 = g exactly: no division for an inner node.
-            mean: if w == 1.0 { g } else { weighted / w },
-        }
-    }
-
-    /// This pool and the run `next` that follows it.
-    pub(crate) fn merge(&mut self, next: &Pool) {
-        self.len += next.len;
-        self.weight += next.weight;
-        self.weighted += next.weighted;
-        self.mean = self.weighted / self.weight;
-    }
-}
 
 /// Reusable scratch for avalanching (no allocation per step).
 #[derive(Clone, Debug, Default)]

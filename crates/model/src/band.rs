@@ -1,132 +1,16 @@
-//! Geometry of the shear band of the refined model (paper Fig. 3a;
-//! docs/model.md §3.2).
-//!
-//! The band's lower boundary is the line A→j from the blade tip to the
-//! emergence node; its upper boundary is parallel, dB above it (normal
-//! distance), i.e. e = dB / cos β above it vertically. A point whose height
-//! above the lower boundary is z lies at relative position g = z / e in the
-//! band: g ≥ 1 is the rigid block, 0 < g < 1 the band, g = 0 the lower
-//! boundary. The original model is the limit dB = 0 (a slip line).
+//! The shear band of the refined model (paper Fig. 3a; docs/model.md
+//! §3.2-§3.3), whatever the ground: its lower boundary is the line from
+//! the blade tip to the emergence point, its upper boundary parallel, dB
+//! above it (normal distance), i.e. e = dB / cos β above it vertically. A
+//! point whose height above the lower boundary is z lies at relative
+//! position g = z / e in the band: g ≥ 1 is the rigid block, 0 < g < 1 the
+//! band, g = 0 the lower boundary. The original model is the limit dB = 0
+//! (a slip line). Here: how the band moves the block (M18, M35, M36), the
+//! raked blade's stretch of its thickness (M16), and the dilation under
+//! the block (M26). The node grid's band of nodes is `grid::Band`, the
+//! vertex ground's motion `ground::motion`.
 
-use crate::grid::FaceNode;
-
-/// The band of one candidate or chosen mechanism.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Band {
-    /// The blade face: its node b and offset.
-    pub face: FaceNode,
-    /// Emergence node j of the lower boundary.
-    pub emergence: usize,
-    /// Slope of the lower boundary on the grid (tan β, or its sheared value
-    /// for a raked blade: `Rake`).
-    pub tan_beta: f64,
-    /// e: vertical thickness of the band on the grid (dB / cos β for a
-    /// vertical blade).
-    pub thickness: f64,
-    /// dB: the band's width (normal to it).
-    pub width: f64,
-    /// Blade tip depth d.
-    pub depth: f64,
-    /// Node spacing Δx.
-    pub spacing: f64,
-}
-
-impl Band {
-    /// The band of width dB whose lower boundary has slope (`grid_slope`,
-    /// `tan_beta`) = (on the grid, physically) (equal for a vertical blade;
-    /// the grid's vertical thickness is e = dB / cos β times their ratio,
-    /// (M16)).
-    pub fn new(
-        face: FaceNode,
-        emergence: usize,
-        (grid_slope, tan_beta): (f64, f64),
-        band_width: f64,
-        depth: f64,
-        spacing: f64,
-    ) -> Self {
-        let stretch = stretch(grid_slope, tan_beta);
-        Band {
-            face,
-            emergence,
-            tan_beta: grid_slope,
-            thickness: band_width * (1.0 + tan_beta * tan_beta).sqrt() * stretch,
-            width: band_width,
-            depth,
-            spacing,
-        }
-    }
-
-    /// Height of the lower boundary at node i.
-    pub fn lower(&self, i: usize) -> f64 {
-        -self.depth + self.face.spacings(i) * self.spacing * self.tan_beta
-    }
-
-    /// Relative position g_i of surface node i above the lower boundary
-    /// (in band thicknesses; ∞ for a slip line above it).
-    pub fn position(&self, height: f64, i: usize) -> f64 {
-        let z = height - self.lower(i);
-        if self.thickness > 0.0 {
-            z / self.thickness
-        } else if z > 0.0 {
-            f64::INFINITY
-        } else {
-            0.0
-        }
-    }
-
-    /// Area of the band below the free surface between the face and the
-    /// emergence node: ∫ clip(y − lower, 0, e) dx over the piecewise linear
-    /// surface, integrated exactly (split where the surface crosses the
-    /// upper boundary). This is A0 of the dilation (M19).
-    pub fn area_below(&self, height: &[f64]) -> f64 {
-        if self.thickness == 0.0 {
-            return 0.0;
-        }
-        let (dx, e) = (self.spacing, self.thickness);
-        let mut area = 0.0;
-        let b = self.face.node;
-        let mut g0 = self.position(height[b], b);
-        let nodes = height.iter().enumerate();
-        for (i, &y) in nodes.take(self.emergence + 1).skip(b + 1) {
-            let g1 = self.position(y, i);
-            // The face's segment is (1 − δ/Δx) Δx long.
-            let width = dx * self.face.segment(i - 1);
-            area += e * width * clipped_mean(g0, g1);
-            g0 = g1;
-        }
-        area
-    }
-
-    /// Number of nodes m behind the emergence node whose soil the band
-    /// touches at the surface, estimated in O(1): the upper boundary meets a
-    /// surface of slope s at a distance e / (tan β − s) behind j; s is the
-    /// secant slope over the flat-ground footprint e / tan β, so
-    /// m = floor(e m0 / (Δx tan β m0 − (y_j − y_{j−m0}))) (M17). Exact where
-    /// the surface is straight over the footprint.
-    #[inline]
-    pub fn footprint(&self, height: &[f64]) -> usize {
-        let (j, b) = (self.emergence, self.face.node);
-        if self.thickness == 0.0 {
-            return 0;
-        }
-        let reach = j - b;
-        // The rise of the lower boundary per node is r = Δx tan β.
-        let r = self.spacing * self.tan_beta;
-        let flat = round_to_nodes(self.thickness / r);
-        let m0 = flat.clamp(1, reach);
-        // e / ((tan β − s) Δx) with s = (y_j − y_{j−m0}) / (m0 Δx).
-        let opening = r * m0 as f64 - (height[j] - height[j - m0]);
-        if opening <= 0.0 {
-            return reach;
-        }
-        let m = self.thickness * m0 as f64 / opening;
-        if m >= reach as f64 {
-            reach
-        } else {
-            m as usize
-        }
-    }
-}
+use crate::rake::Rake;
 
 /// grid slope / tan β, the grid's horizontal stretch of a raked blade; 1
 /// for a vertical blade, taken without a division (x / x = 1 exactly).
@@ -139,60 +23,57 @@ pub(crate) fn stretch(grid_slope: f64, tan_beta: f64) -> f64 {
     }
 }
 
-/// Nearest whole number of nodes (ties to even) for 0 ≤ x, without a libm
-/// call: adding and subtracting 1.5 · 2⁵² rounds.
-fn round_to_nodes(x: f64) -> usize {
-    const ROUNDING: f64 = 6_755_399_441_055_744.0;
-    if x >= 1e15 {
-        usize::MAX
-    } else {
-        ((x + ROUNDING) - ROUNDING) as usize
+/// The motion of the band's block: rise v0 tan(β + ψ) on the grid, slip
+/// Δut = λ cos ψ with λ = v0 sin α / sin(α + β + ψ) (`Rake`); `None` where
+/// β + ψ ≥ 90°.
+/// The node grid's update and the vertex ground's (`ground::motion`) both
+/// move the soil by it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BandMotion {
+    pub(crate) rise: f64,
+    pub(crate) slip: f64,
+    pub(crate) tan_psi: f64,
+}
+
+impl BandMotion {
+    /// The band's motion (M35): the block moves by λ (cos θ, sin θ), θ = β + ψ,
+    /// which on the grid is (v0, v0 tan θ'), a rise of v0 tan θ'; its slip
+    /// Δut = v0 cos ψ √(1 + tan² θ) / (1 + cot α tan θ) (M36), for a vertical
+    /// blade Δut = v0 cos ψ / cos(β + ψ) with Δuv = Δut tan ψ (M18).
+    pub(crate) fn new((t, psi): (f64, f64), rake: &Rake, dx: f64) -> Option<Self> {
+        let tan_psi = psi.tan();
+        let run = 1.0 - t * tan_psi;
+        if run <= 0.0 {
+            return None;
+        }
+        let rho = (t + tan_psi) / run;
+        Some(BandMotion {
+            rise: dx * rake.grid(rho),
+            slip: dx * psi.cos() * (1.0 + rho * rho).sqrt() / (1.0 + rake.cot * rho),
+            tan_psi,
+        })
+    }
+
+    /// The slip line's motion: the block slides along it, rise v0 tan β
+    /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
+    pub(crate) fn slip_line((grid_slope, t): (f64, f64), rake: &Rake, v0: f64) -> Self {
+        BandMotion {
+            rise: v0 * grid_slope,
+            slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
+            tan_psi: 0.0,
+        }
     }
 }
 
-/// Mean of min(g, 1) over a segment on which g is linear from g0 to g1 ≥ 0.
-fn clipped_mean(g0: f64, g1: f64) -> f64 {
-    let (lo, hi) = if g0 <= g1 { (g0, g1) } else { (g1, g0) };
-    if hi <= 1.0 {
-        0.5 * (lo + hi)
-    } else if lo >= 1.0 {
-        1.0
-    } else {
-        // Fraction λ of the segment below the upper boundary.
-        let lambda = (1.0 - lo) / (hi - lo);
-        lambda * 0.5 * (lo + 1.0) + (1.0 - lambda)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn band_area_on_flat_ground_is_a_parallelogram_less_its_corner() {
-        // Flat ground y = 0, d = 1, β = 45°: lower boundary reaches y = 0 at
-        // x = 1; band of vertical thickness e cut by the surface.
-        let n = 1001;
-        let dx = 1.0 / (n - 1) as f64;
-        let height = vec![0.0; n + 5];
-        let dband = 0.1;
-        let band = Band::new(FaceNode::default(), n - 1, (1.0, 1.0), dband, 1.0, dx);
-        let e = band.thickness;
-        // Strip between y = x − 1 and y = x − 1 + e, below y = 0, x ∈ [0, 1]:
-        // e·1 minus the triangle above y = 0 (legs e, e).
-        let expected = e * 1.0 - 0.5 * e * e;
-        assert!((band.area_below(&height) - expected).abs() < 1e-12);
-        let m = band.footprint(&height);
-        assert!((m as f64 * dx - e).abs() <= dx, "footprint {m}");
-    }
-
-    #[test]
-    fn slip_line_has_no_area_and_no_footprint() {
-        let height = vec![0.0; 50];
-        let band = Band::new(FaceNode::default(), 40, (0.5, 0.5), 0.0, 1.0, 0.05);
-        assert_eq!(band.area_below(&height), 0.0);
-        assert_eq!(band.footprint(&height), 0);
-        assert_eq!(band.position(0.0, 40), 0.0);
-        assert_eq!(band.position(0.3, 20), f64::INFINITY);
-    }
+/// The band's dilation under the block in one increment, as a height: its
+/// normal opening Δut tan ψ over cos β (M26), on a raked blade's sheared
+/// coordinates times M16's stretch tan β' / tan β (the line of slope
+/// (`grid_slope`, `tan_beta`); for a vertical blade rise − v0 tan β,
+/// (M18), and on the grid rise' − v0 tan β'). A column of the block holds
+/// the band's full thickness, so this much of it is volume the band
+/// gained, not soil the block brought; weighed at the block's γ, the
+/// band's pieces at the emergence point (M27) paid for it and a band that
+/// stays for many increments fell below zero weight (issue 38).
+pub(crate) fn dilation_gap(slip: f64, tan_psi: f64, (grid_slope, tan_beta): (f64, f64)) -> f64 {
+    slip * tan_psi * (1.0 + tan_beta * tan_beta).sqrt() * stretch(grid_slope, tan_beta)
 }

@@ -8,6 +8,10 @@
 //! weighs node i by half of each segment it bounds. The surface, the band,
 //! the search and the update take both from here.
 
+mod band;
+
+pub use band::Band;
+
 /// The face's node b and its offset δ/h from that node's grid point.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FaceNode {

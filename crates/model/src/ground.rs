@@ -22,7 +22,7 @@
 //! The simulation's ground where a case sets `run.vertex_spacing`
 //! (`cutting`); else the node grid of `surface`.
 
-use crate::surface::compensated_sum;
+use crate::mass::compensated_sum;
 use serde::{Deserialize, Serialize};
 
 mod avalanche;

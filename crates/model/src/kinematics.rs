@@ -32,8 +32,9 @@
 //! of the soil in front of the blade is unchanged (paper: γ = Wb / Anew for
 //! the band as a whole).
 
-use crate::band::{stretch, Band};
+use crate::band::{dilation_gap, BandMotion};
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
+use crate::grid::Band;
 use crate::grid::FaceNode;
 use crate::rake::Rake;
 use crate::search::Choice;
@@ -266,48 +267,6 @@ impl Kinematics {
     }
 }
 
-/// The motion of the band's block: rise v0 tan(β + ψ) on the grid, slip
-/// Δut = λ cos ψ with λ = v0 sin α / sin(α + β + ψ) (`Rake`); `None` where
-/// β + ψ ≥ 90°.
-/// The node grid's update and the vertex ground's (`ground::motion`) both
-/// move the soil by it.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct BandMotion {
-    pub(crate) rise: f64,
-    pub(crate) slip: f64,
-    pub(crate) tan_psi: f64,
-}
-
-impl BandMotion {
-    /// The band's motion (M35): the block moves by λ (cos θ, sin θ), θ = β + ψ,
-    /// which on the grid is (v0, v0 tan θ'), a rise of v0 tan θ'; its slip
-    /// Δut = v0 cos ψ √(1 + tan² θ) / (1 + cot α tan θ) (M36), for a vertical
-    /// blade Δut = v0 cos ψ / cos(β + ψ) with Δuv = Δut tan ψ (M18).
-    pub(crate) fn new((t, psi): (f64, f64), rake: &Rake, dx: f64) -> Option<Self> {
-        let tan_psi = psi.tan();
-        let run = 1.0 - t * tan_psi;
-        if run <= 0.0 {
-            return None;
-        }
-        let rho = (t + tan_psi) / run;
-        Some(BandMotion {
-            rise: dx * rake.grid(rho),
-            slip: dx * psi.cos() * (1.0 + rho * rho).sqrt() / (1.0 + rake.cot * rho),
-            tan_psi,
-        })
-    }
-
-    /// The slip line's motion: the block slides along it, rise v0 tan β
-    /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
-    pub(crate) fn slip_line((grid_slope, t): (f64, f64), rake: &Rake, v0: f64) -> Self {
-        BandMotion {
-            rise: v0 * grid_slope,
-            slip: v0 * (1.0 + t * t).sqrt() / (1.0 + rake.cot * t),
-            tan_psi: 0.0,
-        }
-    }
-}
-
 /// The slip-line update (see the module doc): the block's nodes shift one
 /// node and rise by v0 tan β* (M14), the face node takes the swept soil
 /// (M20), and node j accumulates the slip Δut (M15, M36 on a raked blade;
@@ -423,19 +382,6 @@ fn mix_column(
     let at_rest = (band.lower(i) - surface.floor).clamp(0.0, total);
     let arrived = (total - at_rest - gap).max(0.0);
     surface.unit_weight[i] = (staying * at_rest + arriving * arrived) / total;
-}
-
-/// The band's dilation under the block in one increment, as a height: its
-/// normal opening Δut tan ψ over cos β (M26), on a raked blade's sheared
-/// coordinates times M16's stretch tan β' / tan β (the line of slope
-/// (`grid_slope`, `tan_beta`); for a vertical blade rise − v0 tan β,
-/// (M18), and on the grid rise' − v0 tan β'). A column of the block holds
-/// the band's full thickness, so this much of it is volume the band
-/// gained, not soil the block brought; weighed at the block's γ, the
-/// band's pieces at the emergence point (M27) paid for it and a band that
-/// stays for many increments fell below zero weight (issue 38).
-pub(crate) fn dilation_gap(slip: f64, tan_psi: f64, (grid_slope, tan_beta): (f64, f64)) -> f64 {
-    slip * tan_psi * (1.0 + tan_beta * tan_beta).sqrt() * stretch(grid_slope, tan_beta)
 }
 
 /// Spreads what the update gained or lost in area, `residual`, evenly in

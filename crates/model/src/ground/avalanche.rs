@@ -18,7 +18,7 @@
 //! conserved exactly.
 
 use super::Ground;
-use crate::avalanche::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
+use crate::repose::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 
 /// A run of changed pieces balances when its net area change is within
 /// this fraction of its gross change (the pooling keeps the area to

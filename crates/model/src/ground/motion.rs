@@ -26,9 +26,9 @@
 //! keeps the weight of soil unchanged (M27).
 
 use super::Ground;
+use crate::band::dilation_gap;
 use crate::case::{BandShearRule, UnitWeightRule};
-use crate::kinematics::dilation_gap;
-use crate::surface::compensated_sum;
+use crate::mass::compensated_sum;
 
 /// The mechanism an increment moves the soil by.
 #[derive(Clone, Copy, Debug, PartialEq)]

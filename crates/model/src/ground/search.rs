@@ -28,10 +28,10 @@ use super::Ground;
 use crate::band::stretch;
 use crate::crescent::{BandTerms, Crescents};
 use crate::face_friction::Face;
+use crate::force_bounds::{may_win, Lower};
 use crate::laws::{BandAngles, Laws};
 use crate::mechanism::{ForceFactor, Loads};
 use crate::rake::Rake;
-use crate::search::bounds::{may_win, Lower};
 
 /// Local minima of the samples within this fraction of the least are
 /// narrowed, and the first stage prunes against it (the sampled search's

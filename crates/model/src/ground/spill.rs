@@ -3,8 +3,8 @@
 //! field at fixed x (`SideHeaps`), the vertices move with the soil.
 
 use super::Ground;
+use crate::mass::compensated_sum;
 use crate::spill::{Column, Edges, SideHeaps};
-use crate::surface::compensated_sum;
 
 impl Ground {
     /// Spills the strip at every vertex above the original ground into

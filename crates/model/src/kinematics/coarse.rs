@@ -21,8 +21,8 @@ use super::{
     band_unit_weight, dilation_gap, mix_column, region_area, spread_residual, Advance, BandMotion,
     Kinematics, Update,
 };
-use crate::band::Band;
 use crate::case::Choices;
+use crate::grid::Band;
 use crate::rake::Rake;
 use crate::search::Choice;
 use crate::surface::Surface;

@@ -7,7 +7,7 @@
 //!
 //! from prefix sums along the scan, so each candidate costs O(1).
 
-use crate::band::Band;
+use crate::grid::Band;
 use crate::laws::BandAngles;
 use crate::surface::Surface;
 

@@ -9,11 +9,12 @@
 //! is data), so the processor overlaps candidates.
 
 use super::angles::Prefix;
-use super::bounds::{may_win, LeastFriction};
+use super::bounds::LeastFriction;
 use super::far_field::far_field_from;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
 use super::select::Best;
+use crate::force_bounds::may_win;
 use crate::laws::BandAngles;
 use crate::surface::Surface;
 

@@ -5,11 +5,11 @@
 //! handled in blocks, each skipped whole when W(n₁) (P/W)(β(n₂)) cannot
 //! beat the best.
 
-use super::bounds::Lower;
 use super::input::SearchInput;
 use super::line::{Line, Lines, Slope};
 use super::select::Best;
 use crate::band::stretch;
+use crate::force_bounds::Lower;
 use crate::grid::FaceNode;
 use crate::mechanism::ForceFactor;
 use crate::rake::Rake;
@@ -164,7 +164,8 @@ impl FarField {
         let could_sink = t2 <= input.face.sinking_below;
         !best.prune
             || below(bound(&fresh_walls.rising))
-            || (could_sink && below(fresh_walls.least_sinking(input, floor, length, t2)))
+            || (could_sink
+                && below(fresh_walls.least_sinking((&input.face, &input.loads), floor, length, t2)))
     }
 }
 

@@ -16,8 +16,9 @@
 //! long (`FaceNode`, docs/model.md §9).
 
 use super::input::SearchInput;
-use crate::band::{stretch, Band};
+use crate::band::stretch;
 use crate::crescent::BandTerms;
+use crate::grid::Band;
 use crate::grid::FaceNode;
 use crate::laws::BandAngles;
 use crate::rake::Rake;

@@ -5,21 +5,22 @@
 //! (`spill`).
 
 use crate::avalanche::Avalanche;
-use crate::band::Band;
 use crate::case::Case;
 use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::face_friction::Face;
+use crate::grid::Band;
 use crate::grid::Scheme;
 use crate::kinematics::{Advance, Kinematics, Update};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
+use crate::mass::compensated_sum;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::search::{Choice, Observer, Search, SearchInput};
 use crate::spill::{Column, Edges, SideHeaps};
 use crate::step::{ProfilePoint, StepError, StepRecord};
-use crate::surface::{compensated_sum, Surface};
+use crate::surface::Surface;
 use std::ops::Range;
 
 /// Depths the domain grows by when the search reaches its end.
