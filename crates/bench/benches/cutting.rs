@@ -217,9 +217,10 @@ fn finite_width_tool(bencher: Bencher, name: &str) {
 /// Whole run of Fig. 5's soil at its defaults with one key changed (issue
 /// 38: every cut on the vertex ground), beside the plain case in the same
 /// bench run: raked at 60°, a depth path 20 → 24 → 20 mm, in a bin 8 d
-/// long, and, for the ratio to before, the raked case on the node grid.
+/// long, 40 mm wide, and, for the ratio to before, the raked and the wide
+/// case on the node grid.
 #[divan::bench(
-    args = ["plain", "rake60", "depth-path", "bin", "rake60-nodes"],
+    args = ["plain", "rake60", "depth-path", "bin", "width40", "width40-nodes", "rake60-nodes"],
     sample_count = 3,
     sample_size = 1
 )]
@@ -229,6 +230,8 @@ fn fig5_configuration(bencher: Bencher, name: &str) {
         "rake60" => &["blade.rake=60"],
         "depth-path" => &["blade.depth_path=[[0, 20], [40, 24], [80, 20]]"],
         "bin" => &["bin.length=160"],
+        "width40" => &["blade.width=40"],
+        "width40-nodes" => &["blade.width=40", "run.vertex_spacing=0"],
         _ => &["blade.rake=60", "run.vertex_spacing=0"],
     };
     let case = shipped_case("paper/fig5.toml", overrides);

@@ -4,12 +4,12 @@
 //! lets the slopes avalanche (`avalanche`), as the node
 //! grid's increment does (docs/model.md §1).
 //!
-//! For a blade in plane strain, vertical or raked (the ground held in the
-//! sheared coordinates of `Rake`), at constant depth or on a depth path, in
-//! a bin or not, under the default choices (the full band shear, the
-//! band's uniform unit weight) and the sampled search; the case validation
-//! refuses other cases with the key that is not supported
-//! (`Case::validate`, docs/model.md §19).
+//! Every case soilcut takes: a blade vertical or raked (the ground held in
+//! the sheared coordinates of `Rake`), in plane strain or of finite width
+//! (the crescents in the search, the side heaps a field at fixed x that
+//! the vertices spill into, `spill`), at constant depth or on a depth path,
+//! in a bin or not, under every band rule, the sampled search or the
+//! exhaustive one (docs/model.md §1.2, §19).
 
 use super::midpoint::midpoint_force;
 use super::motion::Cut;
