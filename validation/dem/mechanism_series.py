@@ -286,6 +286,13 @@ def write(path, header, rows):
             f.write(",".join(f"{v:.5g}" for v in r) + "\n")
 
 
+def reduced(path):
+    """The rows of a committed RUN_mechanism.csv, as `series` makes them."""
+    with path.open() as f:
+        lines = f.read().split("\n")
+    return [[float(v) for v in line.split(",")] for line in lines[1:] if line]
+
+
 def means(folder, results):
     """mechanism_NAME_mean.csv: per 0.25 d the seeds' mean and standard deviation."""
     for name in sorted({m["name"] for m, _ in results}):
@@ -330,6 +337,13 @@ def main(argv):
             data = from_results(folder, run)
         elif (HERE / "checkpoints" / (run + ".pkl")).exists():
             data = from_checkpoint(run)
+        elif (folder / (run + "_mechanism.csv")).exists():
+            # Reduced before and its field since lost: its committed series
+            # still counts in the means.
+            rows = reduced(folder / (run + "_mechanism.csv"))
+            print(f"{run}: {len(rows)} intervals from its committed series (no field)")
+            results.append(({"name": run.split("_r")[0]}, rows))
+            continue
         else:
             print(f"{run}: no field (fields/{run}.npz) and no checkpoint", file=sys.stderr)
             continue
