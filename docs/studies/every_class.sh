@@ -60,6 +60,7 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row table1-hs "refined, hardening-softening" cases/paper/table1-hs.toml
   row fig5 "refined, hardening-softening" cases/paper/fig5.toml
   row fig8b "refined, never softening" cases/paper/fig8b.toml
+  row fig8b-rake60 "refined, never softening, raked (Fig. 8b, α = 60°)" cases/paper/fig8b.toml --set blade.rake=60
   row fig5-bin "soil bin (Fig. 5 with bin.length = 8 d)" cases/paper/fig5.toml --set bin.length=160
   row validation-vertical "soil bin (DEM's, 10 d)" cases/validation/vertical.toml
   row validation-deep "soil bin (DEM's, 8 d)" cases/validation/deep.toml
@@ -69,6 +70,7 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row original "original model" cases/paper/original.toml
   row tine "original model, finite width (the tine)" cases/tools/tine.toml
   row dozer "original model, finite width (the dozer)" cases/tools/dozer.toml
+  row original-nonsoftening "original model, never softening (φr = φp)" cases/paper/original.toml --set soil.friction.residual=35
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 cat "$out"

@@ -398,9 +398,10 @@ fn resolution(case: &Case) -> String {
         format!("node grid, nodes every {}", of_depth(run.node_spacing))
     };
     format!(
-        "{ground}; increment {}; time scheme {}",
+        "{ground}; increment {}; time scheme {}; {} samples per band",
         of_depth(run.increment),
-        run.time_scheme.name()
+        run.time_scheme.name(),
+        run.samples_per_band
     )
 }
 

@@ -346,14 +346,15 @@ fn refined_case_checks() {
         stdout(&o).trim(),
         "ok: case.toml: name refined, model refined, 100 steps\n  \
          vertex ground, vertices every 0.4 (d/50); increment 0.2 (d/100); \
-         time scheme midpoint-force"
+         time scheme midpoint-force; 8 samples per band"
     );
     // The node grid, and a spacing that is no whole fraction of d.
     let o = sandbox.soilcut(&["check", "case.toml", "--set", "run.node_spacing=0.6"]);
     assert_ok(&o);
     assert!(
         stdout(&o).ends_with(
-            "  node grid, nodes every 0.6 (d/33.33); increment 0.2 (d/100); time scheme explicit\n"
+            "  node grid, nodes every 0.6 (d/33.33); increment 0.2 (d/100); time scheme explicit; \
+             8 samples per band\n"
         ),
         "{}",
         stdout(&o)

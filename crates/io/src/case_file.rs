@@ -9,9 +9,10 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    default_increment, default_node_spacing, default_time_scheme, default_vertex_spacing, AngleLaw,
-    BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError, Choices, FaceFrictionRule, Model,
-    Run, SnapshotError, Soil, TimeScheme, UnitWeightRule, DEFAULT_SAMPLES_PER_BAND,
+    default_increment, default_node_spacing, default_samples_per_band, default_time_scheme,
+    default_vertex_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
+    Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, TimeScheme, UnitWeightRule,
+    DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -575,10 +576,11 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         Model::Original => choices_file.original()?,
         Model::Refined => choices_file.refined(),
     };
-    let samples_per_band = *file
+    // Its default depends on the ground (`with_grid`).
+    let samples_per_band = file
         .run
         .samples_per_band
-        .get_or_insert(DEFAULT_SAMPLES_PER_BAND);
+        .unwrap_or(DEFAULT_SAMPLES_PER_BAND);
     let case = Case {
         name: file.name.clone(),
         title,
@@ -631,6 +633,9 @@ fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
         }
     });
     let on_vertices = vertex_spacing > 0.0;
+    case.run.samples_per_band = *run
+        .samples_per_band
+        .get_or_insert_with(|| default_samples_per_band(&case.soil, on_vertices));
     let default_scheme = match default_time_scheme(on_vertices, case.choices.face_friction) {
         TimeScheme::Explicit => TimeSchemeName::Explicit,
         TimeScheme::MidpointForce => TimeSchemeName::MidpointForce,
@@ -907,8 +912,25 @@ mod tests {
         let given = ["run.node_spacing=0.04", "run.increment=0.04"];
         assert_eq!(resolved_ground(&refined, &given).3, 0.0);
         // The refined model in soil that never softens (Fig. 8b's kind):
-        // d/500 on the coarse grid, h = d/25 in whole increments.
-        let (d, v0, h) = resolved_grid(&refined, &["soil.friction.residual=35"]);
+        // d/250 on the vertex ground, vertices d/25 apart, 2 samples per
+        // band; on nodes (no vertices) d/500 on the coarse grid, h = d/25 in
+        // whole increments.
+        let never = ["soil.friction.residual=35"];
+        let (d, v0, _, vertices) = resolved_ground(&refined, &never);
+        assert_eq!((v0, vertices), (d / 250.0, d / 25.0));
+        let samples = |overrides: &[&str]| {
+            let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
+            parse_case(&refined, &overrides)
+                .unwrap()
+                .case
+                .run
+                .samples_per_band
+        };
+        assert_eq!(samples(&never), 2.0);
+        assert_eq!(samples(&[]), 8.0);
+        let on_nodes = ["soil.friction.residual=35", "run.vertex_spacing=0"];
+        assert_eq!(samples(&on_nodes), 8.0);
+        let (d, v0, h) = resolved_grid(&refined, &on_nodes);
         assert_eq!(v0, d / 500.0);
         let n = (h / v0).round();
         assert_eq!(h, n * v0);
@@ -921,7 +943,11 @@ mod tests {
         assert_eq!((v0, h), (0.05, 0.05));
         let (_, v0, h, vertices) = resolved_ground(&refined, &["run.increment=0.02"]);
         assert_eq!((v0, h, vertices), (0.02, 0.02, 20.0 / 50.0));
-        let given = ["soil.friction.residual=35", "run.increment=0.2"];
+        let given = [
+            "soil.friction.residual=35",
+            "run.increment=0.2",
+            "run.vertex_spacing=0",
+        ];
         let (_, v0, h) = resolved_grid(&refined, &given);
         assert_eq!(v0, 0.2);
         assert!((h - 0.8).abs() < 1e-12, "{h}");

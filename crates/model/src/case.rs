@@ -12,9 +12,10 @@ mod validate;
 mod warnings;
 
 pub use defaults::{
-    default_increment, default_increments_per_depth, default_node_spacing, default_time_scheme,
-    default_vertex_spacing, COARSE_NODES_PER_DEPTH, DEFAULT_SAMPLES_PER_BAND,
-    NON_SOFTENING_INCREMENTS_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH, RAKED_VERTICES_PER_DEPTH,
+    default_increment, default_increments_per_depth, default_node_spacing,
+    default_samples_per_band, default_time_scheme, default_vertex_spacing, COARSE_NODES_PER_DEPTH,
+    DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH, NON_SOFTENING_SAMPLES_PER_BAND,
+    NON_SOFTENING_VERTICES_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH, RAKED_VERTICES_PER_DEPTH,
     SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
     VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };

@@ -75,6 +75,31 @@ pub const RAKED_VERTICES_PER_DEPTH: f64 = 100.0;
 /// docs/model.md §2.8), its second every node near their local minima.
 pub const DEFAULT_SAMPLES_PER_BAND: f64 = 8.0;
 
+/// `run.samples_per_band` on the vertex ground where the soil never
+/// softens: 2. Without softening no patch of weak soil localises the least
+/// band, the force varies smoothly over a band width, and the second
+/// stage narrows the few local minima: Fig. 8b at d/250 with vertices d/25
+/// is accurate by the ensemble rule with K = 2 (0.18 of the tolerance),
+/// K = 4 (0.17) and K = 8 (0.18), at 0.064 s, 0.097 s and 0.17 s a run
+/// (`docs/studies/every-class/`, "non-softening").
+pub const NON_SOFTENING_SAMPLES_PER_BAND: f64 = 2.0;
+
+/// Vertex spacings per blade depth where the refined model's soil never
+/// softens: h = d/25, vertical or raked (Fig. 8b at d/250: 0.18 of the
+/// tolerance, raked at 60° 0.12; with d/50 0.13 and 0.10 at twice the time).
+pub const NON_SOFTENING_VERTICES_PER_DEPTH: f64 = 25.0;
+
+/// `run.samples_per_band` when a case does not give it, on its ground:
+/// `NON_SOFTENING_SAMPLES_PER_BAND` on the vertex ground where the soil
+/// never softens, else `DEFAULT_SAMPLES_PER_BAND`.
+pub fn default_samples_per_band(soil: &Soil, on_vertices: bool) -> f64 {
+    if on_vertices && !soil.softens() {
+        NON_SOFTENING_SAMPLES_PER_BAND
+    } else {
+        DEFAULT_SAMPLES_PER_BAND
+    }
+}
+
 /// Node spacings per blade depth of the default coarse grid, used where
 /// the soil never softens: h = d / 25 at v0 = d / 500 is accurate by the
 /// ensemble rule on Fig. 8b (`docs/studies/ensemble-accuracy/`), and at
@@ -106,8 +131,10 @@ pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 /// over `ORIGINAL_INCREMENTS_PER_DEPTH` in the original model (the
 /// original, tine and dozer cases at d/250 with vertices d/50 and the
 /// midpoint force: worst window / tolerance 0.46, 0.34, 0.35 against their
-/// reference ensembles, `docs/studies/every-class/`), in the refined
-/// model over `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
+/// reference ensembles, `docs/studies/every-class/`) and in the refined
+/// model's soil that never softens with the midpoint force (Fig. 8b 0.18,
+/// raked at 60° 0.12), in the refined model's softening soil over
+/// `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
 /// `VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH` under the explicit rule.
 pub fn default_increment(
     model: Model,
@@ -117,6 +144,9 @@ pub fn default_increment(
 ) -> f64 {
     match (on_vertices, scheme) {
         (true, _) if model == Model::Original => depth / ORIGINAL_INCREMENTS_PER_DEPTH,
+        (true, TimeScheme::MidpointForce) if !soil.softens() => {
+            depth / ORIGINAL_INCREMENTS_PER_DEPTH
+        }
         (true, TimeScheme::MidpointForce) => depth / VERTEX_INCREMENTS_PER_DEPTH,
         (true, TimeScheme::Explicit) => depth / VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
         (false, _) => depth / default_increments_per_depth(model, soil),
@@ -130,13 +160,20 @@ pub fn default_increment(
 /// and its cost grows as the increments do, not as their square
 /// (docs/performance.md; the original model's tine and dozer a third and
 /// a half of their node grid's time, its paper case about the same);
-/// else 0, the coarse node grid, which is accurate at d/250 or d/500 in
-/// soil that never softens, where the vertex ground is not yet faster
-/// (Fig. 8b: 0.63 of the tolerance at d/500 and 4.5 times the time of the
-/// coarse node grid). Reads the case's soil, rake and depth.
+/// in the refined model in soil that never softens d /
+/// `NON_SOFTENING_VERTICES_PER_DEPTH`, with `NON_SOFTENING_SAMPLES_PER_BAND`
+/// (Fig. 8b at d/250: 0.064 s a run against 0.092 s on its former coarse
+/// node grid, one ensemble each); else 0, the coarse node grid, for the
+/// original model in soil that never softens, where it is nine times
+/// faster than the vertex ground (the original case with φr = φp: 0.010 s
+/// against 0.093 s a run, both accurate by the ensemble rule).
+/// Reads the case's model, soil, rake and depth.
 pub fn default_vertex_spacing(case: &Case) -> f64 {
     if !case.soil.softens() {
-        return 0.0;
+        return match case.model {
+            Model::Refined => case.blade.depth / NON_SOFTENING_VERTICES_PER_DEPTH,
+            Model::Original => 0.0,
+        };
     }
     if case.blade.rake == 90.0 {
         case.blade.depth / VERTICES_PER_DEPTH
