@@ -50,10 +50,11 @@ fn fig5_run_vertices(bencher: Bencher, per_depth: u32) {
 }
 
 /// Whole run of each paper case whose default ground is the vertex ground
-/// on the node grid instead, at the node grid's default increment (d/1250):
-/// the defaults before the vertex ground, beside `paper_case_at_defaults`.
+/// on the node grid instead, at the node grid's default increment (d/1250
+/// where the soil softens; Fig. 8b d/500 on its coarse grid): the defaults
+/// before the vertex ground, beside `paper_case_at_defaults`.
 #[divan::bench(
-    args = ["table1-s", "table1-hs", "fig5"],
+    args = ["original", "table1-s", "fig8b", "table1-hs", "fig5"],
     sample_count = 3,
     sample_size = 1
 )]

@@ -70,7 +70,7 @@ pub struct Simulation {
     ground: Discretised,
     /// Increments done.
     done: usize,
-    /// Weight of soil at the start, per unit width.
+    /// Weight of soil at the start, per blade for a blade of finite width.
     initial_mass: f64,
 }
 
@@ -80,12 +80,8 @@ impl Simulation {
         case.validate()?;
         let laws = Laws::new(case);
         let ground = Discretised::flat(case, &laws);
-        // Per unit width, the face at the start of the ground (the node
-        // grid's node 0); `initial_mass` scales it per blade.
-        let initial_mass = match &ground {
-            Discretised::Nodes(nodes) => nodes.surface.mass(0),
-            Discretised::Vertices(cutting) => cutting.ground().mass(),
-        };
+        // Per blade for a blade of finite width, as `mass` is.
+        let initial_mass = ground.get().mass();
         Ok(Simulation {
             case: case.clone(),
             laws,
@@ -112,11 +108,6 @@ impl Simulation {
             laws: &self.laws,
             done: self.done,
         }
-    }
-
-    /// w for a blade of finite width, else 1: masses per blade.
-    fn per_blade(&self) -> f64 {
-        self.case.blade.width.unwrap_or(1.0)
     }
 
     /// The case being run.
@@ -164,7 +155,7 @@ impl Simulation {
     /// Weight of soil at the start (docs/model.md (M24)), per blade for a
     /// blade of finite width.
     pub fn initial_mass(&self) -> f64 {
-        self.initial_mass * self.per_blade()
+        self.initial_mass
     }
 
     /// Candidate evaluations so far (for benchmarks).
