@@ -100,9 +100,18 @@ impl Ground {
             0.0
         };
         let before = PiecesBefore::of(self, (emergence + 1).min(self.pieces()));
-        // Nothing beyond the second vertex after the emergence point moves:
-        // the sums that keep area and mass exact stop there.
-        let end = self.x[(emergence + 2).min(self.pieces())];
+        // Nothing beyond the second vertex after the emergence point moves,
+        // unless the tip rises faster than the ground near the face can
+        // give (`path_reach`): then the sums that keep area and mass exact
+        // take the whole ground (an increment 15 vertices long rising 80,
+        // from fuzzing `--set`: the mass drifted 1.4e-3 with the sums
+        // stopping at the emergence point).
+        let last = if self.rises_fast(cut) {
+            self.pieces()
+        } else {
+            (emergence + 2).min(self.pieces())
+        };
+        let end = self.x[last];
         let (mass_before, area_before) = self.region(end);
         // The soil below the tip's path, from depth d to d + Δd, stays
         // behind in the trench (M38); what lies above it goes up the face.
@@ -325,6 +334,20 @@ impl Ground {
             reach += 1;
         }
         reach
+    }
+
+    /// Whether the tip path's strip ½ v0 Δd is more than the ground within
+    /// v0 of the face holds above the tip's new depth (`path_reach` then
+    /// takes it from farther).
+    fn rises_fast(&self, cut: &Cut) -> bool {
+        let strip = 0.5 * cut.advance * cut.deepening;
+        let near = self
+            .x
+            .partition_point(|&x| x <= self.x[0] + cut.advance)
+            .max(1);
+        let weight: f64 = (0..near).map(|k| self.vertex_share(k)).sum();
+        let room = self.y[0] + cut.depth + cut.deepening;
+        strip < 0.0 && -strip > room * weight
     }
 
     /// Half of each piece beside vertex k: the length its height stands for.
