@@ -10,7 +10,8 @@
 #
 # SOILCUT the binary, RUNS where the ensembles go (resumable: an ensemble
 # whose ensemble.csv exists is judged again, not rerun: NAME/ref-d2000 and
-# NAME/defaults). Writes docs/studies/every-class/table.md. The reference
+# NAME/defaults; a row whose reference is another row's may link its
+# ref-d2000 to it). Writes docs/studies/every-class/table.md. The reference
 # ensembles are the long part (about 1-10 minutes of one core each).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -61,6 +62,8 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row fig5 "refined, hardening-softening" cases/paper/fig5.toml
   row fig8b "refined, never softening" cases/paper/fig8b.toml
   row fig8b-rake60 "refined, never softening, raked (Fig. 8b, α = 60°)" cases/paper/fig8b.toml --set blade.rake=60
+  row fig8b-vertices "never softening on vertices d/25 (not the default: the midpoint force's single-increment peaks)" cases/paper/fig8b.toml --set run.vertex_spacing=1.016
+  row fig8b-vertices-explicit "never softening on vertices d/25, explicit (not the default: slower)" cases/paper/fig8b.toml --set run.vertex_spacing=1.016 --set 'run.time_scheme="explicit"'
   row fig5-bin "soil bin (Fig. 5 with bin.length = 8 d)" cases/paper/fig5.toml --set bin.length=160
   row validation-vertical "soil bin (DEM's, 10 d)" cases/validation/vertical.toml
   row validation-deep "soil bin (DEM's, 8 d)" cases/validation/deep.toml
@@ -71,6 +74,7 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row tine "original model, finite width (the tine)" cases/tools/tine.toml
   row dozer "original model, finite width (the dozer)" cases/tools/dozer.toml
   row original-nonsoftening "original model, never softening (φr = φp)" cases/paper/original.toml --set soil.friction.residual=35
+  row original-nonsoftening-vertices "original model, never softening, on vertices d/25 (not the default: slower)" cases/paper/original.toml --set soil.friction.residual=35 --set run.vertex_spacing=0.8
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 cat "$out"

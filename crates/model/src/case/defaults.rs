@@ -76,18 +76,14 @@ pub const RAKED_VERTICES_PER_DEPTH: f64 = 100.0;
 pub const DEFAULT_SAMPLES_PER_BAND: f64 = 8.0;
 
 /// `run.samples_per_band` on the vertex ground where the soil never
-/// softens: 2. Without softening no patch of weak soil localises the least
+/// softens (given `run.vertex_spacing`: the coarse node grid is those
+/// cases' default, `default_vertex_spacing`): 2. Without softening no patch of weak soil localises the least
 /// band, the force varies smoothly over a band width, and the second
 /// stage narrows the few local minima: Fig. 8b at d/250 with vertices d/25
 /// is accurate by the ensemble rule with K = 2 (0.18 of the tolerance),
 /// K = 4 (0.17) and K = 8 (0.18), at 0.064 s, 0.097 s and 0.17 s a run
 /// (`docs/studies/every-class/`, "non-softening").
 pub const NON_SOFTENING_SAMPLES_PER_BAND: f64 = 2.0;
-
-/// Vertex spacings per blade depth where the refined model's soil never
-/// softens: h = d/25, vertical or raked (Fig. 8b at d/250: 0.18 of the
-/// tolerance, raked at 60° 0.12; with d/50 0.13 and 0.10 at twice the time).
-pub const NON_SOFTENING_VERTICES_PER_DEPTH: f64 = 25.0;
 
 /// `run.samples_per_band` when a case does not give it, on its ground:
 /// `NON_SOFTENING_SAMPLES_PER_BAND` on the vertex ground where the soil
@@ -160,20 +156,22 @@ pub fn default_increment(
 /// and its cost grows as the increments do, not as their square
 /// (docs/performance.md; the original model's tine and dozer a third and
 /// a half of their node grid's time, its paper case about the same);
-/// in the refined model in soil that never softens d /
-/// `NON_SOFTENING_VERTICES_PER_DEPTH`, with `NON_SOFTENING_SAMPLES_PER_BAND`
-/// (Fig. 8b at d/250: 0.064 s a run against 0.092 s on its former coarse
-/// node grid, one ensemble each); else 0, the coarse node grid, for the
-/// original model in soil that never softens, where it is nine times
-/// faster than the vertex ground (the original case with φr = φp: 0.010 s
-/// against 0.093 s a run, both accurate by the ensemble rule).
-/// Reads the case's model, soil, rake and depth.
+/// else 0, the coarse node grid, in soil that never softens. There the
+/// vertex ground is as accurate and no slower in the refined model
+/// (Fig. 8b with vertices d/25 at d/250, the midpoint force and
+/// `NON_SOFTENING_SAMPLES_PER_BAND`: 0.18 of the tolerance at 0.063 s a
+/// run against 0.31 at 0.092 s), but the midpoint force puts single
+/// increments 6-10 % above their neighbours into a hardening soil's curve
+/// (six in Fig. 8b, where the paper's curve has none: the band chosen at
+/// the start of the increment moves into fresh soil that hardens during
+/// it, and the midpoint force does not choose again), and the explicit
+/// rule needs d/500 there (0.60, at 0.21 s); in the original model it is
+/// nine times slower (the original case with φr = φp: 0.093 s against
+/// 0.009 s). `docs/studies/every-class/`, rows "never softening".
+/// Reads the case's soil, rake and depth.
 pub fn default_vertex_spacing(case: &Case) -> f64 {
     if !case.soil.softens() {
-        return match case.model {
-            Model::Refined => case.blade.depth / NON_SOFTENING_VERTICES_PER_DEPTH,
-            Model::Original => 0.0,
-        };
+        return 0.0;
     }
     if case.blade.rake == 90.0 {
         case.blade.depth / VERTICES_PER_DEPTH
