@@ -71,6 +71,9 @@ pub struct Crescents<'a> {
     pub ridge_height: &'a [f64],
     /// γs,i: their unit weight.
     pub ridge_unit_weight: &'a [f64],
+    /// The highest h_s,i: along a ray at θ no heap stands above the fan
+    /// beyond s = h_s,max / (sin θ tan θr), so the quadrature stops there.
+    pub highest_ridge: f64,
 }
 
 /// The parts of the band's force the crescents scale (M8): Eq. (1)'s
@@ -125,8 +128,14 @@ impl Crescents<'_> {
             let theta = 0.5 * rho * (1.0 + xi);
             let (sin_t, cos_t) = theta.sin_cos();
             let mut ray = 0.0;
+            // Beyond it g ≤ 0 at every node ahead: the terms skipped add
+            // nothing (the nodes s rise along GAUSS).
+            let beyond = self.highest_ridge / (sin_t * self.tan_repose);
             for (xj, wj) in GAUSS {
                 let s = 0.5 * r * (1.0 + xj);
+                if s >= beyond {
+                    break;
+                }
                 let (h, gamma) = self.ridge_at(self.face_x + s * cos_t);
                 let g = h - s * sin_t * self.tan_repose;
                 if g > 0.0 {
@@ -141,7 +150,8 @@ impl Crescents<'_> {
     /// h_s and γs at grid x, linear between nodes (0 beyond the heaps).
     fn ridge_at(&self, x: f64) -> (f64, f64) {
         let at = x / self.spacing;
-        let i = at.floor() as usize;
+        // x ≥ 0 ahead of the face: truncation is the floor.
+        let i = at as usize;
         let (h, g) = (self.ridge_height, self.ridge_unit_weight);
         if i + 1 >= h.len() {
             return (

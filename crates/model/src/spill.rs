@@ -127,6 +127,11 @@ impl SideHeaps {
         }
     }
 
+    /// The highest crest h_s of the field (0 without heaps).
+    pub fn highest(&self) -> f64 {
+        self.height.iter().fold(0.0, |a, &h| a.max(h))
+    }
+
     /// Whether any side heap lies at or after node `from`.
     pub fn any_from(&self, from: usize) -> bool {
         self.height

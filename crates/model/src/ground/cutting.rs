@@ -145,6 +145,7 @@ impl Cutting {
                     ridges: side.any_from((u / spacing).floor() as usize),
                     ridge_height: &side.height,
                     ridge_unit_weight: &side.unit_weight,
+                    highest_ridge: side.highest(),
                 }
             }),
         }

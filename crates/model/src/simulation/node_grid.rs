@@ -135,6 +135,7 @@ impl NodeGrid {
             ridges: self.side.any_from(self.surface.face.node),
             ridge_height: &self.side.height,
             ridge_unit_weight: &self.side.unit_weight,
+            highest_ridge: self.side.highest(),
         });
         let input = SearchInput {
             laws: at.laws,
