@@ -12,8 +12,9 @@
 
 use crate::rake::Rake;
 
-/// grid slope / tan β, the grid's horizontal stretch of a raked blade; 1
-/// for a vertical blade, taken without a division (x / x = 1 exactly).
+/// grid slope / tan β, the grid's horizontal stretch of a raked blade, by
+/// which the band's vertical thickness on the grid grows (M16); 1 for a
+/// vertical blade, taken without a division (x / x = 1 exactly).
 #[inline]
 pub(crate) fn stretch(grid_slope: f64, tan_beta: f64) -> f64 {
     if grid_slope == tan_beta && tan_beta > 0.0 {
