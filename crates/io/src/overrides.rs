@@ -25,6 +25,13 @@ impl FromStr for Override {
             .split_once('=')
             .ok_or_else(|| bad("expected key.path=value"))?;
         let value = value.trim();
+        let depth = nesting(value);
+        if depth > MAX_NESTING {
+            return Err(bad(&format!(
+                "nested {depth} arrays or tables deep: no key takes more than 2 \
+                 (blade.depth_path = [[u, d], ...])"
+            )));
+        }
         if out_of_range(value) {
             return Err(bad(&format!(
                 "{value} is out of range for a number (magnitude at most about 1.8e308)"
@@ -32,6 +39,30 @@ impl FromStr for Override {
         }
         Override::with_text(text, key.trim(), parse_value(value))
     }
+}
+
+/// The deepest a `--set` value may nest arrays and tables: no key takes
+/// more than two levels, and a parser recursing through a hundred levels
+/// overflowed a test thread's stack (found by fuzzing `set_override`).
+const MAX_NESTING: usize = 8;
+
+/// How deep `value` nests arrays and tables, outside quoted strings.
+fn nesting(value: &str) -> usize {
+    let (mut depth, mut deepest, mut quote) = (0usize, 0, None);
+    for c in value.chars() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), _) => {}
+            (None, '"' | '\'') => quote = Some(c),
+            (None, '[' | '{') => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            (None, ']' | '}') => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    deepest
 }
 
 /// A `--set` value: TOML (`0.02`, `"x"`, `{ peak = 36 }`), or else the
@@ -159,6 +190,20 @@ mod tests {
             e.to_string().starts_with("run.increment.x: cannot set"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn values_nested_deeper_than_any_key_takes_are_refused() {
+        let nested = |n: usize| format!("blade.depth_path={}{}", "[".repeat(n), "]".repeat(n));
+        assert!(nested(MAX_NESTING).parse::<Override>().is_ok());
+        let e = nested(MAX_NESTING + 1).parse::<Override>().unwrap_err();
+        assert!(
+            e.to_string().contains("nested 9 arrays or tables deep"),
+            "{e}"
+        );
+        // Brackets inside a string are text, not nesting.
+        let quoted = format!("name=\"{}\"", "[".repeat(100));
+        assert!(quoted.parse::<Override>().is_ok());
     }
 
     #[test]

@@ -364,9 +364,12 @@ fn checked_body(bytes: &[u8]) -> Result<&[u8], SnapshotError> {
     let version = std::str::from_utf8(r.counted("the crate version")?)
         .map_err(|_| SnapshotError::invalid("the crate version", "not UTF-8 text".to_string()))?;
     if version != CRATE_VERSION {
+        // Escaped: the bytes of a snapshot from elsewhere may hold control
+        // characters, a NUL among them, which the C ABI's message would
+        // end at (found by fuzzing ffi_calls).
         return Err(SnapshotError::Version {
             format,
-            crate_version: version.to_string(),
+            crate_version: version.escape_debug().to_string(),
         });
     }
     let body = r.counted("the body")?;
