@@ -33,6 +33,10 @@
 //! evaluated, before any soil has spilled). The search compares P / w, so
 //! its bounds on the band's force (every crescent term is ≥ 0) stay bounds.
 
+use crate::case::Case;
+use crate::mechanism::{ForceFactor, Loads};
+use crate::spill::SideHeaps;
+
 /// The narrowest blade, as a fraction of the tip depth, for which the
 /// crescents describe the failure: below a critical depth of about 6 w a
 /// narrow tine fails the soil sideways (Godwin & Spoor 1977; Grisso &
@@ -93,6 +97,74 @@ pub struct BandTerms {
 fn fan(r: f64, depth: f64, cot_rake: f64) -> (f64, f64) {
     let cos_rho = (depth * cot_rake / r).min(1.0);
     (cos_rho, (1.0 - cos_rho * cos_rho).sqrt())
+}
+
+/// Where the fans of a band stand: r, its emergence point's distance ahead
+/// of the face on the grid (M33), the tip depth d and the face's cot α.
+#[derive(Clone, Copy, Debug)]
+pub struct Fan {
+    /// r (length).
+    pub rupture: f64,
+    /// d (length).
+    pub depth: f64,
+    /// cot α.
+    pub cot_rake: f64,
+}
+
+impl<'a> Crescents<'a> {
+    /// The crescents of `case`'s blade beside `side`, a field of nodes
+    /// `spacing` apart, for a face at grid x `face_x` on or after node
+    /// `face_node` of the field; `None` in plane strain.
+    pub fn of(
+        case: &Case,
+        side: &'a SideHeaps,
+        (face_x, face_node, spacing): (f64, usize, f64),
+    ) -> Option<Self> {
+        let width = case.blade.width?;
+        Some(Crescents {
+            width,
+            unit_weight: case.soil.unit_weight,
+            tan_repose: case.soil.repose.to_radians().tan(),
+            face_x,
+            spacing,
+            ridges: side.any_from(face_node),
+            ridge_height: &side.height,
+            ridge_unit_weight: &side.unit_weight,
+            highest_ridge: side.highest(),
+        })
+    }
+}
+
+/// P: the band's Eq. (1) with the loads, W at tan β = `t` and a slip line
+/// of horizontal length L (M4, M6, M8), plus, for a blade of finite width,
+/// its side crescents per unit width (M42); `None` if not admissible. Both
+/// grounds' searches compare it.
+pub fn blade_force(
+    crescents: Option<&Crescents>,
+    (loads, factor): (&Loads, &ForceFactor),
+    (weight, length, t): (f64, f64, f64),
+    fan: Fan,
+) -> Option<f64> {
+    let band = loads.force(factor, weight, length, t)?;
+    let Some(crescents) = crescents else {
+        return Some(band);
+    };
+    let terms = BandTerms {
+        factor: factor.at(t)?,
+        cohesion: loads.cohesion * length * factor.cohesion_at(t),
+        surcharge: loads.surcharge,
+    };
+    Some(band + crescents.force_per_width(terms, fan.rupture, fan.depth, fan.cot_rake))
+}
+
+/// The weight the bounds use for a band of weight W: W, plus the
+/// crescents' least weight per unit width for a blade of finite width
+/// (`Crescents::weight_floor`).
+pub fn bound_weight(crescents: Option<&Crescents>, weight: f64, fan: Fan) -> f64 {
+    match crescents {
+        None => weight,
+        Some(c) => weight + c.weight_floor(fan.rupture, fan.depth, fan.cot_rake),
+    }
 }
 
 impl Crescents<'_> {

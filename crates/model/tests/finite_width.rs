@@ -136,18 +136,24 @@ fn runs_are_deterministic() {
     assert!(sim.profile().iter().any(|p| p.ridge_height > 0.0));
 }
 
-/// Depth paths and the soil bin take a width like any other case: a scoop
-/// in and out of the ground, and a bin whose wall stops the pile, both
-/// conserve the soil met, spilled soil included.
-#[test]
-fn depth_paths_and_the_bin_keep_the_spilled_soil() {
+/// The narrow cut w = d as a scoop in and out of the ground, and in a bin
+/// 6 d long whose wall stops the pile.
+fn scoop_and_bin() -> [Case; 2] {
     let mut scoop = narrow_cut(1.0);
     scoop.run.travel = 4.0 * scoop.blade.depth;
     scoop.blade.depth_path = vec![[0.0, 10.0], [30.0, 20.0], [50.0, 20.0], [70.0, 12.0]];
     let mut bin = narrow_cut(1.0);
     bin.run.travel = 3.0 * bin.blade.depth;
     bin.bin.length = Some(6.0 * bin.blade.depth);
-    for case in [scoop, bin] {
+    [scoop, bin]
+}
+
+/// Depth paths and the soil bin take a width like any other case: a scoop
+/// in and out of the ground, and a bin whose wall stops the pile, both
+/// conserve the soil met, spilled soil included.
+#[test]
+fn depth_paths_and_the_bin_keep_the_spilled_soil() {
+    for case in scoop_and_bin() {
         let mut sim = Simulation::new(&case).unwrap();
         let last = *sim.run_to_end(|_| {}).unwrap().last().unwrap();
         assert!(last.mass_spilled > 0.0);
@@ -211,14 +217,9 @@ fn first_increment_on_vertices_is_mckyes_ali() {
 /// soil, w = d: mean force and spilled soil within 2 %).
 #[test]
 fn spilled_soil_on_vertices_is_conserved_and_follows_the_grid() {
-    let mut scoop = narrow_cut(1.0);
-    scoop.run.travel = 4.0 * scoop.blade.depth;
-    scoop.blade.depth_path = vec![[0.0, 10.0], [30.0, 20.0], [50.0, 20.0], [70.0, 12.0]];
-    let mut bin = narrow_cut(1.0);
-    bin.run.travel = 3.0 * bin.blade.depth;
-    bin.bin.length = Some(6.0 * bin.blade.depth);
     let mut raked = narrow_cut(1.0);
     raked.blade.rake = 60.0;
+    let [scoop, bin] = scoop_and_bin();
     for case in [narrow_cut(0.5), raked, scoop, bin] {
         let case = common::at_vertex_defaults(case);
         let mut sim = Simulation::new(&case).unwrap();

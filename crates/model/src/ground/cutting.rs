@@ -134,20 +134,11 @@ impl Cutting {
             // The ground never grows past the end wall.
             reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
             rake: self.rake,
-            crescents: c.blade.width.map(|width| {
+            crescents: {
                 let spacing = c.run.vertex_spacing;
-                Crescents {
-                    width,
-                    unit_weight: c.soil.unit_weight,
-                    tan_repose: c.soil.repose.to_radians().tan(),
-                    face_x: u,
-                    spacing,
-                    ridges: side.any_from((u / spacing).floor() as usize),
-                    ridge_height: &side.height,
-                    ridge_unit_weight: &side.unit_weight,
-                    highest_ridge: side.highest(),
-                }
-            }),
+                let face_node = (u / spacing).floor() as usize;
+                Crescents::of(c, side, (u, face_node, spacing))
+            },
         }
     }
 

@@ -66,6 +66,14 @@ pub struct Cut {
     pub unit_weight: UnitWeightRule,
 }
 
+impl Cut {
+    /// ½ v0 Δd: the tip path's strip of area, taken from the ground at the
+    /// face (negative where the tip rises, M38).
+    fn path_strip(&self) -> f64 {
+        0.5 * self.advance * self.deepening
+    }
+}
+
 /// What an increment did to the ground.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Moved {
@@ -132,9 +140,8 @@ impl Ground {
         let first = self.x[1] - self.x[0];
         self.y[0] += cut.advance * (cut.thickness + cut.rise) / first;
         if cut.deepening != 0.0 {
-            let strip = 0.5 * cut.advance * cut.deepening;
-            let reach = self.path_reach(cut, strip, end);
-            self.lift_band(0..reach, strip);
+            let reach = self.path_reach(cut, end);
+            self.lift_band(0..reach, cut.path_strip());
         }
         if banded {
             self.lift_band(corner..band.end, target_area - self.region(end).1);
@@ -317,17 +324,14 @@ impl Ground {
     /// Never the vertex at `end` or beyond, where the sums that keep the
     /// mass exact stop (a tip rising 224 in one increment of 2 reached
     /// past them, from the fuzz corpus of `--set`: the mass drifted 2e-3).
-    fn path_reach(&self, cut: &Cut, strip: f64, end: f64) -> usize {
-        let near = self
-            .x
-            .partition_point(|&x| x <= self.x[0] + cut.advance)
-            .max(1);
+    fn path_reach(&self, cut: &Cut, end: f64) -> usize {
+        let (near, mut weight) = self.near_face(cut.advance);
+        let strip = cut.path_strip();
         if strip >= 0.0 {
             return near;
         }
         let last = self.x.partition_point(|&x| x < end);
-        let room = self.y[0] + cut.depth + cut.deepening;
-        let mut weight: f64 = (0..near).map(|k| self.vertex_share(k)).sum();
+        let room = self.face_above_new_tip(cut);
         let mut reach = near;
         while reach < last && -strip > room * weight {
             weight += self.vertex_share(reach);
@@ -340,14 +344,21 @@ impl Ground {
     /// v0 of the face holds above the tip's new depth (`path_reach` then
     /// takes it from farther).
     fn rises_fast(&self, cut: &Cut) -> bool {
-        let strip = 0.5 * cut.advance * cut.deepening;
-        let near = self
-            .x
-            .partition_point(|&x| x <= self.x[0] + cut.advance)
-            .max(1);
-        let weight: f64 = (0..near).map(|k| self.vertex_share(k)).sum();
-        let room = self.y[0] + cut.depth + cut.deepening;
-        strip < 0.0 && -strip > room * weight
+        let (_, weight) = self.near_face(cut.advance);
+        let strip = cut.path_strip();
+        strip < 0.0 && -strip > self.face_above_new_tip(cut) * weight
+    }
+
+    /// The vertices within v0 of the face (the face's at least) and the
+    /// length of ground they stand for.
+    fn near_face(&self, advance: f64) -> (usize, f64) {
+        let near = self.x.partition_point(|&x| x <= self.x[0] + advance).max(1);
+        (near, (0..near).map(|k| self.vertex_share(k)).sum())
+    }
+
+    /// Height of the face vertex above the tip's depth after the increment.
+    fn face_above_new_tip(&self, cut: &Cut) -> f64 {
+        self.y[0] + cut.depth + cut.deepening
     }
 
     /// Half of each piece beside vertex k: the length its height stands for.

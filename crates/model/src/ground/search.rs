@@ -26,7 +26,7 @@
 
 use super::Ground;
 use crate::band::stretch;
-use crate::crescent::{BandTerms, Crescents};
+use crate::crescent::{blade_force, bound_weight, Crescents, Fan};
 use crate::face_friction::Face;
 use crate::force_bounds::{may_win, Lower};
 use crate::laws::{BandAngles, Laws};
@@ -80,36 +80,38 @@ pub(crate) struct Scan<'a> {
 }
 
 impl Scan<'_> {
-    /// P: Eq. (1) with the loads for a band of weight W and slip line of
-    /// horizontal length L at tan β = `t` (M4, M6, M8), emerging `rupture`
-    /// ahead of the face in the ground's coordinates; for a blade of
-    /// finite width, plus its side crescents per unit width (M42).
+    /// The fans of a band emerging `rupture` ahead of the face.
+    fn fan(&self, rupture: f64) -> Fan {
+        Fan {
+            rupture,
+            depth: self.depth,
+            cot_rake: self.rake.cot,
+        }
+    }
+
+    /// P for a band of weight W and slip line of horizontal length L at
+    /// tan β = `t`, emerging `rupture` ahead of the face in the ground's
+    /// coordinates (`blade_force`: Eq. (1), and the crescents of a blade of
+    /// finite width).
     pub(crate) fn force(
         &self,
         factor: &ForceFactor,
-        (weight, length, t): (f64, f64, f64),
+        geometry: (f64, f64, f64),
         rupture: f64,
     ) -> Option<f64> {
-        let band = self.loads.force(factor, weight, length, t)?;
-        let Some(crescents) = &self.crescents else {
-            return Some(band);
-        };
-        let terms = BandTerms {
-            factor: factor.at(t)?,
-            cohesion: self.loads.cohesion * length * factor.cohesion_at(t),
-            surcharge: self.loads.surcharge,
-        };
-        Some(band + crescents.force_per_width(terms, rupture, self.depth, self.rake.cot))
+        let crescents = self.crescents.as_ref();
+        blade_force(
+            crescents,
+            (&self.loads, factor),
+            geometry,
+            self.fan(rupture),
+        )
     }
 
     /// The weight the bounds use for a band of weight W emerging `rupture`
-    /// ahead of the face: W, plus the crescents' least weight per unit
-    /// width for a blade of finite width (`Crescents::weight_floor`).
+    /// ahead of the face (`crescent::bound_weight`).
     fn bound_weight(&self, weight: f64, rupture: f64) -> f64 {
-        match &self.crescents {
-            None => weight,
-            Some(c) => weight + c.weight_floor(rupture, self.depth, self.rake.cot),
-        }
+        bound_weight(self.crescents.as_ref(), weight, self.fan(rupture))
     }
 }
 

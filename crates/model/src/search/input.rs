@@ -1,6 +1,6 @@
 //! What the search needs to know about the soil besides the surface.
 
-use crate::crescent::Crescents;
+use crate::crescent::{bound_weight, Crescents, Fan};
 use crate::face_friction::Face;
 use crate::laws::Laws;
 use crate::mechanism::Loads;
@@ -43,9 +43,11 @@ impl SearchInput<'_> {
     /// width for a blade of finite width (`Crescents::weight_floor`).
     #[inline]
     pub fn bound_weight(&self, weight: f64, rupture: f64) -> f64 {
-        match &self.crescents {
-            None => weight,
-            Some(c) => weight + c.weight_floor(rupture, self.depth, self.rake.cot),
-        }
+        let fan = Fan {
+            rupture,
+            depth: self.depth,
+            cot_rake: self.rake.cot,
+        };
+        bound_weight(self.crescents.as_ref(), weight, fan)
     }
 }

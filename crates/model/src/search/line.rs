@@ -17,7 +17,7 @@
 
 use super::input::SearchInput;
 use crate::band::stretch;
-use crate::crescent::BandTerms;
+use crate::crescent::{blade_force, Fan};
 use crate::grid::Band;
 use crate::grid::FaceNode;
 use crate::laws::BandAngles;
@@ -152,16 +152,17 @@ impl Line {
         let factor = input.laws.factor(angles, t, input.face);
         let spacings = lines.face.spacings(self.node);
         let length = self.slope.length(spacings, lines.dx);
-        let band = input.loads.force(&factor, self.weight, length, t)?;
-        let Some(crescents) = &input.crescents else {
-            return Some(band);
+        let fan = Fan {
+            rupture: spacings * lines.dx,
+            depth: lines.d,
+            cot_rake: input.rake.cot,
         };
-        let terms = BandTerms {
-            factor: factor.at(t)?,
-            cohesion: input.loads.cohesion * length * factor.cohesion_at(t),
-            surcharge: input.loads.surcharge,
-        };
-        let rupture = spacings * lines.dx;
-        Some(band + crescents.force_per_width(terms, rupture, lines.d, input.rake.cot))
+        let crescents = input.crescents.as_ref();
+        blade_force(
+            crescents,
+            (&input.loads, &factor),
+            (self.weight, length, t),
+            fan,
+        )
     }
 }

@@ -126,17 +126,8 @@ impl NodeGrid {
         let c = at.case;
         let d = self.tip_depth(c);
         let dx = self.surface.scheme.spacing;
-        let crescents = c.blade.width.map(|width| Crescents {
-            width,
-            unit_weight: c.soil.unit_weight,
-            tan_repose: c.soil.repose.to_radians().tan(),
-            face_x: self.surface.x(self.surface.face.node),
-            spacing: dx,
-            ridges: self.side.any_from(self.surface.face.node),
-            ridge_height: &self.side.height,
-            ridge_unit_weight: &self.side.unit_weight,
-            highest_ridge: self.side.highest(),
-        });
+        let node = self.surface.face.node;
+        let crescents = Crescents::of(c, &self.side, (self.surface.x(node), node, dx));
         let input = SearchInput {
             laws: at.laws,
             blade: self.surface.face.node,
