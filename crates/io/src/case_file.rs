@@ -12,7 +12,6 @@ use soilcut_model::{
     default_increment, default_node_spacing, default_samples_per_band, default_time_scheme,
     default_vertex_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
     Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, TimeScheme, UnitWeightRule,
-    DEFAULT_SAMPLES_PER_BAND,
 };
 use std::path::Path;
 
@@ -576,11 +575,6 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         Model::Original => choices_file.original()?,
         Model::Refined => choices_file.refined(),
     };
-    // Its default depends on the ground (`with_grid`).
-    let samples_per_band = file
-        .run
-        .samples_per_band
-        .unwrap_or(DEFAULT_SAMPLES_PER_BAND);
     let case = Case {
         name: file.name.clone(),
         title,
@@ -598,7 +592,8 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
             travel: file.run.travel,
             increment: 0.0,
             node_spacing: 0.0,
-            samples_per_band,
+            // Their defaults depend on the ground (`with_grid`).
+            samples_per_band: 0.0,
             vertex_spacing: 0.0,
             time_scheme: TimeScheme::Explicit,
             merge_tolerance: *file.run.merge_tolerance.get_or_insert(0.0),
