@@ -344,9 +344,9 @@ impl Ground {
     /// v0 of the face holds above the tip's new depth (`path_reach` then
     /// takes it from farther).
     fn rises_fast(&self, cut: &Cut) -> bool {
-        let (_, weight) = self.near_face(cut.advance);
         let strip = cut.path_strip();
-        strip < 0.0 && -strip > self.face_above_new_tip(cut) * weight
+        // Every increment asks: at constant depth, nothing to sum.
+        strip < 0.0 && -strip > self.face_above_new_tip(cut) * self.near_face(cut.advance).1
     }
 
     /// The vertices within v0 of the face (the face's at least) and the
