@@ -62,8 +62,9 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row fig5 "refined, hardening-softening" cases/paper/fig5.toml
   row fig8b "refined, never softening" cases/paper/fig8b.toml
   row fig8b-rake60 "refined, never softening, raked (Fig. 8b, α = 60°)" cases/paper/fig8b.toml --set blade.rake=60
-  row fig8b-vertices "never softening on vertices d/25 (not the default: the midpoint force's single-increment peaks)" cases/paper/fig8b.toml --set run.vertex_spacing=1.016
-  row fig8b-vertices-explicit "never softening on vertices d/25, explicit (not the default: slower)" cases/paper/fig8b.toml --set run.vertex_spacing=1.016 --set 'run.time_scheme="explicit"'
+  row fig8b-nodes "never softening on the coarse node grid (the default before M51a)" cases/paper/fig8b.toml --set run.vertex_spacing=0
+  row fig8b-rake60-nodes "never softening, raked, on the coarse node grid (the default before M51a)" cases/paper/fig8b.toml --set blade.rake=60 --set run.vertex_spacing=0
+  row fig8b-vertices-explicit "never softening on vertices d/25, explicit (not the default: slower)" cases/paper/fig8b.toml --set 'run.time_scheme="explicit"'
   row fig5-bin "soil bin (Fig. 5 with bin.length = 8 d)" cases/paper/fig5.toml --set bin.length=160
   row validation-vertical "soil bin (DEM's, 10 d)" cases/validation/vertical.toml
   row validation-deep "soil bin (DEM's, 8 d)" cases/validation/deep.toml

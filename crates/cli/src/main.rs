@@ -398,10 +398,14 @@ fn resolution(case: &Case) -> String {
         format!("node grid, nodes every {}", of_depth(run.node_spacing))
     };
     format!(
-        "{ground}; increment {}; time scheme {}; {} samples per band",
+        "{ground}; increment {}; time scheme {}; {} per band",
         of_depth(run.increment),
         run.time_scheme.name(),
-        run.samples_per_band
+        match run.samples_per_band {
+            0.0 => "every candidate".to_string(),
+            1.0 => "1 sample".to_string(),
+            k => format!("{k} samples"),
+        }
     )
 }
 

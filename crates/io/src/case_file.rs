@@ -907,11 +907,11 @@ mod tests {
         let given = ["run.node_spacing=0.04", "run.increment=0.04"];
         assert_eq!(resolved_ground(&refined, &given).3, 0.0);
         // The refined model in soil that never softens (Fig. 8b's kind):
-        // d/500 on the coarse grid, h = d/25 in whole increments; on the
-        // vertex ground, given, 2 samples per band.
+        // d/250 on vertices d/25, 1 sample per band; on the node grid,
+        // given, d/500 on the coarse grid, h = d/25 in whole increments.
         let never = ["soil.friction.residual=35"];
-        let (_, _, _, vertices) = resolved_ground(&refined, &never);
-        assert_eq!(vertices, 0.0);
+        let (d, v0, _, vertices) = resolved_ground(&refined, &never);
+        assert_eq!((v0, vertices), (d / 250.0, d / 25.0));
         let samples = |overrides: &[&str]| {
             let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
             parse_case(&refined, &overrides)
@@ -920,12 +920,8 @@ mod tests {
                 .run
                 .samples_per_band
         };
-        assert_eq!(samples(&never), 8.0);
+        assert_eq!(samples(&never), 1.0);
         assert_eq!(samples(&[]), 8.0);
-        assert_eq!(
-            samples(&["soil.friction.residual=35", "run.vertex_spacing=0.8"]),
-            2.0
-        );
         let on_nodes = ["soil.friction.residual=35", "run.vertex_spacing=0"];
         assert_eq!(samples(&on_nodes), 8.0);
         let (d, v0, h) = resolved_grid(&refined, &on_nodes);

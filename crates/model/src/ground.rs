@@ -30,6 +30,7 @@ pub(crate) mod cutting;
 mod merge;
 mod midpoint;
 pub mod motion;
+mod scan;
 pub(crate) mod search;
 mod spill;
 

@@ -265,14 +265,20 @@ fn the_midpoint_force_keeps_the_band_and_takes_the_state_half_an_increment_on() 
         // Fresh soil: the first increment is the explicit one, Coulomb's
         // wedge, bit for bit.
         assert!(same >= 1, "{which}");
-        // The same state, so the same band; only its strength moves.
-        assert_eq!((e.x_emergence, e.beta_deg), (m.x_emergence, m.beta_deg));
+        assert_eq!(m.force < e.force, softens, "{which}: {m:?} vs {e:?}");
+        // Where the soil softens the band is the one least at the start;
+        // where it never does, the least half an increment on (M51a),
+        // whose force is at least its own start's, so at least the least's.
+        let same_band = (e.x_emergence, e.beta_deg) == (m.x_emergence, m.beta_deg);
+        assert!(same_band || !softens, "{which}: {m:?} vs {e:?}");
+        if !same_band {
+            continue;
+        }
         assert_eq!(
             m.friction_deg < e.friction_deg,
             softens,
             "{which}: {m:?} vs {e:?}"
         );
-        assert_eq!(m.force < e.force, softens, "{which}: {m:?} vs {e:?}");
         // Every point of the footprint half an increment's shear on: the
         // mean φ moves by no more than the law's steepest slope times it.
         let soil = common::refined(which, 0.5, 250.0).soil;
@@ -318,4 +324,46 @@ fn merging_quiet_vertices_keeps_the_mass_and_thins_the_ground() {
     nodes.run.vertex_spacing = 0.0;
     let e = Simulation::new(&nodes).expect_err("refused");
     assert!(format!("{e}").contains("run.merge_tolerance"), "{e}");
+}
+
+/// Fig. 8b's soil (hardening only) at its defaults on the vertex ground:
+/// vertices d/25 apart, d/250, the midpoint force, one sample per band.
+fn fig8b_at_defaults(travel_depths: f64) -> soilcut_model::Case {
+    let mut case = common::refined("fig8b", travel_depths, 250.0);
+    case.run.vertex_spacing = case.blade.depth / 25.0;
+    case.run.samples_per_band = 1.0;
+    case.run.time_scheme = TimeScheme::MidpointForce;
+    case
+}
+
+#[test]
+fn a_hardening_soil_chooses_its_band_by_the_midpoint_force() {
+    // Where the soil never softens the search compares the bands half an
+    // increment on (M51a): the force the step records is the least of the
+    // landscape's, which holds every first-stage candidate's midpoint
+    // force (the second stage may go below them, the snap 0.1 % above).
+    let mut sim = Simulation::new(&fig8b_at_defaults(2.0)).unwrap();
+    while sim.steps_done() < 300 {
+        let least = sim
+            .landscape()
+            .unwrap()
+            .iter()
+            .map(|c| c.force)
+            .fold(f64::INFINITY, f64::min);
+        let chosen = sim.step().unwrap().force;
+        assert!(chosen <= least * (1.0 + 1e-3), "{chosen} above {least}");
+    }
+    // A band chosen at the start that hardens over the increment past
+    // another put lone increments 3-10 % above both neighbours into Fig.
+    // 8b's curve (about 60 over 4 d); the paper's curve has none.
+    let (history, sim) = common::run(&fig8b_at_defaults(2.0));
+    mass_is_kept(&history, sim.initial_mass());
+    for w in history.windows(3) {
+        let rise = w[1].force / w[0].force.max(w[2].force) - 1.0;
+        assert!(
+            rise < 0.01,
+            "step {}: {rise} above both neighbours",
+            w[1].step
+        );
+    }
 }

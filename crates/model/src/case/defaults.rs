@@ -76,14 +76,30 @@ pub const RAKED_VERTICES_PER_DEPTH: f64 = 100.0;
 pub const DEFAULT_SAMPLES_PER_BAND: f64 = 8.0;
 
 /// `run.samples_per_band` on the vertex ground where the soil never
-/// softens (given `run.vertex_spacing`: the coarse node grid is those
-/// cases' default, `default_vertex_spacing`): 2. Without softening no patch of weak soil localises the least
-/// band, the force varies smoothly over a band width, and the second
+/// softens: 1. Without softening no patch of weak soil localises the
+/// least band, the force varies smoothly over a band width, and the second
 /// stage narrows the few local minima: Fig. 8b at d/250 with vertices d/25
-/// is accurate by the ensemble rule with K = 2 (0.18 of the tolerance),
-/// K = 4 (0.17) and K = 8 (0.18), at 0.064 s, 0.097 s and 0.17 s a run
-/// (`docs/studies/every-class/`, "non-softening").
-pub const NON_SOFTENING_SAMPLES_PER_BAND: f64 = 2.0;
+/// and the midpoint force choosing at the midpoint is accurate by the
+/// ensemble rule with K = 1 and K = 2 (0.19 of the tolerance both, at
+/// 0.082 s and 0.100 s a run), raked at 60° too (0.14 both;
+/// `docs/studies/every-class/`, rows "never softening").
+pub const NON_SOFTENING_SAMPLES_PER_BAND: f64 = 1.0;
+
+/// Vertex spacings per blade depth of the default vertex ground of the
+/// refined model where the soil never softens: h = d/25, vertical or
+/// raked. No softened band localises the mechanism, and a band's strength
+/// is a smooth mean over soil that only hardens: Fig. 8b at d/250 with
+/// `NON_SOFTENING_SAMPLES_PER_BAND` is accurate by the ensemble rule with
+/// vertices d/25 apart (0.19 of the tolerance at 0.082 s a run, against
+/// the coarse node grid's 0.31 at 0.093 s), raked at 60° too (0.14, where
+/// d/50 is 0.13 at 1.7 times the time; `docs/studies/every-class/`).
+pub const NON_SOFTENING_VERTICES_PER_DEPTH: f64 = 25.0;
+
+/// Increments per blade depth on the vertex ground of the refined model
+/// where the soil never softens, with the midpoint force: d/250, accurate
+/// by the ensemble rule on Fig. 8b (0.19 of the tolerance; 0.42 at d/200,
+/// 0.89 at d/150) and raked at 60° (0.14; `docs/studies/every-class/`).
+pub const NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH: f64 = 250.0;
 
 /// `run.samples_per_band` when a case does not give it, on its ground:
 /// `NON_SOFTENING_SAMPLES_PER_BAND` on the vertex ground where the soil
@@ -127,9 +143,9 @@ pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 /// over `ORIGINAL_INCREMENTS_PER_DEPTH` in the original model (the
 /// original, tine and dozer cases at d/250 with vertices d/50 and the
 /// midpoint force: worst window / tolerance 0.46, 0.34, 0.35 against their
-/// reference ensembles, `docs/studies/every-class/`) and in the refined
-/// model's soil that never softens with the midpoint force (Fig. 8b 0.18,
-/// raked at 60° 0.12), in the refined model's softening soil over
+/// reference ensembles, `docs/studies/every-class/`), over
+/// `NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH` in the refined model's soil
+/// that never softens with the midpoint force, in its softening soil over
 /// `VERTEX_INCREMENTS_PER_DEPTH` with the midpoint force, over
 /// `VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH` under the explicit rule.
 pub fn default_increment(
@@ -141,7 +157,7 @@ pub fn default_increment(
     match (on_vertices, scheme) {
         (true, _) if model == Model::Original => depth / ORIGINAL_INCREMENTS_PER_DEPTH,
         (true, TimeScheme::MidpointForce) if !soil.softens() => {
-            depth / ORIGINAL_INCREMENTS_PER_DEPTH
+            depth / NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH
         }
         (true, TimeScheme::MidpointForce) => depth / VERTEX_INCREMENTS_PER_DEPTH,
         (true, TimeScheme::Explicit) => depth / VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
@@ -156,27 +172,23 @@ pub fn default_increment(
 /// and its cost grows as the increments do, not as their square
 /// (docs/performance.md; the original model's tine and dozer a third and
 /// a half of their node grid's time, its paper case about the same);
-/// else 0, the coarse node grid, in soil that never softens. There the
-/// vertex ground is as accurate and no slower in the refined model
-/// (Fig. 8b with vertices d/25 at d/250, the midpoint force and
-/// `NON_SOFTENING_SAMPLES_PER_BAND`: 0.18 of the tolerance at 0.063 s a
-/// run against 0.31 at 0.092 s), but the midpoint force puts single
-/// increments 6-10 % above their neighbours into a hardening soil's curve
-/// (six in Fig. 8b, where the paper's curve has none: the band chosen at
-/// the start of the increment moves into fresh soil that hardens during
-/// it, and the midpoint force does not choose again), and the explicit
-/// rule needs d/500 there (0.60, at 0.21 s); in the original model it is
-/// nine times slower (the original case with φr = φp: 0.093 s against
-/// 0.009 s). `docs/studies/every-class/`, rows "never softening".
-/// Reads the case's soil, rake and depth.
+/// d / `NON_SOFTENING_VERTICES_PER_DEPTH` in the refined model's soil that
+/// never softens, where with the midpoint force choosing at the midpoint
+/// (M51a) it is as accurate as the coarse node grid and faster (Fig. 8b:
+/// 0.19 of the tolerance at 0.082 s a run against 0.31 at 0.093 s); else
+/// 0, the coarse node grid, in the original model's soil that never
+/// softens, where the vertex ground is four to eight times slower (the
+/// original case with φr = φp: 0.042 s with vertices d/10, 0.078 s with
+/// d/25, against 0.010 s on the coarse grid, all accurate; until an
+/// increment costs what changed, issue 39). `docs/studies/every-class/`,
+/// rows "never softening". Reads the case's model, soil, rake and depth.
 pub fn default_vertex_spacing(case: &Case) -> f64 {
-    if !case.soil.softens() {
-        return 0.0;
-    }
-    if case.blade.rake == 90.0 {
-        case.blade.depth / VERTICES_PER_DEPTH
-    } else {
-        case.blade.depth / RAKED_VERTICES_PER_DEPTH
+    let d = case.blade.depth;
+    match (case.model, case.soil.softens()) {
+        (Model::Original, false) => 0.0,
+        (Model::Refined, false) => d / NON_SOFTENING_VERTICES_PER_DEPTH,
+        (_, true) if case.blade.rake == 90.0 => d / VERTICES_PER_DEPTH,
+        (_, true) => d / RAKED_VERTICES_PER_DEPTH,
     }
 }
 

@@ -11,9 +11,10 @@
 //! in a bin or not, under every band rule, the sampled search or the
 //! exhaustive one (docs/model.md §1.2, §19).
 
-use super::midpoint::midpoint_force;
+use super::midpoint::{half_slip, midpoint_force};
 use super::motion::Cut;
-use super::search::{Pick, PickObserver, Scan, VertexSearch};
+use super::scan::{Pick, Scan};
+use super::search::{PickObserver, VertexSearch};
 use super::{Ground, Quiet};
 use crate::band::{stretch, BandMotion};
 use crate::case::{Case, TimeScheme};
@@ -139,6 +140,7 @@ impl Cutting {
                 let face_node = (u / spacing).floor() as usize;
                 Crescents::of(c, side, (u, face_node, spacing))
             },
+            choose_at_midpoint: c.run.time_scheme == TimeScheme::MidpointForce && !c.soil.softens(),
         }
     }
 
@@ -258,9 +260,10 @@ impl Discretisation for Cutting {
         let pick = Self::search_next((&mut self.search, &mut self.ground), (at, &scan), None)?;
         let pick = match c.run.time_scheme {
             TimeScheme::Explicit => pick,
+            // The search compared the midpoint forces already.
+            TimeScheme::MidpointForce if scan.choose_at_midpoint => pick,
             TimeScheme::MidpointForce => {
-                let half_slip = 0.5 * self.cut(c, &pick).slip;
-                midpoint_force(&self.ground, &scan, pick, half_slip)
+                midpoint_force(&self.ground, &scan, pick, half_slip(&scan, &pick))
             }
         };
         let (d, u) = (c.blade.depth, self.ground.x[0]);

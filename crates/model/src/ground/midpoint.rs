@@ -15,10 +15,32 @@
 //! so that the first increment is Coulomb's wedge at φ0 (M13), as every
 //! scheme's must be (§9): a band emerging in fresh soil has not yet
 //! softened it.
+//!
+//! Where the soil never softens (φ never falls with ut), the band's
+//! strength rises over the increment, and the band least at the start can
+//! pass another before the increment ends: the search then compares every
+//! band by its midpoint force (`Scan::choose_at_midpoint`, M51a). Its
+//! bounds stay valid, since P rises with φ (Eq. (1)) and each band's
+//! midpoint force is then at least its start force, which they bound.
+//! Where the soil softens the search chooses at the start, as the paper's
+//! explicit rule does.
 
-use super::search::{Pick, Scan};
+use super::scan::{Pick, Scan};
 use super::Ground;
+use crate::band::BandMotion;
 use crate::laws::BandAngles;
+
+/// ½ Δut, the half of the increment's slip that the midpoint state takes
+/// (M18, M36; a slip line's M15 where dB = 0 or β + ψ ≥ 90°), as the
+/// motion of `pick` will shear its band.
+pub(crate) fn half_slip(scan: &Scan, pick: &Pick) -> f64 {
+    let band = (pick.tan_beta, pick.angles.dilation);
+    let motion = match BandMotion::new(band, &scan.rake, scan.advance) {
+        Some(motion) if scan.band_width > 0.0 => motion,
+        _ => BandMotion::slip_line((pick.grid_slope, pick.tan_beta), &scan.rake, scan.advance),
+    };
+    0.5 * motion.slip
+}
 
 /// `pick` with its force and angles on the midpoint state of its footprint
 /// (M51),

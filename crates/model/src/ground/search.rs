@@ -24,14 +24,12 @@
 //! (M31), then narrows every local minimum of the samples within 0.5 % of
 //! the least by golden-section search down to the resolution.
 
+use super::midpoint::{half_slip, midpoint_force};
+use super::scan::{Pick, Scan};
 use super::Ground;
 use crate::band::stretch;
-use crate::crescent::{blade_force, bound_weight, Crescents, Fan};
-use crate::face_friction::Face;
 use crate::force_bounds::{may_win, Lower};
-use crate::laws::{BandAngles, Laws};
-use crate::mechanism::{ForceFactor, Loads};
-use crate::rake::Rake;
+use crate::laws::BandAngles;
 
 /// Local minima of the samples within this fraction of the least are
 /// narrowed, and the first stage prunes against it (the sampled search's
@@ -46,98 +44,6 @@ const SNAP_SLACK: f64 = 1e-3;
 const LEAD: usize = 8;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
-
-/// What the search needs besides the ground.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Scan<'a> {
-    pub(crate) laws: &'a Laws,
-    pub(crate) loads: Loads,
-    pub(crate) face: Face,
-    /// d, the tip's depth (length).
-    pub(crate) depth: f64,
-    /// dB (0: a slip line) (length).
-    pub(crate) band_width: f64,
-    /// Spacing of the first stage's samples along the ground (length).
-    pub(crate) sample: f64,
-    /// Width at which a local minimum's bracket stops narrowing (length).
-    pub(crate) resolution: f64,
-    /// v0: the block's advance in the increment (length).
-    pub(crate) advance: f64,
-    /// An emergence point this close to a vertex moves to it (length).
-    pub(crate) snap: f64,
-    /// Flat fresh ground appended when the scan reaches the end, up to
-    /// `reach` (length).
-    pub(crate) grow: f64,
-    /// No emergence point at or beyond this x, where the ground stops
-    /// growing (the end wall, else far ahead).
-    pub(crate) reach: f64,
-    /// The shear of a raked blade's coordinates (the ground is held in
-    /// x' = x + (y + d) cot α, where the face is vertical; `Rake`).
-    pub(crate) rake: Rake,
-    /// The side crescents of a blade of finite width (`None`: plane
-    /// strain); forces compared are then the blade's per unit width.
-    pub(crate) crescents: Option<Crescents<'a>>,
-}
-
-impl Scan<'_> {
-    /// The fans of a band emerging `rupture` ahead of the face.
-    fn fan(&self, rupture: f64) -> Fan {
-        Fan {
-            rupture,
-            depth: self.depth,
-            cot_rake: self.rake.cot,
-        }
-    }
-
-    /// P for a band of weight W and slip line of horizontal length L at
-    /// tan β = `t`, emerging `rupture` ahead of the face in the ground's
-    /// coordinates (`blade_force`: Eq. (1), and the crescents of a blade of
-    /// finite width).
-    pub(crate) fn force(
-        &self,
-        factor: &ForceFactor,
-        geometry: (f64, f64, f64),
-        rupture: f64,
-    ) -> Option<f64> {
-        let crescents = self.crescents.as_ref();
-        blade_force(
-            crescents,
-            (&self.loads, factor),
-            geometry,
-            self.fan(rupture),
-        )
-    }
-
-    /// The weight the bounds use for a band of weight W emerging `rupture`
-    /// ahead of the face (`crescent::bound_weight`).
-    fn bound_weight(&self, weight: f64, rupture: f64) -> f64 {
-        bound_weight(self.crescents.as_ref(), weight, self.fan(rupture))
-    }
-}
-
-/// The chosen mechanism.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Pick {
-    /// x_e, the emergence point.
-    pub(crate) x: f64,
-    /// y(x_e).
-    pub(crate) y: f64,
-    /// tan β, physical (Eq. (1), the motion).
-    pub(crate) tan_beta: f64,
-    /// tan β' = (y + d) / (x_e − x_0), the line's slope in the ground's
-    /// coordinates (M34; tan β for a vertical blade).
-    pub(crate) grid_slope: f64,
-    /// The slip line's horizontal length, x_e − x_0 physically (length).
-    pub(crate) length: f64,
-    /// P (force per unit width).
-    pub(crate) force: f64,
-    /// The band's angles (radians).
-    pub(crate) angles: BandAngles,
-    /// W, the block's weight (force per unit width).
-    pub(crate) weight: f64,
-    /// x − L, the rear end of the band's footprint (x for a slip line).
-    pub(crate) rear: f64,
-}
 
 /// A first-stage candidate: its emergence point, piece and force (NaN
 /// until evaluated, infinite if inadmissible or pruned).
@@ -449,7 +355,7 @@ impl VertexSearch {
         self.evaluations += 1;
         let factor = scan.laws.factor(angles, t, scan.face);
         let force = scan.force(&factor, (weight, length, t), run)?;
-        Some(Pick {
+        let pick = Pick {
             x,
             y,
             tan_beta: t,
@@ -459,7 +365,12 @@ impl VertexSearch {
             angles,
             weight,
             rear,
-        })
+        };
+        // A band already above the bar stays above it half an increment on.
+        if !scan.choose_at_midpoint || force >= bar {
+            return Some(pick);
+        }
+        Some(midpoint_force(ground, scan, pick, half_slip(scan, &pick)))
     }
 
     /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
