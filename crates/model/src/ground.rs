@@ -25,7 +25,7 @@
 use crate::mass::compensated_sum;
 use serde::{Deserialize, Serialize};
 
-mod avalanche;
+pub(crate) mod avalanche;
 pub(crate) mod cutting;
 mod merge;
 mod midpoint;

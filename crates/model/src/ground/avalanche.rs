@@ -20,6 +20,54 @@
 use super::Ground;
 use crate::repose::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 
+/// The ground as the last relax left it, every vertex pair unpooled by
+/// both passes (empty until a relax ends so, and after one that gave up
+/// at `MAX_PASSES`). Between relaxes the motion, the spill and the
+/// merging change the ground near the blade and where heaps spill; the
+/// rest is still this ground, vertex for vertex, and pools nothing: a
+/// relax need not visit it. A cache: a relax without it (after a
+/// snapshot) gives the same ground bit for bit.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Settled {
+    x: Vec<f64>,
+    y: Vec<f64>,
+    slopes: (f64, f64),
+}
+
+impl Settled {
+    /// The first vertex of `ground` from which on its vertices are the
+    /// settled ground's last ones, bit for bit, under the same `slopes`
+    /// (the number of vertices if none is).
+    fn common_suffix(&self, ground: &Ground, slopes: (f64, f64)) -> usize {
+        let n = ground.x.len();
+        let same_slopes = self.slopes.0.to_bits() == slopes.0.to_bits()
+            && self.slopes.1.to_bits() == slopes.1.to_bits();
+        if !same_slopes {
+            return n;
+        }
+        let pairs = ground.x.iter().zip(&ground.y).rev();
+        let kept = self.x.iter().zip(&self.y).rev();
+        let equal = pairs
+            .zip(kept)
+            .take_while(|((x, y), (kx, ky))| {
+                x.to_bits() == kx.to_bits() && y.to_bits() == ky.to_bits()
+            })
+            .count();
+        n - equal
+    }
+
+    fn keep(&mut self, ground: &Ground, slopes: (f64, f64)) {
+        self.x.clone_from(&ground.x);
+        self.y.clone_from(&ground.y);
+        self.slopes = slopes;
+    }
+
+    fn forget(&mut self) {
+        self.x.clear();
+        self.y.clear();
+    }
+}
+
 /// A run of changed pieces balances when its net area change is within
 /// this fraction of its gross change (the pooling keeps the area to
 /// round-off).
@@ -34,19 +82,43 @@ impl Ground {
     /// soil moved. The pieces next to a steep one are first cut to at most
     /// `spacing`, so that the soil that runs down heaps where it stops,
     /// not over a long piece.
+    ///
     pub fn relax(&mut self, slopes: (f64, f64), spacing: f64) -> bool {
+        self.relax_after(slopes, spacing, &mut Settled::default())
+    }
+
+    /// `relax` of a ground that `settled` holds as the last relax left it:
+    /// the pools stop where the ground is still that ground (`Settled`), so
+    /// an increment pools what it changed, not the ground ahead; the
+    /// result is the same bit for bit as pooling every vertex.
+    pub(crate) fn relax_after(
+        &mut self,
+        slopes: (f64, f64),
+        spacing: f64,
+        settled: &mut Settled,
+    ) -> bool {
         self.refine_around_steep(slopes, spacing);
+        // Vertices from `unchanged` on are the settled ground's.
+        let mut unchanged = settled.common_suffix(self, slopes);
         let mut moved = false;
+        let mut before = Vec::new();
         for _ in 0..MAX_PASSES {
-            let areas: Vec<f64> = (0..self.pieces()).map(|k| self.piece_area(k)).collect();
-            let down = slopes.0.is_finite() && self.pool(slopes.0, 1.0);
-            let up = self.pool(slopes.1, -1.0);
-            if !down && !up {
-                break;
-            }
-            self.deposit(&areas);
+            before.clone_from(&self.y);
+            let down = if slopes.0.is_finite() {
+                self.pool(slopes.0, 1.0, unchanged)
+            } else {
+                None
+            };
+            let up = self.pool(slopes.1, -1.0, unchanged.max(down.unwrap_or(0)));
+            let Some(end) = down.max(up) else {
+                settled.keep(self, slopes);
+                return moved;
+            };
+            unchanged = unchanged.max(end);
+            self.deposit(&before, end);
             moved = true;
         }
+        settled.forget();
         moved
     }
 
@@ -95,10 +167,13 @@ impl Ground {
     }
 
     /// One pool-adjacent-violators pass on g_k = σ y_k + s x_k; returns
-    /// whether it levelled anything.
-    fn pool(&mut self, s: f64, sign: f64) -> bool {
+    /// one past the last vertex it levelled, if it levelled any. From
+    /// vertex `unchanged` on the ground is one that a pass left unpooled:
+    /// once a vertex there stands as a pool of its own, every vertex after
+    /// it does too, and the pass stops.
+    fn pool(&mut self, s: f64, sign: f64, unchanged: usize) -> Option<usize> {
         let mut pools: Vec<Pool> = Vec::new();
-        let mut pooled = false;
+        let mut end = None;
         for k in 0..self.x.len() {
             let w = self.vertex_weight(k);
             let g = sign * self.y[k] + s * self.x[k];
@@ -117,24 +192,35 @@ impl Ground {
                 let mut last = pools.pop().expect("a pool");
                 last.merge(&pool);
                 pool = last;
-                pooled = true;
+                end = Some(k + 1);
             }
+            let alone = pool.len == 1;
             pools.push(pool);
+            if alone && k >= unchanged {
+                break;
+            }
         }
         for p in pools.iter().filter(|p| p.len > 1) {
             for k in p.start..p.start + p.len {
                 self.y[k] = sign * (p.mean - s * self.x[k]);
             }
         }
-        pooled
+        end
     }
 
-    /// Moves the soil the pieces lost (their areas were `before`) onto the
-    /// pieces that gained, within each run of changed pieces (one
-    /// avalanche), mixed: each gaining piece's γ and ut become the
-    /// mass-weighted mean of its soil and the deposit.
-    fn deposit(&mut self, before: &[f64]) {
-        let change: Vec<f64> = (0..before.len())
+    /// Moves the soil the pieces lost onto the pieces that gained, within
+    /// each run of changed pieces (one avalanche), mixed: each gaining
+    /// piece's γ and ut become the mass-weighted mean of its soil and the
+    /// deposit. `before` are the heights before the pools, which changed
+    /// no vertex from `end` on.
+    fn deposit(&mut self, before: &[f64], end: usize) {
+        let pieces = end.min(self.pieces());
+        let area_before = |k: usize| {
+            let depth = |i: usize| before[i] - self.floor;
+            0.5 * (self.x[k + 1] - self.x[k]) * (depth(k) + depth(k + 1))
+        };
+        let before: Vec<f64> = (0..pieces).map(area_before).collect();
+        let change: Vec<f64> = (0..pieces)
             .map(|k| self.piece_area(k) - before[k])
             .collect();
         let mut k = 0;
@@ -144,7 +230,7 @@ impl Ground {
                 continue;
             }
             let end = run_end(&change, k);
-            self.deposit_run(k..end, &change, before);
+            self.deposit_run(k..end, &change, &before);
             k = end;
         }
     }
@@ -195,7 +281,39 @@ fn run_end(change: &[f64], start: usize) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::run_end;
+    use super::{run_end, Ground, Settled};
+
+    #[test]
+    fn a_relax_after_the_settled_ground_is_a_full_relax_bit_for_bit() {
+        // Soil heaped near the face increment after increment, now and
+        // then a dent far ahead (as a spill makes) and a steep piece cut
+        // into vertices: the cached relax pools only what changed and
+        // ends on the same ground, state and all, as pooling every vertex.
+        let mut state: u64 = 7;
+        let mut draw = move || {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut cached = Ground::flat(20.0, 0.1, 1.0, 1.0);
+        let mut settled = Settled::default();
+        let slopes = (0.7, 0.7);
+        let mut pooled = 0;
+        for i in 0..300 {
+            let at = 1 + (draw() * 15.0) as usize;
+            cached.y[at] += 0.5 * draw();
+            cached.accumulated_shear[at] = draw();
+            if i % 37 == 0 {
+                let far = 100 + (draw() * 80.0) as usize;
+                cached.y[far] -= 0.3 * draw();
+            }
+            let mut full = cached.clone();
+            let moved = cached.relax_after(slopes, 0.1, &mut settled);
+            assert_eq!(moved, full.relax(slopes, 0.1), "increment {i}");
+            assert_eq!(cached, full, "increment {i}");
+            pooled += usize::from(moved);
+        }
+        assert!(pooled > 100, "{pooled} increments pooled");
+    }
 
     #[test]
     fn a_run_ends_where_its_area_balances_not_at_a_piece_soil_ran_through() {

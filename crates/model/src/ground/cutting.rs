@@ -11,6 +11,7 @@
 //! in a bin or not, under every band rule, the sampled search or the
 //! exhaustive one (docs/model.md §1.2, §19).
 
+use super::avalanche::Settled;
 use super::midpoint::{half_slip, midpoint_force};
 use super::motion::Cut;
 use super::scan::{Pick, Scan};
@@ -39,6 +40,8 @@ pub struct Cutting {
     rake: Rake,
     ground: Ground,
     search: VertexSearch,
+    /// The ground as the last avalanche left it (`Settled`, a cache).
+    settled: Settled,
     /// Soil spilled around the edges of a blade of finite width, a field
     /// at fixed x every `run.vertex_spacing` (the vertices move).
     side: SideHeaps,
@@ -76,6 +79,7 @@ impl Cutting {
             rake: Rake::new(case.blade.rake),
             ground,
             search,
+            settled: Settled::default(),
             side,
             per_blade: case.blade.width.unwrap_or(1.0),
         }
@@ -285,7 +289,8 @@ impl Discretisation for Cutting {
         // not a sum of n increments' rounding.
         self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
         let slopes = self.rake.repose_slopes(c.soil.repose.to_radians().tan());
-        self.ground.relax(slopes, c.run.vertex_spacing);
+        self.ground
+            .relax_after(slopes, c.run.vertex_spacing, &mut self.settled);
         if c.run.merge_tolerance > 0.0 {
             let quiet = Quiet {
                 tolerance: c.run.merge_tolerance,
