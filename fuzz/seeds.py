@@ -118,6 +118,14 @@ def override_seeds():
         "1choices.band_shear=by-position\0choices.unit_weight=per-node-formula",
         "1soil.dilation={initial=0,peak=0,residual=0}",
         "1soil.dilation.peak=45",
+        # Soil that never softens: the vertex ground whose search compares
+        # the bands' midpoint forces (M51a), raked, steered, wide, in a bin.
+        "1soil.friction.residual=35",
+        "1soil.friction.residual=35\0blade.rake=60",
+        "1soil.friction.residual=35\0blade.depth_path=[[0, 10], [20, 20]]",
+        "1soil.friction.residual=35\0blade.width=30",
+        "1soil.friction.residual=35\0bin.length=60",
+        "1soil.friction.residual=35\0run.time_scheme=explicit",
         "2blade.depth_path=[[0, 10], [40, 20], [30, 5]]",
         "2run.increment=0.2",
         "3blade.width=1",

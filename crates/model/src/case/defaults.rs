@@ -26,9 +26,10 @@ pub const ORIGINAL_INCREMENTS_PER_DEPTH: f64 = 250.0;
 /// `run.increment` of the refined model in soil that never softens, when a
 /// case does not give it: v0 = d / 500, with the coarse grid of
 /// `COARSE_NODES_PER_DEPTH`, is accurate by the ensemble rule on Fig. 8b
-/// (`cases/paper/fig8b.toml`; worst window / tolerance 0.32, against 0.19
-/// at d/1250 on the same grid; `docs/studies/ensemble-accuracy/`, rows
-/// "coarse d/500, h d/25" and "defaults").
+/// (`cases/paper/fig8b.toml`; worst window / tolerance 0.31, against 0.15
+/// at d/1250 on the same grid; `docs/studies/ensemble-accuracy/`, row
+/// "coarse d/500, h d/25"). The node grid's default of the class, which
+/// defaults to the vertex ground (`default_vertex_spacing`).
 pub const NON_SOFTENING_INCREMENTS_PER_DEPTH: f64 = 500.0;
 
 /// `run.increment` of the refined model in soil that softens, when a case
@@ -37,8 +38,9 @@ pub const NON_SOFTENING_INCREMENTS_PER_DEPTH: f64 = 500.0;
 /// that is accurate by the ensemble rule on Fig. 5, Table 1 S and HS
 /// against the reference grid's ensemble at d/2000 with the exhaustive
 /// search under the face friction that ships (`mobilised`). Fig. 5 decides
-/// it (0.97 of its tolerance at d/1250, 1.81 at d/1000;
-/// `docs/studies/ensemble-accuracy/`).
+/// it (0.25 of its tolerance at d/1250, 1.10 at d/1000;
+/// `docs/studies/ensemble-accuracy/`). The node grid's default of the
+/// class, which defaults to the vertex ground.
 pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 
 /// `run.increment` on the vertex ground when a case does not give it:
@@ -46,19 +48,21 @@ pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 /// force (`default_time_scheme`) is accurate by the ensemble rule on every
 /// paper case of the refined model in softening soil against the
 /// reference grid's ensemble at d/2000 (worst window / tolerance: Fig. 5
-/// 0.73, Table 1 HS 0.36, Table 1 S 0.06; with vertices d/100 apart 0.77,
-/// 0.33, 0.15; `docs/studies/vertex-ground/`). Of d/250, d/300, d/350,
+/// 0.63, Table 1 HS 0.53, Table 1 S 0.12; with vertices d/100 apart 0.94,
+/// 0.51, 0.23; `docs/studies/vertex-ground/`). Of d/250, d/300, d/350,
 /// d/400 and d/500 it is the coarsest that passes at both vertex
-/// spacings: d/250 fails Fig. 5 (2.61) and Table 1 HS (1.21), d/300 Fig. 5
-/// with vertices d/100 apart. The explicit rule needs d/500 (Fig. 5 2.63
-/// at d/250).
+/// spacings: d/250 fails Fig. 5 (1.30) and Table 1 HS (1.04), d/300 Fig. 5
+/// (1.13, and 1.44 with vertices d/100 apart). The explicit rule at d/250
+/// passes the paper cases but not Fig. 5 in a bin (1.24) or raked (1.00;
+/// docs/model.md §19).
 pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
 
 /// Vertex spacings per blade depth of the default vertex ground: h = d/50
-/// is accurate on every case of its class, where h = d/25 is not (Table 1
-/// S 1.28 at the default d/350 with the midpoint force; Fig. 5 1.48 at
-/// d/1250 explicit) and d/100 is no more accurate (Fig. 5 0.77 against
-/// 0.73 at d/350; `docs/studies/vertex-ground/`).
+/// is accurate on every case of its class, where h = d/25 stands at the
+/// edge at the default d/350 with the midpoint force (Table 1 S 0.94, HS
+/// 0.94, Fig. 5 0.99) and fails under the explicit rule (Fig. 5 2.29 at
+/// d/1250), and d/100 is no more accurate (Fig. 5 0.94 against 0.63 at
+/// d/350; `docs/studies/vertex-ground/`).
 pub const VERTICES_PER_DEPTH: f64 = 50.0;
 
 /// Vertex spacings per blade depth of the default vertex ground under a
@@ -133,9 +137,10 @@ pub fn default_increments_per_depth(model: Model, soil: &Soil) -> f64 {
 /// `run.increment` on the vertex ground under the explicit rule (the sign
 /// rule of the face friction's, or `run.time_scheme = "explicit"`
 /// given) when a case does not give it: v0 = d / 500 is accurate by the
-/// ensemble rule on every paper case of its class (worst window /
-/// tolerance: Fig. 5 0.89, Table 1 HS 0.30, Table 1 S 0.22), d/250 not on
-/// Fig. 5 (2.63; `docs/studies/vertex-ground/`).
+/// ensemble rule on every paper case of the refined model (worst window /
+/// tolerance: Fig. 5 0.74, Table 1 HS 0.38, Table 1 S 0.30, Fig. 8b 0.61),
+/// d/250 not on Fig. 8b (1.47) and only at the edge on Fig. 5 (0.96;
+/// `docs/studies/vertex-ground/`).
 pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 
 /// `run.increment` when a case does not give it: d over
