@@ -291,7 +291,9 @@ mod tests {
         // ends on the same ground, state and all, as pooling every vertex.
         let mut state: u64 = 7;
         let mut draw = move || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
         let mut cached = Ground::flat(20.0, 0.1, 1.0, 1.0);
