@@ -330,13 +330,7 @@ mod tests {
     fn cutting_pieces_in_one_pass_is_splitting_them_one_by_one() {
         // The pieces cut as `split_at` cut them, from the far end of the
         // ground and of each piece: the same vertices, heights and states.
-        let mut state: u64 = 3;
-        let mut draw = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut draw = super::super::test_draws(3);
         for case in 0..100 {
             let mut g = Ground::flat(10.0, 0.2 + draw(), 1.0, 1.0);
             for k in 0..g.x.len() {
@@ -366,13 +360,7 @@ mod tests {
         // then a dent far ahead (as a spill makes) and a steep piece cut
         // into vertices: the cached relax pools only what changed and
         // ends on the same ground, state and all, as pooling every vertex.
-        let mut state: u64 = 7;
-        let mut draw = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut draw = super::super::test_draws(7);
         let mut cached = Ground::flat(20.0, 0.1, 1.0, 1.0);
         let mut settled = Settled::default();
         let slopes = (0.7, 0.7);

@@ -158,13 +158,7 @@ mod tests {
 
     #[test]
     fn one_pass_removes_what_one_at_a_time_removed_bit_for_bit() {
-        let mut state: u64 = 11;
-        let mut draw = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut draw = super::super::test_draws(11);
         for case in 0..200 {
             let mut g = Ground::flat(10.0, 0.05 + 0.3 * draw(), 1.0, 1.0);
             for k in 1..g.x.len() - 1 {
