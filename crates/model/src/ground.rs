@@ -234,6 +234,19 @@ impl Ground {
     }
 }
 
+/// A reproducible stream of numbers in [0, 1) for the tests of the
+/// ground's operations (a linear congruential generator).
+#[cfg(test)]
+pub(crate) fn test_draws(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -276,18 +289,5 @@ mod tests {
         assert!((g.mass() - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         assert_eq!(g.piece_at(10.0), g.pieces() - 1);
         assert_eq!(g.piece_at(0.0), 0);
-    }
-}
-
-/// A reproducible stream of numbers in [0, 1) for the tests of the
-/// ground's operations (a linear congruential generator).
-#[cfg(test)]
-pub(crate) fn test_draws(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
     }
 }
