@@ -116,7 +116,11 @@ class Case:
         ``case["soil.repose"]`` (a default filled in if not given)."""
         value = self._native.get(key)
         if value is None:
-            raise KeyError(key)
+            raise KeyError(
+                f"{key}: not in this case as resolved (no such key, or one that it"
+                " does not use, as run.node_spacing on the vertex ground; the keys"
+                " are in docs/guide/case-keys.md)"
+            )
         return value
 
     @property

@@ -30,6 +30,14 @@ def test_resolved_fills_the_defaults(original):
     assert resolved.to_dict()["soil"]["cohesion"] == 0.0
 
 
+def test_a_key_the_resolved_case_lacks_is_a_key_error_that_says_why(refined):
+    assert refined["run.vertex_spacing"] > 0
+    with pytest.raises(KeyError, match="run.node_spacing: not in this case as resolved"):
+        refined["run.node_spacing"]
+    with pytest.raises(KeyError, match="soil.colour"):
+        refined["soil.colour"]
+
+
 def test_set_returns_a_new_case_as_the_cli_reads_it(cli, original, tmp_path):
     changed = original.set("soil.friction.peak", 36).set("run.increment", 0.5)
     assert original["soil.friction.peak"] == 35.0, "a case never changes"
