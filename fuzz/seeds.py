@@ -29,6 +29,9 @@ def case_seeds():
         ("increment = 0.2", "increment = 1e-300"),
         ("increment = 0.2", "increment = 0.2\nnode_spacing = 0.6"),
         ("increment = 0.2", "increment = 0.2\nnode_spacing = 0.3"),
+        # More vertices than the fuzzer creates a simulation for (1e6) and
+        # fewer than a case may hold (5e7): parsed and validated only.
+        ("increment = 0.2", "increment = 0.2\nvertex_spacing = 0.0001"),
         ("depth = 20.0", "depth = 1e9"),
         ("depth = 20.0", "depth = 0"),
         ("depth = 20.0", "depth = 20\nrake = 19.9"),

@@ -45,7 +45,8 @@ pub const RUN_STEPS: usize = 3;
 /// The shipped paper cases (6 502 nodes, 500 per depth) are within both.
 pub const RUN_NODES: f64 = 20_000.0;
 
-/// The finest grid that is stepped: nodes per deepest tip depth.
+/// The finest grid that is stepped: nodes (or vertices) per deepest tip
+/// depth.
 pub const RUN_NODES_PER_DEPTH: f64 = 600.0;
 
 /// The largest case a [`Simulation`] is created for, in surface nodes at
@@ -189,7 +190,7 @@ pub fn check_accepted(loaded: &LoadedCase) -> Outcome {
         initial.is_finite() && initial > 0.0,
         "initial mass {initial}"
     );
-    if nodes > RUN_NODES || case.deepest() / case.run.node_spacing > RUN_NODES_PER_DEPTH {
+    if nodes > RUN_NODES || case.deepest() / case.ground_spacing() > RUN_NODES_PER_DEPTH {
         return Outcome::Created;
     }
     // The paper's unit weight node by node drifts the mass by design

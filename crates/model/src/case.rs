@@ -332,14 +332,27 @@ impl Case {
         Some((length / self.run.node_spacing * (1.0 + 1e-12)).floor() as usize)
     }
 
-    /// Surface nodes at the start: the travel plus `INITIAL_REACH_DEPTHS`,
-    /// N0 = ceil((travel + 8 d_max) / Δx) + 2 (M30). With an end wall, no
-    /// more than the nodes up to it.
+    /// The spacing of the ground's points: `run.vertex_spacing` on the
+    /// vertex ground, else `run.node_spacing`.
+    pub fn ground_spacing(&self) -> f64 {
+        if self.run.vertex_spacing > 0.0 {
+            self.run.vertex_spacing
+        } else {
+            self.run.node_spacing
+        }
+    }
+
+    /// Points of the ground at the start (nodes, or vertices on the vertex
+    /// ground, `ground_spacing` apart): the travel plus
+    /// `INITIAL_REACH_DEPTHS`, N0 = ceil((travel + 8 d_max) / Δx) + 2 (M30).
+    /// With an end wall, no more than the points up to it.
     pub fn initial_nodes(&self) -> f64 {
+        let spacing = self.ground_spacing();
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
-        let nodes = (reach / self.run.node_spacing).ceil() + 2.0;
-        self.wall_node()
-            .map_or(nodes, |wall| nodes.min(wall as f64 + 1.0))
+        let nodes = (reach / spacing).ceil() + 2.0;
+        self.bin.length.map_or(nodes, |wall| {
+            nodes.min((wall / spacing * (1.0 + 1e-12)).floor() + 1.0)
+        })
     }
 
     /// The tip depth at blade displacement u (`blade.depth_path`, linear

@@ -6,6 +6,7 @@
 use crate::common;
 
 use common::original;
+use soilcut_model::case::MAX_NODES;
 use soilcut_model::{Case, Simulation, MAGNITUDE};
 
 const LEAST: f64 = MAGNITUDE[0];
@@ -112,4 +113,28 @@ fn cases_at_the_magnitudes_run_with_finite_forces() {
     // greatest cohesion, and the reverse.
     runs_finite(&scaled(GREATEST, LEAST, GREATEST, None));
     runs_finite(&scaled(100.0 * LEAST, GREATEST, LEAST, Some(GREATEST)));
+}
+
+#[test]
+fn a_ground_of_more_points_than_the_bound_is_refused_naming_its_spacing() {
+    // A vertex spacing of 1e-12 asked for 1.8e14 vertices (a panic on
+    // allocation); it is refused naming `run.vertex_spacing`, as too fine
+    // a node grid is refused naming `run.node_spacing`.
+    let too_fine = |case: &Case, key: &str| {
+        let e = case.validate().expect_err(key);
+        assert_eq!(e.key, key, "{e}");
+        assert!(e.message.contains("too fine"), "{e}");
+    };
+    let mut vertices = original(1.0, 250.0);
+    vertices.run.vertex_spacing = 1e-12;
+    too_fine(&vertices, "run.vertex_spacing");
+    let mut nodes = original(1.0, 250.0);
+    nodes.run.vertex_spacing = 0.0;
+    nodes.run.increment = 1e-7;
+    nodes.run.node_spacing = 1e-7;
+    too_fine(&nodes, "run.node_spacing");
+    // Just inside the bound, the vertex ground is taken.
+    let reach = vertices.run.travel + 8.0 * vertices.blade.depth;
+    vertices.run.vertex_spacing = reach / (0.9 * MAX_NODES);
+    assert!(vertices.validate().is_ok());
 }

@@ -396,10 +396,15 @@ impl Case {
         self.validate_merge_tolerance()?;
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
+            let (key, points) = if self.run.vertex_spacing > 0.0 {
+                ("run.vertex_spacing", "vertices")
+            } else {
+                ("run.node_spacing", "nodes")
+            };
             return Err(CaseError::new(
-                "run.node_spacing",
+                key,
                 format!(
-                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / run.node_spacing must be <= {MAX_NODES:e} nodes (got {nodes:.3e})"
+                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / {key} must be <= {MAX_NODES:e} {points} (got {nodes:.3e})"
                 ),
             ));
         }
