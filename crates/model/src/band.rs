@@ -55,6 +55,22 @@ impl BandMotion {
         })
     }
 
+    /// The motion of a band of width dB > 0 (`banded`) at (tan β', tan β)
+    /// with dilation ψ (M35), or, where dB = 0 or β + ψ ≥ 90°, its slip
+    /// line's (M15); with whether it is the band's. The increment moves the
+    /// soil by it, and the midpoint force takes half its slip.
+    pub(crate) fn of(
+        banded: bool,
+        (grid_slope, t, psi): (f64, f64, f64),
+        rake: &Rake,
+        dx: f64,
+    ) -> (Self, bool) {
+        match Self::new((t, psi), rake, dx) {
+            Some(motion) if banded => (motion, true),
+            _ => (Self::slip_line((grid_slope, t), rake, dx), false),
+        }
+    }
+
     /// The slip line's motion: the block slides along it, rise v0 tan β
     /// on the grid, Δut = v0 / cos β (M15; `Rake` for a raked blade, M36).
     pub(crate) fn slip_line((grid_slope, t): (f64, f64), rake: &Rake, v0: f64) -> Self {

@@ -328,8 +328,14 @@ impl Case {
     /// The last node of the ground: the node at or before the end wall
     /// (`bin.length`), if there is one.
     pub fn wall_node(&self) -> Option<usize> {
+        self.wall_point(self.run.node_spacing)
+    }
+
+    /// The last point, `spacing` apart from x = 0, at or before the end
+    /// wall (round-off of the quotient forgiven), if there is a wall.
+    fn wall_point(&self, spacing: f64) -> Option<usize> {
         let length = self.bin.length?;
-        Some((length / self.run.node_spacing * (1.0 + 1e-12)).floor() as usize)
+        Some((length / spacing * (1.0 + 1e-12)).floor() as usize)
     }
 
     /// The spacing of the ground's points: `run.vertex_spacing` on the
@@ -350,9 +356,8 @@ impl Case {
         let spacing = self.ground_spacing();
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
         let nodes = (reach / spacing).ceil() + 2.0;
-        self.bin.length.map_or(nodes, |wall| {
-            nodes.min((wall / spacing * (1.0 + 1e-12)).floor() + 1.0)
-        })
+        self.wall_point(spacing)
+            .map_or(nodes, |wall| nodes.min(wall as f64 + 1.0))
     }
 
     /// The tip depth at blade displacement u (`blade.depth_path`, linear

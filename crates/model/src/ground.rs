@@ -216,7 +216,13 @@ impl Ground {
     /// Area of the columns of piece k above the floor: the trapezoid
     /// ½ (x_{k+1} − x_k)(y_k + y_{k+1} − 2 y_floor), exact on a straight piece.
     pub fn piece_area(&self, k: usize) -> f64 {
-        let depth = |i: usize| self.y[i] - self.floor;
+        self.piece_area_at(&self.y, k)
+    }
+
+    /// `piece_area` of piece k with the vertices at heights `y` (the
+    /// heights an avalanche started from).
+    fn piece_area_at(&self, y: &[f64], k: usize) -> f64 {
+        let depth = |i: usize| y[i] - self.floor;
         0.5 * (self.x[k + 1] - self.x[k]) * (depth(k) + depth(k + 1))
     }
 

@@ -82,7 +82,6 @@ impl Ground {
     /// soil moved. The pieces next to a steep one are first cut to at most
     /// `spacing`, so that the soil that runs down heaps where it stops,
     /// not over a long piece.
-    ///
     pub fn relax(&mut self, slopes: (f64, f64), spacing: f64) -> bool {
         self.relax_after(slopes, spacing, &mut Settled::default())
     }
@@ -258,11 +257,7 @@ impl Ground {
     /// no vertex from `end` on.
     fn deposit(&mut self, before: &[f64], end: usize) {
         let pieces = end.min(self.pieces());
-        let area_before = |k: usize| {
-            let depth = |i: usize| before[i] - self.floor;
-            0.5 * (self.x[k + 1] - self.x[k]) * (depth(k) + depth(k + 1))
-        };
-        let before: Vec<f64> = (0..pieces).map(area_before).collect();
+        let before: Vec<f64> = (0..pieces).map(|k| self.piece_area_at(before, k)).collect();
         let change: Vec<f64> = (0..pieces)
             .map(|k| self.piece_area(k) - before[k])
             .collect();

@@ -171,14 +171,14 @@ impl Cutting {
             band_shear: c.choices.band_shear,
             unit_weight: c.choices.unit_weight,
         };
-        match BandMotion::new((t, pick.angles.dilation), &self.rake, v0) {
-            Some(m) if line.thickness > 0.0 => Cut {
-                rise: m.rise,
-                slip: m.slip,
-                tan_psi: m.tan_psi,
-                ..line
-            },
-            _ => slip_line(&line, (pick.grid_slope, t), &self.rake),
+        let band = (pick.grid_slope, t, pick.angles.dilation);
+        let (motion, banded) = BandMotion::of(line.thickness > 0.0, band, &self.rake, v0);
+        Cut {
+            thickness: if banded { line.thickness } else { 0.0 },
+            rise: motion.rise,
+            slip: motion.slip,
+            tan_psi: motion.tan_psi,
+            ..line
         }
     }
 }

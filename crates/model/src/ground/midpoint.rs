@@ -34,11 +34,8 @@ use crate::laws::BandAngles;
 /// (M18, M36; a slip line's M15 where dB = 0 or β + ψ ≥ 90°), as the
 /// motion of `pick` will shear its band.
 pub(crate) fn half_slip(scan: &Scan, pick: &Pick) -> f64 {
-    let band = (pick.tan_beta, pick.angles.dilation);
-    let motion = match BandMotion::new(band, &scan.rake, scan.advance) {
-        Some(motion) if scan.band_width > 0.0 => motion,
-        _ => BandMotion::slip_line((pick.grid_slope, pick.tan_beta), &scan.rake, scan.advance),
-    };
+    let band = (pick.grid_slope, pick.tan_beta, pick.angles.dilation);
+    let (motion, _) = BandMotion::of(scan.band_width > 0.0, band, &scan.rake, scan.advance);
     0.5 * motion.slip
 }
 
