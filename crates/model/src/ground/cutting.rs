@@ -132,6 +132,7 @@ impl Cutting {
             depth: tip,
             band_width,
             sample: sample_spacing(c),
+            coarsens_flat_bands: band_width > 0.0 && c.run.samples_per_band > 0.0,
             resolution: c.run.increment,
             advance: c.run.increment,
             snap: 0.5 * c.run.vertex_spacing,

@@ -21,6 +21,10 @@ pub(crate) struct Scan<'a> {
     pub(crate) band_width: f64,
     /// Spacing of the first stage's samples along the ground (length).
     pub(crate) sample: f64,
+    /// Whether the first stage samples flat bands coarser (M52,
+    /// `search::far_spacing`): the sampled search (K > 0) of a band with
+    /// a width.
+    pub(crate) coarsens_flat_bands: bool,
     /// Width at which a local minimum's bracket stops narrowing (length).
     pub(crate) resolution: f64,
     /// v0: the block's advance in the increment (length).

@@ -42,6 +42,12 @@ const SNAP_SLACK: f64 = 1e-3;
 /// Every LEAD-th sample is evaluated first: a bar near the least before
 /// the rest (`fill_samples`).
 const LEAD: usize = 8;
+/// tan 10°: a band emerging on a piece seen from the tip at a flatter
+/// angle has a footprint of at least dB / tan β along the ground, and the
+/// search samples it coarser in proportion (M52, `far_spacing`); at 15° or
+/// 20° Fig. 5 in an 8 d bin fails the ensemble rule (6.6 and 23.6 times
+/// its tolerance: docs/model.md §19).
+const FLAT_BAND: f64 = 0.176_326_980_708_464_97;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
 
@@ -80,6 +86,8 @@ pub(crate) struct VertexSearch {
     hints: [usize; 2],
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
+    /// Where the next sample on a flat band's piece lies (M52).
+    next_sample: f64,
 }
 
 /// What the prefix sums count below the line at the face where the face
@@ -103,6 +111,22 @@ fn air_at_face(ground: &Ground, (k, x, y): (usize, f64, f64), (d, grid): (f64, f
     };
     let g_end = (y_end + d - grid * (end - x0)).max(0.0);
     ground.unit_weight[0] * 0.5 * (end - x0) * g0 * g0 / (g_end - g0)
+}
+
+/// The first stage's spacing on piece k if a band there is flatter than
+/// `FLAT_BAND` (M52): dB / K times tan 10° / tan β, tan β the slope from
+/// the tip to the piece's start in the ground's coordinates, so that a
+/// band's footprint, dB / tan β along flat ground, holds K / tan 10°
+/// samples however flat the band; `None` (the spacing `scan.sample`, a
+/// sample at the vertex) on steeper pieces, for a slip line (whose
+/// strength jumps at every vertex, no footprint averaging it) and for the
+/// exhaustive search.
+fn far_spacing(ground: &Ground, scan: &Scan, k: usize) -> Option<f64> {
+    if k == 0 || !scan.coarsens_flat_bands {
+        return None;
+    }
+    let t = (ground.y[k] + scan.depth) / (ground.x[k] - ground.x[0]);
+    (t > 0.0 && t < FLAT_BAND).then(|| scan.sample * FLAT_BAND / t)
 }
 
 /// Is handed every candidate the first stage evaluates, which then prunes
@@ -225,9 +249,12 @@ impl VertexSearch {
     }
 
     /// The first stage on piece k: candidates from x_k (not the face) at
-    /// spacing `scan.sample`, of which every `stride`-th along the ground
-    /// is evaluated now (the lead) and the rest by `fill_samples`; each
-    /// handed to `observer` if there is one.
+    /// spacing `scan.sample`, or, on a piece seen from the tip flatter
+    /// than `FLAT_BAND` where the search coarsens, from where the last
+    /// piece's samples stopped at the spacing `far_spacing` (M52); of
+    /// which every `stride`-th along the ground is evaluated now (the
+    /// lead) and the rest by `fill_samples`; each handed to `observer` if
+    /// there is one.
     fn sample_piece(
         &mut self,
         ground: &Ground,
@@ -237,16 +264,39 @@ impl VertexSearch {
         observer: &mut Option<PickObserver>,
     ) {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
+        if let Some(spacing) = far_spacing(ground, scan, k) {
+            let mut x = self.next_sample.max(xa);
+            while x < xb {
+                self.push_sample(ground, scan, (k, x, stride), best, observer);
+                x += spacing;
+            }
+            self.next_sample = x;
+            return;
+        }
         let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
         for i in usize::from(k == 0)..n {
             let x = xa + (xb - xa) * i as f64 / n as f64;
-            let force = if self.samples.len().is_multiple_of(stride) {
-                self.sample(ground, scan, (k, x), best, observer)
-            } else {
-                f64::NAN
-            };
-            self.samples.push(Sample { x, piece: k, force });
+            self.push_sample(ground, scan, (k, x, stride), best, observer);
         }
+        self.next_sample = xb;
+    }
+
+    /// A first-stage candidate at x on piece k: evaluated now if it is
+    /// the lead's (every `stride`-th), else left for `fill_samples`.
+    fn push_sample(
+        &mut self,
+        ground: &Ground,
+        scan: &Scan,
+        (k, x, stride): (usize, f64, usize),
+        best: &mut Option<Pick>,
+        observer: &mut Option<PickObserver>,
+    ) {
+        let force = if self.samples.len().is_multiple_of(stride) {
+            self.sample(ground, scan, (k, x), best, observer)
+        } else {
+            f64::NAN
+        };
+        self.samples.push(Sample { x, piece: k, force });
     }
 
     /// The samples the lead left, in order along the ground, against the
