@@ -85,6 +85,19 @@ class Step:
     def mass_spilled(self) -> float:
         """Weight of the soil spilled around the blade's edges so far (0 in
         plane strain; units of ``mass``)."""
+    @property
+    def weight(self) -> float:
+        """W, the weight of the chosen mechanism's block at the start of the
+        increment (units of ``mass``)."""
+    @property
+    def force_factor(self) -> float:
+        """P/W, both per unit width: Eq. (1)'s factor without cohesion,
+        adhesion, surcharge or side crescents (dimensionless)."""
+    @property
+    def face_friction_deg(self) -> float:
+        """The face force's angle from the face's normal, the wall friction
+        the block mobilises (degrees; positive: the block rises along the
+        face)."""
     def __getattr__(self, name: str) -> Any: ...
     def __dir__(self) -> list[str]: ...
     def __repr__(self) -> str: ...

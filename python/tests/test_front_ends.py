@@ -18,7 +18,8 @@ import soilcut
 
 NAMES = ["step"] + (
     "u u_over_d force force_norm force_h force_v beta_deg x_emergence mass y_emergence "
-    "friction_deg slip dilation_deg dilation_area depth mass_spilled"
+    "friction_deg slip dilation_deg dilation_area depth mass_spilled weight force_factor "
+    "face_friction_deg"
 ).split()
 
 

@@ -163,6 +163,22 @@ typedef struct SoilcutStep {
    * width so far (units of `mass`; 0 in plane strain).
    */
   double mass_spilled;
+  /**
+   * W, the weight of the chosen mechanism's block at the start of the
+   * increment (units of `mass`).
+   */
+  double weight;
+  /**
+   * P* / W, both per unit width: Eq. (1)'s factor without cohesion,
+   * adhesion, surcharge or side crescents (dimensionless).
+   */
+  double force_factor;
+  /**
+   * The face force's angle from the face's normal, the wall friction
+   * the block mobilises (degrees; positive: the block rises along the
+   * face).
+   */
+  double face_friction_deg;
 } SoilcutStep;
 
 /**

@@ -61,6 +61,16 @@ pub struct SoilcutStep {
     /// Weight of the soil spilled around the edges of a blade of finite
     /// width so far (units of `mass`; 0 in plane strain).
     pub mass_spilled: f64,
+    /// W, the weight of the chosen mechanism's block at the start of the
+    /// increment (units of `mass`).
+    pub weight: f64,
+    /// P* / W, both per unit width: Eq. (1)'s factor without cohesion,
+    /// adhesion, surcharge or side crescents (dimensionless).
+    pub force_factor: f64,
+    /// The face force's angle from the face's normal, the wall friction
+    /// the block mobilises (degrees; positive: the block rises along the
+    /// face).
+    pub face_friction_deg: f64,
 }
 
 impl SoilcutStep {

@@ -10,7 +10,7 @@ use soilcut_model::StepRecord;
 pub type HistoryColumn = (&'static str, fn(&StepRecord) -> f64);
 
 /// The columns of `history.csv`, in order.
-pub const HISTORY: [HistoryColumn; 17] = [
+pub const HISTORY: [HistoryColumn; 20] = [
     ("step", |r| r.step as f64),
     ("u", |r| r.u),
     ("u_over_d", |r| r.u_over_d),
@@ -28,6 +28,9 @@ pub const HISTORY: [HistoryColumn; 17] = [
     ("dilation_area", |r| r.dilation_area),
     ("depth", |r| r.depth),
     ("mass_spilled", |r| r.mass_spilled),
+    ("weight", |r| r.weight),
+    ("force_factor", |r| r.force_factor),
+    ("face_friction_deg", |r| r.face_friction_deg),
 ];
 
 /// Columns of `history.csv`, in order: the names of [`HISTORY`] joined by

@@ -3,6 +3,7 @@
 //! `cargo test -p soilcut-io --test integration FILE::`.
 
 mod golden;
+mod mechanism_columns;
 mod shipped_cases;
 mod snapshots;
 mod tables;

@@ -47,6 +47,19 @@ pub struct StepRecord {
     /// Weight of soil that has spilled around the blade's edges into the
     /// side heaps (0 in plane strain): `mass + mass_spilled` is conserved.
     pub mass_spilled: f64,
+    /// W, the weight of the chosen mechanism's block (the soil between the
+    /// face, the band's lower boundary and the surface, at the start of
+    /// the increment): per unit width, or per blade (W w) for a blade of
+    /// finite width.
+    pub weight: f64,
+    /// P* / W, both per unit width: Eq. (1)'s factor
+    /// sin(β + φ) / cos(β + φ + ω) where the case has no cohesion,
+    /// adhesion, surcharge or side crescents (those add to P, not to W).
+    pub force_factor: f64,
+    /// The face force's angle from the face's normal, m φw, degrees: the
+    /// wall friction the block mobilises (positive: the block rises along
+    /// the face; ω = m φw + α − 90° from the horizontal, (M41)).
+    pub face_friction_deg: f64,
 }
 
 /// Why an increment could not be computed.

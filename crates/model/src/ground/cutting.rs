@@ -315,10 +315,8 @@ impl Discretisation for Cutting {
             self.ground
                 .spill(&mut self.side, edges, c.run.vertex_spacing);
         }
-        let omega = at
-            .laws
-            .face
-            .angle(face.mobilisation(pick.tan_beta, pick.angles.dilation));
+        let mobilisation = face.mobilisation(pick.tan_beta, pick.angles.dilation);
+        let omega = at.laws.face.angle(mobilisation);
         let force = pick.force * self.per_blade;
         Ok(StepRecord {
             step: at.done + 1,
@@ -338,6 +336,9 @@ impl Discretisation for Cutting {
             dilation_area: moved.dilation_area,
             depth: tip,
             mass_spilled: self.mass_spilled(),
+            weight: pick.weight * self.per_blade,
+            force_factor: pick.force / pick.weight,
+            face_friction_deg: mobilisation * c.blade.wall_friction,
         })
     }
 }

@@ -330,10 +330,8 @@ impl Discretisation for NodeGrid {
         let x_emergence = self.rake.x(self.surface.x(choice.node), y_emergence, depth);
         let update = self.move_soil(at, &choice, (u, depth));
         self.relax(at, &update, choice.node);
-        let omega = at
-            .laws
-            .face
-            .angle(face.mobilisation(choice.tan_beta, choice.dilation));
+        let mobilisation = face.mobilisation(choice.tan_beta, choice.dilation);
+        let omega = at.laws.face.angle(mobilisation);
         let force = choice.force * self.per_blade;
         Ok(StepRecord {
             step: at.done + 1,
@@ -355,6 +353,9 @@ impl Discretisation for NodeGrid {
             dilation_area: update.dilation_area,
             mass: self.mass(),
             mass_spilled: self.mass_spilled(),
+            weight: choice.weight * self.per_blade,
+            force_factor: choice.force / choice.weight,
+            face_friction_deg: mobilisation * c.blade.wall_friction,
         })
     }
 }
