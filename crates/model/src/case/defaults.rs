@@ -48,11 +48,11 @@ pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 /// force (`default_time_scheme`) is accurate by the ensemble rule on every
 /// paper case of the refined model in softening soil against the
 /// reference grid's ensemble at d/2000 (worst window / tolerance: Fig. 5
-/// 0.63, Table 1 HS 0.53, Table 1 S 0.12; with vertices d/100 apart 0.94,
-/// 0.51, 0.23; `docs/studies/vertex-ground/`). Of d/250, d/300, d/350,
-/// d/400 and d/500 it is the coarsest that passes at both vertex
-/// spacings: d/250 fails Fig. 5 (1.30) and Table 1 HS (1.04), d/300 Fig. 5
-/// (1.13, and 1.44 with vertices d/100 apart). The explicit rule at d/250
+/// 0.44, Table 1 HS 0.45, Table 1 S 0.12; with vertices d/100 apart 0.90,
+/// 0.41, 0.23; `docs/studies/vertex-ground/`, with the flat bands of
+/// (M52)). Of d/250, d/300, d/350, d/400 and d/500 it is the coarsest that
+/// passes at both vertex spacings: d/250 fails Fig. 5 (1.80), d/300 Fig. 5
+/// (1.70, and 1.22 with vertices d/100 apart). The explicit rule at d/250
 /// passes the paper cases but not Fig. 5 in a bin (1.24) or raked (1.00;
 /// docs/model.md §19).
 pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
@@ -60,8 +60,8 @@ pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
 /// Vertex spacings per blade depth of the default vertex ground: h = d/50
 /// is accurate on every case of its class, where h = d/25 stands at the
 /// edge at the default d/350 with the midpoint force (Table 1 S 0.94, HS
-/// 0.94, Fig. 5 0.99) and fails under the explicit rule (Fig. 5 2.29 at
-/// d/1250), and d/100 is no more accurate (Fig. 5 0.94 against 0.63 at
+/// 0.79, Fig. 5 0.77) and fails under the explicit rule (Fig. 5 2.22 at
+/// d/1250), and d/100 is no more accurate (Fig. 5 0.90 against 0.44 at
 /// d/350; `docs/studies/vertex-ground/`).
 pub const VERTICES_PER_DEPTH: f64 = 50.0;
 
