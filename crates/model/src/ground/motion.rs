@@ -414,7 +414,11 @@ impl Ground {
         for k in 0..block_end {
             let (xa, xb) = (self.x[k], self.x[k + 1]);
             let total = self.piece_area(k);
-            first_old += before.x[first_old + 1..].partition_point(|&x| x <= xa);
+            // A linear walk, not a binary search: old and new pieces are
+            // about one to one, so the walk takes a step or two a piece.
+            while first_old + 1 < before.x.len() && before.x[first_old + 1] <= xa {
+                first_old += 1;
+            }
             let staying = before.weight_below(first_old, xa, xb, at_rest);
             let resting = 0.5 * (xb - xa) * (at_rest(xa) + at_rest(xb));
             let arriving = self.unit_weight[k] * (total - resting - gap * (xb - xa));
