@@ -16,8 +16,8 @@ pub const EXAMPLES: &str = "\
 Examples:
   soilcut bounds cases/paper/original.toml --at 1
       writes out/original-bounds/{bounds.csv,bounds.json,case.resolved.toml}
-  soilcut bounds cases/paper/table1-hs.toml --at 2 --mesh 12 --json
-  soilcut bounds cases/paper/fig5.toml --every 0.5 --floor soil --strength davis";
+  soilcut bounds cases/paper/table1-hs.toml --at 2 --mesh 12 --field slope --json
+  soilcut bounds cases/paper/fig5.toml --every 0.5 --floor soil --strength davis --field slope";
 
 #[derive(clap::Args)]
 pub struct BoundsArgs {
