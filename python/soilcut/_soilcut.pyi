@@ -277,5 +277,10 @@ def fit(
 ) -> dict[str, Any]: ...
 def landscape(case: CaseLike, at: float) -> tuple[float, dict[str, np.ndarray]]: ...
 def bounds(
-    case: CaseLike, at: float, mesh: int = 8, floor: str = "rigid", strength: str = "associated"
+    case: CaseLike,
+    at: float,
+    mesh: int = 8,
+    floor: str = "rigid",
+    strength: str = "associated",
+    field: str = "columns",
 ) -> tuple[dict[str, np.ndarray], str, str]: ...

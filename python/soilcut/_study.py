@@ -304,14 +304,17 @@ def bounds(
     mesh: int = 8,
     floor: str = "rigid",
     strength: str = "associated",
+    field: str = "columns",
 ) -> Bounds:
     """Lower and upper bounds (finite-element limit analysis) on the
     horizontal force the ground as it stands before the increment at u/d =
     ``at`` can carry, beside soilcut's force of that increment, as
     ``soilcut bounds --at`` computes them: ``mesh`` N in [1, 64], ``floor``
     "rigid" (soilcut's floor at the tip level) or "soil", ``strength``
-    "associated" or "davis" (docs/model.md §18)."""
+    "associated" or "davis", ``field`` "columns" (each column its node's φ)
+    or "slope" (each column at least the slope it stands at; docs/model.md
+    §18)."""
     columns, lower, upper = _soilcut.bounds(
-        native_of(case), float(at), mesh=mesh, floor=floor, strength=strength
+        native_of(case), float(at), mesh=mesh, floor=floor, strength=strength, field=field
     )
     return Bounds(columns, lower, upper)

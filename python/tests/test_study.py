@@ -293,3 +293,5 @@ def test_bounds_are_the_cli_bounds(cli, tmp_path, refined):
         soilcut.bounds(refined, 0, mesh=0)
     with pytest.raises(ValueError, match="floor must be rigid or soil"):
         soilcut.bounds(refined, 0, floor="sand")
+    with pytest.raises(ValueError, match="field must be columns or slope"):
+        soilcut.bounds(refined, 0, field="mean")

@@ -4,16 +4,20 @@
 use crate::conic::SolveError;
 use crate::lower::{self, LowerBound};
 use crate::mesh::Mesh;
-use crate::problem::{InputError, Problem};
+use crate::problem::{InputError, Problem, Steep};
 use crate::scale::Scale;
 use crate::upper::{self, UpperBound};
 use std::time::Instant as Clock;
 
-/// Both bounds on one mesh, in the problem's units. A bound the solver
-/// could not find holds the solver's status: the lower bound is infeasible
-/// where no stress field on the mesh carries the ground's own weight with
-/// its strength, whatever the face does (a slope steeper than its friction
-/// angle, or one just below it on too coarse a mesh).
+/// Both bounds on one mesh, in the problem's units. Where a piece of
+/// cohesionless surface is steeper than its soil's friction angle
+/// ([`Problem::steep`]) the ground cannot stand under its own weight: no
+/// lower bound exists and the upper bound is unbounded below, so neither is
+/// sought (status [`SolveError::STEEP`], `steep` says where). Otherwise a
+/// bound the solver could not find holds the solver's status: the lower
+/// bound is infeasible where no stress field on the mesh carries the
+/// ground's own weight with its strength, whatever the face does (a slope
+/// just below its friction angle on too coarse a mesh).
 #[derive(Clone, Debug)]
 pub struct Bracket {
     /// The mesh, in the problem's coordinates.
@@ -28,6 +32,8 @@ pub struct Bracket {
     pub lower_seconds: f64,
     /// Wall-clock time of the upper bound's assembly and solve, seconds.
     pub upper_seconds: f64,
+    /// The steepest piece of the surface that cannot stand, if any.
+    pub steep: Option<Steep>,
 }
 
 impl Bracket {
@@ -60,6 +66,22 @@ pub fn bracket(p: &Problem, n: usize) -> Result<Bracket, InputError> {
     let scale = Scale::of(p);
     let scaled = scale.problem(p);
     let mesh = Mesh::new(&scaled, n);
+    let mesh_out = Mesh {
+        nodes: mesh.nodes.iter().map(|&q| scale.point(q)).collect(),
+        ..mesh.clone()
+    };
+    let steep = p.steep();
+    if steep.is_some() {
+        return Ok(Bracket {
+            mesh: mesh_out,
+            n,
+            lower: Err(SolveError::steep()),
+            upper: Err(SolveError::steep()),
+            lower_seconds: 0.0,
+            upper_seconds: 0.0,
+            steep,
+        });
+    }
     let (s, h) = (scale.stress, scale.length);
     let clock = Clock::now();
     let lower = lower::solve(&scaled, &mesh).map(|mut b| {
@@ -80,16 +102,13 @@ pub fn bracket(p: &Problem, n: usize) -> Result<Bracket, InputError> {
         b
     });
     let upper_seconds = clock.elapsed().as_secs_f64();
-    let mesh = Mesh {
-        nodes: mesh.nodes.iter().map(|&q| scale.point(q)).collect(),
-        ..mesh
-    };
     Ok(Bracket {
-        mesh,
+        mesh: mesh_out,
         n,
         lower,
         upper,
         lower_seconds,
         upper_seconds,
+        steep,
     })
 }

@@ -84,6 +84,12 @@ pub struct SolveError {
 
 impl std::fmt::Display for SolveError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.is_steep() {
+            return write!(
+                f,
+                "not sought: the ground cannot stand under its own weight"
+            );
+        }
         write!(f, "the conic solver stopped with status {}", self.status)
     }
 }
@@ -96,6 +102,22 @@ impl SolveError {
     /// ground's own weight.
     pub fn is_infeasible(&self) -> bool {
         self.status.contains("Infeasible")
+    }
+
+    /// The status of a bound not sought because the ground cannot stand
+    /// under its own weight ([`crate::Steep`]).
+    pub const STEEP: &'static str = "SteepGround";
+
+    /// A bound not sought because the ground cannot stand.
+    pub fn steep() -> SolveError {
+        SolveError {
+            status: Self::STEEP.into(),
+        }
+    }
+
+    /// Whether the bound was not sought because the ground cannot stand.
+    pub fn is_steep(&self) -> bool {
+        self.status == Self::STEEP
     }
 }
 

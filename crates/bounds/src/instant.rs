@@ -15,7 +15,7 @@
 use crate::bracket::{bracket, Bracket};
 use crate::problem::InputError;
 use crate::problem::{Domain, Face, Ground, Problem, Soil, MIN_RAKE};
-use crate::strength::Strength;
+use crate::strength::{Field, Strength};
 use soilcut_model::material::Material;
 use soilcut_model::{Case, CaseError, ProfilePoint, Simulation, StepError, StepRecord};
 
@@ -39,6 +39,8 @@ pub struct Options {
     pub floor: Floor,
     /// The soil's strength in the bounds.
     pub strength: Strength,
+    /// Which friction angle each column is given.
+    pub field: Field,
 }
 
 /// The bracket at one instant and soilcut's force there.
@@ -114,8 +116,9 @@ pub fn advance_to(sim: &mut Simulation, at: f64) -> Result<(), StepError> {
     Ok(())
 }
 
-/// The ground of `sim` as it stands, as a bound problem.
-pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem {
+/// The ground of `sim` as it stands, as a bound problem: each column's
+/// strength by `strength` (from its φ(ut), ψ(ut)), then `field`.
+pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength, field: Field) -> Problem {
     let case = sim.case();
     let profile = sim.profile();
     let c = case.soil.cohesion;
@@ -130,11 +133,12 @@ pub fn problem_of(sim: &Simulation, floor: Floor, strength: Strength) -> Problem
         };
         strength.apply(own, fresh.dilation.at(p.accumulated_shear).to_degrees())
     };
-    let ground = Ground {
+    let mut ground = Ground {
         x: profile.iter().map(|p| p.x).collect(),
         y: profile.iter().map(|p| p.y).collect(),
         soil: profile.iter().map(soil).collect(),
     };
+    field.apply(&mut ground);
     let below = strength.apply(
         Soil {
             friction_deg: fresh.friction.at(0.0).to_degrees(),
@@ -221,7 +225,7 @@ pub fn every(case: &Case, every: f64, options: Options) -> Result<Vec<Instant>, 
 /// The bracket of `sim`'s ground as it stands and soilcut's next increment
 /// on it (which advances `sim` by one increment).
 pub fn instant(sim: &mut Simulation, options: Options) -> Result<Instant, InstantError> {
-    let problem = problem_of(sim, options.floor, options.strength);
+    let problem = problem_of(sim, options.floor, options.strength, options.field);
     let bracket = bracket(&problem, options.mesh).map_err(InstantError::Bounds)?;
     let record = sim.step().map_err(InstantError::Step)?;
     Ok(Instant {

@@ -48,6 +48,6 @@ pub use conic::SolveError;
 pub use instant::{Floor, Instant, InstantError, Options};
 pub use lower::LowerBound;
 pub use mesh::{Mesh, Side};
-pub use problem::{Domain, Face, Ground, InputError, Problem, Soil};
-pub use strength::Strength;
+pub use problem::{Domain, Face, Ground, InputError, Problem, Soil, Steep};
+pub use strength::{Field, Strength};
 pub use upper::UpperBound;

@@ -132,6 +132,30 @@ fn check(key: &str, value: f64, lo: f64, hi: f64) -> Result<(), InputError> {
 /// face would lie too flat below it.
 pub const MIN_RAKE: f64 = 30.0;
 
+/// How much steeper than its soil's friction angle a piece of cohesionless
+/// surface must be to count as steep (degrees): a slope at its friction
+/// angle, to rounding, is at limiting equilibrium and not refused.
+pub const STEEP_TOLERANCE: f64 = 1e-3;
+
+/// A piece of the ground's surface steeper than the friction angle of its
+/// soil, which has no cohesion and some weight: the ground cannot stand
+/// under its own weight. No stress field carries it (there is no lower
+/// bound: on a cohesionless surface the stress vanishes, and just below a
+/// surface at β the soil must carry the shear of an infinite slope,
+/// τ/σ = tan β > tan φ), and a thin block of it slides down at no cost (c = 0
+/// dissipates nothing while gravity does work in proportion to the
+/// block's velocity: the upper bound is unbounded below).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Steep {
+    /// x of the ends of the stretch of steep pieces about the steepest.
+    pub x: [f64; 2],
+    /// The steepest piece's slope from the horizontal, degrees.
+    pub slope_deg: f64,
+    /// The least friction angle of the columns at that piece's ends,
+    /// degrees.
+    pub friction_deg: f64,
+}
+
 /// Largest magnitude of any length or stress: keeps the scaled problem's
 /// products finite.
 const BIG: f64 = 1e20;
@@ -219,6 +243,50 @@ impl Problem {
                 ..Domain::default()
             },
         }
+    }
+
+    /// The stretch of surface steeper than the friction angle of its
+    /// cohesionless, weighing soil (by more than [`STEEP_TOLERANCE`]) about
+    /// the piece (between two samples) that exceeds it most; `None` where
+    /// every piece can stand.
+    pub fn steep(&self) -> Option<Steep> {
+        let g = &self.ground;
+        let loose = |s: &Soil| s.cohesion == 0.0 && s.unit_weight > 0.0;
+        // Each piece's slope, the least φ of its loose ends, and the excess.
+        let pieces: Vec<(f64, f64, f64)> = (1..g.x.len())
+            .map(|i| {
+                let slope = ((g.y[i] - g.y[i - 1]) / (g.x[i] - g.x[i - 1]))
+                    .atan()
+                    .abs()
+                    .to_degrees();
+                let phi = [g.soil[i - 1], g.soil[i]]
+                    .iter()
+                    .filter(|s| loose(s))
+                    .map(|s| s.friction_deg)
+                    .fold(f64::INFINITY, f64::min);
+                (slope, phi, slope - phi)
+            })
+            .collect();
+        let steep = |k: usize| pieces[k].2 > STEEP_TOLERANCE;
+        let worst = (0..pieces.len()).filter(|&k| steep(k)).reduce(|a, b| {
+            if pieces[b].2 > pieces[a].2 {
+                b
+            } else {
+                a
+            }
+        })?;
+        let (mut first, mut last) = (worst, worst);
+        while first > 0 && steep(first - 1) {
+            first -= 1;
+        }
+        while last + 1 < pieces.len() && steep(last + 1) {
+            last += 1;
+        }
+        Some(Steep {
+            x: [g.x[first], g.x[last + 1]],
+            slope_deg: pieces[worst].0,
+            friction_deg: pieces[worst].1,
+        })
     }
 
     /// Surface height at x: linear between samples, flat beyond them.

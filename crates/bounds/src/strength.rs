@@ -11,7 +11,7 @@
 //!
 //! (φ* = φ, c* = c where ψ = φ).
 
-use crate::problem::Soil;
+use crate::problem::{Ground, Soil};
 
 /// Which strength the bounds give the soil.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -32,6 +32,59 @@ impl Strength {
             Strength::Davis => davis(soil, dilation_deg),
         }
     }
+}
+
+/// Which friction angle each column of the ground is given: the strength
+/// field of the bounds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Field {
+    /// Each column its own node's φ(ut) (docs/model.md §18.1).
+    #[default]
+    Columns,
+    /// Each column at least as strong as the steepest piece of the surface
+    /// at its node: φ = max(φ(ut), θ + [`SLOPE_MARGIN`]) with θ the larger
+    /// of the two pieces' slopes, so that no surface is steeper than its
+    /// soil's friction angle (beyond the paper; docs/model.md §18.5).
+    Slope,
+}
+
+/// How much stronger than the slope it stands at [`Field::Slope`] makes a
+/// column, degrees. A cohesionless slope at exactly its friction angle is
+/// at limiting equilibrium: near the surface its stress field is unique
+/// and at yield, and the interior-point solver does not find it (Fig. 5 at
+/// u/d = 0.5 and 2, N = 8: NumericalError and AlmostPrimalInfeasible).
+/// 0.01° suffices there; 0.1° keeps a margin and moves the bounds by 0.2 %.
+pub const SLOPE_MARGIN: f64 = 0.1;
+
+impl Field {
+    /// Gives the columns of `ground` this field's friction angles (their
+    /// own for [`Field::Columns`]).
+    pub fn apply(self, ground: &mut Ground) {
+        if self == Field::Slope {
+            let slopes = node_slopes(&ground.x, &ground.y);
+            for (s, theta) in ground.soil.iter_mut().zip(slopes) {
+                s.friction_deg = s.friction_deg.max(theta + SLOPE_MARGIN);
+            }
+        }
+    }
+}
+
+/// The steepest slope of the surface pieces meeting at each node of the
+/// polyline (x, y), degrees (0 for a lone node).
+pub fn node_slopes(x: &[f64], y: &[f64]) -> Vec<f64> {
+    let piece = |i: usize| {
+        ((y[i + 1] - y[i]) / (x[i + 1] - x[i]))
+            .atan()
+            .abs()
+            .to_degrees()
+    };
+    (0..x.len())
+        .map(|i| {
+            let before = if i > 0 { piece(i - 1) } else { 0.0 };
+            let after = if i + 1 < x.len() { piece(i) } else { 0.0 };
+            before.max(after)
+        })
+        .collect()
 }
 
 /// (D1), angles in degrees.

@@ -5,8 +5,8 @@
 use crate::{load, CaseOutput, Failure, Moment};
 use soilcut_bounds::{instant, Instant, InstantError, Options};
 use soilcut_io::{
-    bounds_columns, bounds_json, bounds_options, floor_name, strength_name, write_output_dir_then,
-    OutputError,
+    bounds_columns, bounds_json, bounds_options, field_name, floor_name, strength_name,
+    write_output_dir_then, OutputError,
 };
 use soilcut_model::Case;
 use soilcut_plot::{draw_bounds, draw_panels, BoundsFields, Panel, Series};
@@ -16,8 +16,8 @@ pub const EXAMPLES: &str = "\
 Examples:
   soilcut bounds cases/paper/original.toml --at 1
       writes out/original-bounds/{bounds.csv,bounds.json,case.resolved.toml}
-  soilcut bounds cases/paper/table1-hs.toml --at 2 --mesh 12 --json
-  soilcut bounds cases/paper/fig5.toml --every 0.5 --floor soil --strength davis";
+  soilcut bounds cases/paper/table1-hs.toml --at 2 --mesh 12 --field slope --json
+  soilcut bounds cases/paper/fig5.toml --every 0.5 --floor soil --strength davis --field slope";
 
 #[derive(clap::Args)]
 pub struct BoundsArgs {
@@ -42,6 +42,11 @@ pub struct BoundsArgs {
     /// Davis's reduced strength from its dilation angle.
     #[arg(long, value_name = "STRENGTH", default_value = "associated", value_parser = ["associated", "davis"])]
     strength: String,
+    /// The strength field: each column its own node's friction angle, or
+    /// each column at least as strong as the slope of the surface it stands
+    /// at (beyond the paper).
+    #[arg(long, value_name = "FIELD", default_value = "columns", value_parser = ["columns", "slope"])]
+    field: String,
     /// Print the results as JSON (bounds.json) instead of a table.
     #[arg(long)]
     json: bool,
@@ -49,7 +54,7 @@ pub struct BoundsArgs {
 
 impl BoundsArgs {
     fn options(&self, path: &Path) -> Result<Options, Failure> {
-        bounds_options("--", self.mesh, &self.floor, &self.strength)
+        bounds_options("--", self.mesh, &self.floor, &self.strength, &self.field)
             .map_err(|message| Failure::input(path, message))
     }
 }
@@ -198,11 +203,12 @@ fn failure(path: &Path, e: InstantError) -> Failure {
 /// The table printed on stdout.
 fn table(instants: &[Instant], d: f64, options: &Options) -> String {
     let mut out = format!(
-        "Limit-analysis bounds on the horizontal force (per unit width), mesh N = {}, floor {}, strength {}\n\
+        "Limit-analysis bounds on the horizontal force (per unit width), mesh N = {}, floor {}, strength {}, field {}\n\
          {:>8} {:>12} {:>12} {:>12} {:>9} {:>9} {:>8} {:>9} {:>8} {:>8}\n",
         options.mesh,
         floor_name(options.floor),
         strength_name(options.strength),
+        field_name(options.field),
         "u/d",
         "lower",
         "upper",
@@ -239,10 +245,25 @@ fn table(instants: &[Instant], d: f64, options: &Options) -> String {
     out
 }
 
-/// A line for each bound the solver did not find (NaN in the table).
+/// A line for each bound the solver did not find (NaN in the table), or
+/// one for both where the ground cannot stand under its own weight.
 fn status_notes(i: &Instant, d: f64) -> Vec<String> {
     let u = i.record.u / d;
     let b = &i.bracket;
+    if let Some(s) = &b.steep {
+        let tip = i.problem.face.tip_x;
+        return vec![format!(
+            "u/d = {u:.3}: no bounds, the ground cannot stand under its own weight: the surface \
+             from x/d = {:.3} to {:.3} ahead of the tip slopes at {:.2}° on soil of φ = {:.2}° \
+             without cohesion, so no stress field carries it (no lower bound) and a block of it \
+             slides down at no cost (the upper bound is unbounded below); --field slope gives \
+             each column at least the slope it stands at\n",
+            (s.x[0] - tip) / d,
+            (s.x[1] - tip) / d,
+            s.slope_deg,
+            s.friction_deg,
+        )];
+    }
     let lower = b.lower.as_ref().err().map(|e| ("lower", e));
     let upper = b.upper.as_ref().err().map(|e| ("upper", e));
     lower
@@ -250,7 +271,7 @@ fn status_notes(i: &Instant, d: f64) -> Vec<String> {
         .chain(upper)
         .map(|(which, e)| {
             let why = if e.is_infeasible() {
-                ": no stress field on this mesh carries the ground's own weight with its strength (a slope steeper than its friction angle, or a mesh too coarse to show that it holds)"
+                ": no stress field on this mesh carries the ground's own weight with its strength (a slope just below its friction angle on a mesh too coarse to show that it holds: a finer --mesh may find one)"
             } else {
                 ""
             };

@@ -153,3 +153,103 @@ fn bad_input_is_refused_naming_the_key_and_range() {
         "blade.width = 40",
     );
 }
+
+/// Fig. 5 to u/d = 1: hardening soil, whose fresh soil (φc = 20°) is
+/// pushed up against the face at the repose angle 30°.
+const FIG5: &str = include_str!("../../../cases/paper/fig5.toml");
+
+/// With each column its own φ the pile cannot stand from the second
+/// instant on: no bounds, the status and the reason said; with the slope
+/// field both bounds exist at every instant, the lower below the upper,
+/// and the field only strengthens (the first instant, flat ground, is the
+/// same).
+#[test]
+fn a_pile_steeper_than_its_soil_has_no_bounds_and_the_slope_field_has_both() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("case.toml"), FIG5).unwrap();
+    let run = |field: &str, out: &str| {
+        let o = soilcut(
+            dir.path(),
+            &[
+                "bounds",
+                "case.toml",
+                "--every",
+                "0.5",
+                "--mesh",
+                "3",
+                "--set",
+                "run.travel=21",
+                "--field",
+                field,
+                "--out",
+                out,
+            ],
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let json: serde_json::Value = serde_json::from_slice(
+            &std::fs::read(dir.path().join(out).join("bounds.json")).unwrap(),
+        )
+        .unwrap();
+        assert_eq!(json["field"], field);
+        (
+            String::from_utf8(o.stdout).unwrap(),
+            json,
+            rows(&dir.path().join(out)),
+        )
+    };
+    let (text, json, own) = run("columns", "own");
+    assert_eq!(own.len(), 3, "u/d = 0, 0.5, 1");
+    for (k, get) in own.iter().enumerate().skip(1) {
+        assert!(get("lower").is_nan() && get("upper").is_nan());
+        let instant = &json["instants"][k];
+        assert_eq!(instant["lower_status"], "SteepGround");
+        assert_eq!(instant["upper_status"], "SteepGround");
+    }
+    assert_eq!(
+        text.matches("the ground cannot stand under its own weight")
+            .count(),
+        2,
+        "{text}"
+    );
+    assert!(
+        text.contains("slopes at 30.00° on soil of φ = 20.00°"),
+        "{text}"
+    );
+    let (_, json, slope) = run("slope", "slope");
+    for (k, get) in slope.iter().enumerate() {
+        let (lower, upper) = (get("lower"), get("upper"));
+        assert!(
+            0.0 < lower && lower <= upper,
+            "u/d = {}: {lower} {upper}",
+            get("u_over_d")
+        );
+        assert_eq!(json["instants"][k]["upper_status"], "Solved");
+    }
+    assert_eq!(slope[0]("lower"), own[0]("lower"));
+    assert_eq!(slope[0]("upper"), own[0]("upper"));
+}
+
+#[test]
+fn a_field_other_than_columns_or_slope_is_refused() {
+    let dir = sandbox();
+    let o = soilcut(
+        dir.path(),
+        &[
+            "bounds",
+            "case.toml",
+            "--at",
+            "0",
+            "--field",
+            "mean",
+            "--out",
+            "b",
+        ],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--field") && err.contains("columns") && err.contains("slope"),
+        "{err}"
+    );
+    assert!(!dir.path().join("b").exists());
+}

@@ -3,7 +3,7 @@
 
 use crate::columns::Columns;
 use serde_json::json;
-use soilcut_bounds::{Floor, Instant, Options, SolveError, Strength, MAX_MESH};
+use soilcut_bounds::{Field, Floor, Instant, Options, SolveError, Strength, MAX_MESH};
 
 /// Columns of `bounds.csv`, in order.
 pub const BOUNDS_HEADER: &str = "u,u_over_d,depth,face_height,soilcut,lower,upper,soilcut_over_lower,soilcut_over_upper,half_width,mesh,triangles,lower_seconds,upper_seconds,soilcut_force,beta_deg,friction_deg";
@@ -57,6 +57,7 @@ pub fn bounds_json(instants: &[Instant], depth: f64, options: &Options) -> Strin
         "mesh": options.mesh,
         "floor": floor_name(options.floor),
         "strength": strength_name(options.strength),
+        "field": field_name(options.field),
         "instants": rows,
     });
     let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
@@ -81,6 +82,7 @@ pub fn bounds_options(
     mesh: i64,
     floor: &str,
     strength: &str,
+    field: &str,
 ) -> Result<Options, String> {
     let Some(mesh) = usize::try_from(mesh)
         .ok()
@@ -104,10 +106,20 @@ pub fn bounds_options(
             ))
         }
     };
+    let field = match field {
+        "columns" => Field::Columns,
+        "slope" => Field::Slope,
+        other => {
+            return Err(format!(
+                "{prefix}field must be columns or slope (got {other})"
+            ))
+        }
+    };
     Ok(Options {
         mesh,
         floor,
         strength,
+        field,
     })
 }
 
@@ -124,5 +136,13 @@ pub fn strength_name(strength: Strength) -> &'static str {
     match strength {
         Strength::Associated => "associated",
         Strength::Davis => "davis",
+    }
+}
+
+/// The name of a strength field, as `--field` takes it.
+pub fn field_name(field: Field) -> &'static str {
+    match field {
+        Field::Columns => "columns",
+        Field::Slope => "slope",
     }
 }

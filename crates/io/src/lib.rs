@@ -39,7 +39,8 @@ mod record;
 
 pub use baselines::{baselines, BaselineFactors, Baselines, NarrowBaseline, NormalisedBaseline};
 pub use bounds::{
-    bounds_columns, bounds_json, bounds_options, floor_name, strength_name, BOUNDS_HEADER,
+    bounds_columns, bounds_json, bounds_options, field_name, floor_name, strength_name,
+    BOUNDS_HEADER,
 };
 pub use case_file::{
     case_from_note, load_case_table, parse_case, parse_case_bytes, parse_case_table, read_case,

@@ -28,7 +28,7 @@ fn status<T>(bound: &Result<T, SolveError>) -> String {
 /// `bounds.csv`'s columns (one row) of the instant at u/d = `at`, and the
 /// solver's status of the lower and the upper bound.
 #[pyfunction]
-#[pyo3(signature = (case, at, mesh = 8, floor = "rigid", strength = "associated"))]
+#[pyo3(signature = (case, at, mesh = 8, floor = "rigid", strength = "associated", field = "columns"))]
 pub fn bounds<'py>(
     py: Python<'py>,
     case: &Bound<'py, PyAny>,
@@ -36,11 +36,13 @@ pub fn bounds<'py>(
     mesh: i64,
     floor: &str,
     strength: &str,
+    field: &str,
 ) -> PyResult<(Bound<'py, PyDict>, String, String)> {
     let native = Case::extract(case)?;
     let case = &native.get().loaded.case;
     check_landscape_at(case, "at", at).map_err(PyValueError::new_err)?;
-    let options = bounds_options("", mesh, floor, strength).map_err(PyValueError::new_err)?;
+    let options =
+        bounds_options("", mesh, floor, strength, field).map_err(PyValueError::new_err)?;
     let one = detached_map(py, || instant::at(case, at, options), instant_error)?;
     let (lower, upper) = (status(&one.bracket.lower), status(&one.bracket.upper));
     let columns = bounds_columns(std::slice::from_ref(&one), case.blade.depth);
