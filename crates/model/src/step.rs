@@ -54,12 +54,24 @@ pub struct StepRecord {
     pub weight: f64,
     /// P* / W, both per unit width: Eq. (1)'s factor
     /// sin(β + φ) / cos(β + φ + ω) where the case has no cohesion,
-    /// adhesion, surcharge or side crescents (those add to P, not to W).
+    /// adhesion, surcharge or side crescents (those add to P, not to W);
+    /// 0 for a block of no weight (`force_factor`).
     pub force_factor: f64,
     /// The face force's angle from the face's normal, m φw, degrees: the
     /// wall friction the block mobilises (positive: the block rises along
     /// the face; ω = m φw + α − 90° from the horizontal, (M41)).
     pub face_friction_deg: f64,
+}
+
+/// P / W for the record, 0 where the block weighs nothing (a band through
+/// air at the face of a tip pulled up, or ground thinner than round-off):
+/// there is no weight for Eq. (1) to multiply, and a record holds no NaN.
+pub(crate) fn force_factor(force: f64, weight: f64) -> f64 {
+    if weight > 0.0 {
+        force / weight
+    } else {
+        0.0
+    }
 }
 
 /// Why an increment could not be computed.

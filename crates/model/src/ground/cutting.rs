@@ -25,7 +25,7 @@ use crate::landscape::Candidate;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::spill::{Edges, SideHeaps};
-use crate::step::{ProfilePoint, StepError, StepRecord};
+use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
 
 /// Flat fresh ground appended when the search reaches the end, in d.
 const GROW_DEPTHS: f64 = 4.0;
@@ -337,7 +337,7 @@ impl Discretisation for Cutting {
             depth: tip,
             mass_spilled: self.mass_spilled(),
             weight: pick.weight * self.per_blade,
-            force_factor: pick.force / pick.weight,
+            force_factor: force_factor(pick.force, pick.weight),
             face_friction_deg: mobilisation * c.blade.wall_friction,
         })
     }

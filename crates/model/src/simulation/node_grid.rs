@@ -19,7 +19,7 @@ use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::search::{Choice, Observer, Search, SearchInput};
 use crate::spill::{Column, Edges, SideHeaps};
-use crate::step::{ProfilePoint, StepError, StepRecord};
+use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
 use crate::surface::Surface;
 use std::ops::Range;
 
@@ -354,7 +354,7 @@ impl Discretisation for NodeGrid {
             mass: self.mass(),
             mass_spilled: self.mass_spilled(),
             weight: choice.weight * self.per_blade,
-            force_factor: choice.force / choice.weight,
+            force_factor: force_factor(choice.force, choice.weight),
             face_friction_deg: mobilisation * c.blade.wall_friction,
         })
     }
