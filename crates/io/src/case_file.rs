@@ -85,12 +85,13 @@ enum BandAnglesName {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(
     rename_all = "kebab-case",
-    expecting = "\"footprint\" or \"crossed-columns\""
+    expecting = "\"footprint\", \"crossed-columns\" or \"crossed-columns-unfloored\""
 )]
 enum BandStrengthName {
     #[default]
     Footprint,
     CrossedColumns,
+    CrossedColumnsUnfloored,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -162,6 +163,9 @@ impl ChoicesFile {
             band_strength: match *self.band_strength.get_or_insert_default() {
                 BandStrengthName::Footprint => BandStrengthRule::Footprint,
                 BandStrengthName::CrossedColumns => BandStrengthRule::CrossedColumns,
+                BandStrengthName::CrossedColumnsUnfloored => {
+                    BandStrengthRule::CrossedColumnsUnfloored
+                }
             },
         }
     }
@@ -795,6 +799,17 @@ mod tests {
         assert_eq!(
             parse_case(&loaded.resolved_toml(), &[]).unwrap().case,
             loaded.case
+        );
+        let unfloored = ["choices.band_strength=crossed-columns-unfloored"
+            .parse()
+            .unwrap()];
+        assert_eq!(
+            parse_case(REFINED, &unfloored)
+                .unwrap()
+                .case
+                .choices
+                .band_strength,
+            BandStrengthRule::CrossedColumnsUnfloored
         );
         for (text, set) in [
             (REFINED, "choices.band_strength=widest"),

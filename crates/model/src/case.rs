@@ -207,6 +207,9 @@ pub enum BandStrengthRule {
     /// the band's length in each, each column's φ at least the angle its
     /// surface stands at (up to the repose), ψ and ut as they are.
     CrossedColumns,
+    /// As `CrossedColumns` without the floor: each column's φ(ut) as its
+    /// law gives it (M53 with the floor's cap at 0°).
+    CrossedColumnsUnfloored,
 }
 
 /// How much of Δut the band's nodes accumulate.

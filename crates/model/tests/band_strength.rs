@@ -72,12 +72,23 @@ fn the_band_takes_the_length_weighted_mean_of_the_columns_it_crosses() {
     // At every increment to 1.5 d: the band's φ and ψ equal the mean over
     // the pieces from the face to its emergence point, weighted by their
     // length along x, of max(φ(ut), the piece's slope angle up to θr) and
-    // ψ(ut), computed here from the profile before the step.
-    let case = steep_pile(1.5);
+    // ψ(ut), computed here from the profile before the step; unfloored,
+    // of φ(ut) and ψ(ut).
+    let floored = steep_pile(1.5);
+    let mut unfloored = floored.clone();
+    unfloored.choices.band_strength = BandStrengthRule::CrossedColumnsUnfloored;
+    let (a, b) = (angles_match(&floored, 40.0), angles_match(&unfloored, 0.0));
+    assert!(a != b, "the floor changes the run");
+}
+
+/// Checks every increment's band angles of `case` against the
+/// length-weighted mean with the floor's cap `cap` (degrees); returns the
+/// run's forces.
+fn angles_match(case: &Case, cap: f64) -> Vec<f64> {
     let soil = case.soil.clone();
     let shears = (soil.peak_shear, soil.residual_shear);
-    let mut sim = Simulation::new(&case).unwrap();
-    let (mut floored, mut checked) = (0, 0);
+    let mut sim = Simulation::new(case).unwrap();
+    let (mut floored, mut checked, mut forces) = (0, 0, Vec::new());
     while !sim.is_done() {
         let ground = sim.profile();
         let step = sim.step().unwrap();
@@ -93,10 +104,10 @@ fn the_band_takes_the_length_weighted_mean_of_the_columns_it_crosses() {
             let ut = a.accumulated_shear;
             let standing = ((b.y - a.y) / (b.x - a.x)).abs().atan().to_degrees();
             let strength = law(&soil.friction, ut, shears);
-            if standing.min(soil.repose) > strength {
+            if standing.min(cap) > strength {
                 floored += 1;
             }
-            phi += strength.max(standing.min(soil.repose)) * overlap;
+            phi += strength.max(standing.min(cap)) * overlap;
             psi += law(&soil.dilation, ut, shears) * overlap;
         }
         let run = xe - x0;
@@ -114,9 +125,13 @@ fn the_band_takes_the_length_weighted_mean_of_the_columns_it_crosses() {
             step.dilation_deg
         );
         checked += 1;
+        forces.push(step.force);
     }
-    // The floor was at work: the pile's columns stand steeper than their φ.
-    assert!(floored > 0 && checked > 100, "{floored} of {checked}");
+    // The floor was at work where there is one: the pile's columns stand
+    // steeper than their φ.
+    assert!(checked > 100, "{checked}");
+    assert_eq!(floored > 0, cap > 0.0, "{floored} of {checked}");
+    forces
 }
 
 #[test]
@@ -146,8 +161,9 @@ fn mass_is_kept(history: &[StepRecord], m0: f64) {
 #[test]
 fn a_run_under_the_crossed_columns_keeps_its_mass() {
     // The steep pile, Fig. 5's hardening-softening soil under the midpoint
-    // force, and a blade raked at 60° (the standing angle in the blade's
-    // plane, not the ground's sheared coordinates).
+    // force, a blade raked at 60° (the standing angle in the blade's
+    // plane, not the ground's sheared coordinates), and the steep pile
+    // unfloored.
     let mut fig5 = crossed(common::on_vertices(
         common::refined("fig5", 2.0, 250.0),
         50.0,
@@ -155,7 +171,9 @@ fn a_run_under_the_crossed_columns_keeps_its_mass() {
     fig5.run.time_scheme = soilcut_model::TimeScheme::MidpointForce;
     let mut raked = steep_pile(1.0);
     raked.blade.rake = 60.0;
-    for case in [steep_pile(2.0), fig5, raked] {
+    let mut unfloored = steep_pile(2.0);
+    unfloored.choices.band_strength = BandStrengthRule::CrossedColumnsUnfloored;
+    for case in [steep_pile(2.0), fig5, raked, unfloored] {
         let (history, sim) = common::run(&case);
         mass_is_kept(&history, sim.initial_mass());
     }
@@ -172,6 +190,10 @@ fn the_crossed_columns_are_refused_where_there_are_no_columns() {
     let mut mean_shear = steep_pile(0.5);
     mean_shear.choices.band_angles = BandAngleRule::AngleOfMeanShear;
     let e = Simulation::new(&mean_shear).expect_err("refused");
+    assert!(format!("{e}").contains("choices.band_strength"), "{e}");
+    let mut unfloored = nodes.clone();
+    unfloored.choices.band_strength = BandStrengthRule::CrossedColumnsUnfloored;
+    let e = Simulation::new(&unfloored).expect_err("refused on the node grid");
     assert!(format!("{e}").contains("choices.band_strength"), "{e}");
 }
 

@@ -105,16 +105,17 @@ impl Case {
         if self.run.vertex_spacing == 0.0 {
             return Err(CaseError::new(
                 "choices.band_strength",
-                "\"crossed-columns\" runs on the vertex ground only (run.vertex_spacing > 0), \
-                 whose pieces are the columns the band crosses; the node grid takes \"footprint\"",
+                "\"crossed-columns\" and \"crossed-columns-unfloored\" run on the vertex ground \
+                 only (run.vertex_spacing > 0), whose pieces are the columns the band crosses; \
+                 the node grid takes \"footprint\"",
             ));
         }
         if self.choices.band_angles == BandAngleRule::AngleOfMeanShear {
             return Err(CaseError::new(
                 "choices.band_strength",
-                "\"crossed-columns\" needs choices.band_angles = \"mean-of-angles\": each \
-                 column's φ is floored at the angle it stands at, which a φ of the mean ut \
-                 cannot hold",
+                "the crossed columns need choices.band_angles = \"mean-of-angles\": each \
+                 column's φ is its own (floored at the angle it stands at), which a φ of the \
+                 mean ut cannot hold",
             ));
         }
         Ok(())

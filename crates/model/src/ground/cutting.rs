@@ -147,8 +147,12 @@ impl Cutting {
                 Crescents::of(c, side, (u, face_node, spacing))
             },
             choose_at_midpoint: c.run.time_scheme == TimeScheme::MidpointForce && !c.soil.softens(),
-            columns: (c.choices.band_strength == BandStrengthRule::CrossedColumns)
-                .then(|| Columns::new(c.soil.repose, self.rake)),
+            // The floor's cap: θr, or 0° where the columns are unfloored.
+            columns: match c.choices.band_strength {
+                BandStrengthRule::Footprint => None,
+                BandStrengthRule::CrossedColumns => Some(Columns::new(c.soil.repose, self.rake)),
+                BandStrengthRule::CrossedColumnsUnfloored => Some(Columns::new(0.0, self.rake)),
+            },
         }
     }
 

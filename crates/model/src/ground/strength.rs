@@ -38,7 +38,8 @@ pub(crate) struct Columns {
 }
 
 impl Columns {
-    /// `repose` θr in degrees.
+    /// `repose` θr in degrees: the floor's cap (0: no floor,
+    /// `"crossed-columns-unfloored"`).
     pub(crate) fn new(repose: f64, rake: Rake) -> Self {
         Columns {
             repose: repose.to_radians(),
