@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """soilcut's mechanism every increment beside the DEM's every 0.25 d, to the
-DEM's travel, under both band rules (issue 40 item 2; stdlib only).
+DEM's travel, under four band rules (issue 40 items 2 and 4; stdlib only).
 
 Usage: python3 validation/mechanism_compare.py OUT [--run] [--soilcut PATH]
 
 With --run it first runs, for every cut <name> of the validation (vertical,
-raked30, deep) and both band rules <rule> (`choices.band_angles`: the paper's
-`mean-of-angles`, the default, and `angle-of-mean-shear`), an ensemble of 7
+raked30, deep) and every band rule <rule> (`choices.band_angles`: the paper's
+`mean-of-angles`, the default, and `angle-of-mean-shear`; and, beyond the
+paper, `choices.band_strength`'s `crossed-columns` and
+`crossed-columns-unfloored`: docs/model.md §20), an ensemble of 7
 perturbed members (docs/model.md §12.1) of cases/validation/<name>.toml to the
 DEM's travel (vertical 5 d, raked30 and deep 2 d: the last interval of
 validation/dem/results/long/<name>_*_mechanism.csv), into OUT/<name>-<rule>; the
@@ -24,8 +26,9 @@ mean ± sd over its 3 seeds:
   tip, the pile's height, its top's distance ahead of the tip and its area;
 - the same every 0.25 d (the interval (u − 0.25, u] d of the DEM's rows);
 - the verdict's numbers: soilcut / DEM of every quantity per window, under
-  both rules (angles and the pile top's position as differences); the
-  force's growth from the first window; and what makes P differ, P = W ×
+  every rule (angles and the pile top's position as differences); the
+  force's growth from the first window; the force's distance from the
+  DEM's seeds' mean in their sd; and what makes P differ, P = W ×
   P/W with Eq. (1)'s factor sin(β + φ)/sin(α + β + φ + δ) at soilcut's
   window means changed by one of the DEM's angles at a time.
 
@@ -63,7 +66,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 DEM = ROOT / "validation" / "dem" / "results" / "long"
 CUTS = {"vertical": (20.0, 90.0), "raked30": (20.0, 30.0), "deep": (25.0, 90.0)}
-RULES = ("mean-of-angles", "angle-of-mean-shear")
+# rule: the key that sets it
+RULES = {
+    "mean-of-angles": 'choices.band_angles="mean-of-angles"',
+    "angle-of-mean-shear": 'choices.band_angles="angle-of-mean-shear"',
+    "crossed-columns": 'choices.band_strength="crossed-columns"',
+    "crossed-columns-unfloored": 'choices.band_strength="crossed-columns-unfloored"',
+}
 MEMBERS = 7
 LONG_BIN = 15.0  # d: the DEM's long bin's end wall ahead of the tip's start
 AHEAD = 10.0  # d: the pile area's reach ahead of the tip (mechanism_series.py)
@@ -206,7 +215,7 @@ def window(series, k, key):
 def run(out, soilcut):
     for name, (depth, _) in CUTS.items():
         travel = max(max(s) for s in dem_runs(name))
-        for rule in RULES:
+        for rule, key in RULES.items():
             cmd = [
                 str(soilcut),
                 "run",
@@ -221,9 +230,9 @@ def run(out, soilcut):
                 "--set",
                 f"run.travel={travel * depth:g}",
                 "--set",
-                f'choices.band_angles="{rule}"',
+                key,
                 "--set",
-                f'title="{name} to {travel:g} d, band angles {rule} (validation/mechanism_compare.py)"',
+                f'title="{name} to {travel:g} d, band rule {rule} (validation/mechanism_compare.py)"',
             ]
             if name == "vertical":
                 cmd += ["--set", f"bin.length={LONG_BIN * depth:g}"]
@@ -248,7 +257,7 @@ def main(argv):
         run(out, soilcut)
     rows_w = {"forces": [], "geometry": []}
     rows_i = {"forces": [], "geometry": []}
-    ratios, band_only, sensitivity, growth = [], [], [], []
+    ratios, band_only, sensitivity, growth, seeds = [], [], [], [], []
     dem_label = "DEM (3 seeds)"
     for name, (depth, rake) in CUTS.items():
         dem = dem_runs(name)
@@ -320,6 +329,17 @@ def main(argv):
                     + " | ".join(f"{x:.2f}" for x in swaps)
                     + " |"
                 )
+            # The window's force against the DEM's seed spread: soilcut's
+            # ensemble mean less the seeds' mean, in the seeds' sd.
+            seeds.append(
+                f"| {name} | {rule} | "
+                + " | ".join(
+                    "{:+.1f}".format((spread([window(s, w, "P") for s in runs])[0] - dp[0]) / dp[1])
+                    for w in windows
+                    for dp in [spread([window(s, w, "P") for s in dem])]
+                )
+                + " |"
+            )
             growth.append(
                 f"| {name} | {rule} | "
                 + " | ".join(
@@ -348,6 +368,13 @@ def main(argv):
     print("| cut | rule | [1, 2) | [2, 3) | [3, 4) | [4, 5) |")
     print("|---|---|---|---|---|---|")
     print("\n".join(growth))
+    print()
+    print("The force against the DEM's seed spread: (soilcut's mean − the seeds' mean) / the")
+    print("seeds' sd, per window (within ±1: inside the spread):")
+    print()
+    print("| cut | rule | [0, 1) | [1, 2) | [2, 3) | [3, 4) | [4, 5) |")
+    print("|---|---|---|---|---|---|---|")
+    print("\n".join(seeds))
     print()
     print("What makes P differ: P = W × P/W; Eq. (1)'s factor at soilcut's window means of")
     print("β, φ and δ changes by the factor shown when one of them takes the DEM's value:")

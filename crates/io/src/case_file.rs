@@ -10,8 +10,9 @@ use crate::overrides::Override;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
     default_increment, default_node_spacing, default_samples_per_band, default_time_scheme,
-    default_vertex_spacing, AngleLaw, BandAngleRule, BandShearRule, Bin, Blade, Case, CaseError,
-    Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, TimeScheme, UnitWeightRule,
+    default_vertex_spacing, AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade,
+    Case, CaseError, Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, TimeScheme,
+    UnitWeightRule,
 };
 use std::path::Path;
 
@@ -55,7 +56,7 @@ struct BinFile {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "a table { band_angles, band_shear, unit_weight, face_friction }"
+    expecting = "a table { band_angles, band_shear, unit_weight, face_friction, band_strength }"
 )]
 struct ChoicesFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -66,6 +67,8 @@ struct ChoicesFile {
     unit_weight: Option<UnitWeightName>,
     #[serde(default)]
     face_friction: FaceFrictionName,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    band_strength: Option<BandStrengthName>,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -77,6 +80,18 @@ enum BandAnglesName {
     #[default]
     MeanOfAngles,
     AngleOfMeanShear,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(
+    rename_all = "kebab-case",
+    expecting = "\"footprint\", \"crossed-columns\" or \"crossed-columns-unfloored\""
+)]
+enum BandStrengthName {
+    #[default]
+    Footprint,
+    CrossedColumns,
+    CrossedColumnsUnfloored,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -122,6 +137,7 @@ impl ChoicesFile {
         refined_only(self.band_angles.is_some(), "choices.band_angles")?;
         refined_only(self.band_shear.is_some(), "choices.band_shear")?;
         refined_only(self.unit_weight.is_some(), "choices.unit_weight")?;
+        refined_only(self.band_strength.is_some(), "choices.band_strength")?;
         Ok(Choices {
             face_friction: self.face_friction(),
             ..Choices::default()
@@ -144,6 +160,13 @@ impl ChoicesFile {
                 UnitWeightName::PerNodeFormula => UnitWeightRule::PerNodeFormula,
             },
             face_friction: self.face_friction(),
+            band_strength: match *self.band_strength.get_or_insert_default() {
+                BandStrengthName::Footprint => BandStrengthRule::Footprint,
+                BandStrengthName::CrossedColumns => BandStrengthRule::CrossedColumns,
+                BandStrengthName::CrossedColumnsUnfloored => {
+                    BandStrengthRule::CrossedColumnsUnfloored
+                }
+            },
         }
     }
 
@@ -765,6 +788,35 @@ mod tests {
         assert_eq!(varied.band_angles, BandAngleRule::MeanOfAngles);
         let e = key_error(REFINED, &["choices.band_angles=median"]);
         assert_eq!(e.key, "choices.band_angles");
+        // The band's strength (M53): refined only, two words.
+        assert_eq!(varied.band_strength, BandStrengthRule::Footprint);
+        let crossed = ["choices.band_strength=crossed-columns".parse().unwrap()];
+        let loaded = parse_case(REFINED, &crossed).unwrap();
+        assert_eq!(
+            loaded.case.choices.band_strength,
+            BandStrengthRule::CrossedColumns
+        );
+        assert_eq!(
+            parse_case(&loaded.resolved_toml(), &[]).unwrap().case,
+            loaded.case
+        );
+        let unfloored = ["choices.band_strength=crossed-columns-unfloored"
+            .parse()
+            .unwrap()];
+        assert_eq!(
+            parse_case(REFINED, &unfloored)
+                .unwrap()
+                .case
+                .choices
+                .band_strength,
+            BandStrengthRule::CrossedColumnsUnfloored
+        );
+        for (text, set) in [
+            (REFINED, "choices.band_strength=widest"),
+            (ORIGINAL, "choices.band_strength=footprint"),
+        ] {
+            assert_eq!(key_error(text, &[set]).key, "choices.band_strength");
+        }
         assert_eq!(
             key_error(ORIGINAL, &["choices.band_shear=full"]).key,
             "choices.band_shear"

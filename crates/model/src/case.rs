@@ -194,6 +194,24 @@ pub enum BandAngleRule {
     AngleOfMeanShear,
 }
 
+/// Which soil a candidate band's strength is taken from (vertex ground
+/// only).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum BandStrengthRule {
+    /// Means over the band's footprint [x − L, x] near its emergence
+    /// point (M10, M17): the paper's rule, the default.
+    #[default]
+    Footprint,
+    /// Beyond the paper (M53, docs/model.md §20): means over the columns
+    /// the band crosses from the face to its emergence point, weighted by
+    /// the band's length in each, each column's φ at least the angle its
+    /// surface stands at (up to the repose), ψ and ut as they are.
+    CrossedColumns,
+    /// As `CrossedColumns` without the floor: each column's φ(ut) as its
+    /// law gives it (M53 with the floor's cap at 0°).
+    CrossedColumnsUnfloored,
+}
+
 /// How much of Δut the band's nodes accumulate.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BandShearRule {
@@ -244,6 +262,10 @@ pub struct Choices {
     /// How the face friction follows the block's slip (docs/model.md §2.6);
     /// the only choice of both models.
     pub face_friction: FaceFrictionRule,
+    /// Which soil a band's strength is taken from: its footprint (the
+    /// paper's) or the columns it crosses (M53, docs/model.md §20); the
+    /// vertex ground only.
+    pub band_strength: BandStrengthRule,
 }
 
 /// The soil bin: where the ground ends.

@@ -33,6 +33,7 @@ pub mod motion;
 mod scan;
 pub(crate) mod search;
 mod spill;
+mod strength;
 
 pub use merge::Quiet;
 

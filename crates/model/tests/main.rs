@@ -2,6 +2,7 @@
 //! binary (one link instead of one a file): run one file's tests with
 //! `cargo test -p soilcut-model --test integration FILE::`.
 
+mod band_strength;
 mod bin;
 mod common;
 mod depth_path;

@@ -1,7 +1,10 @@
 //! The allowed range of every key of a case (README, "Case files"): a value
 //! outside it is an error naming the key and the range, never clamped.
 
-use super::{Case, CaseError, FaceFrictionRule, TimeScheme, INITIAL_REACH_DEPTHS};
+use super::{
+    BandAngleRule, BandStrengthRule, Case, CaseError, FaceFrictionRule, TimeScheme,
+    INITIAL_REACH_DEPTHS,
+};
 
 /// Largest number of surface nodes a case may need at the start (memory
 /// guard: five f64 per node).
@@ -87,7 +90,35 @@ impl Case {
         self.validate_loads()?;
         self.validate_run()?;
         self.validate_bin()?;
-        self.validate_time_scheme()
+        self.validate_time_scheme()?;
+        self.validate_band_strength()
+    }
+
+    /// `choices.band_strength`: the crossed columns (M53) on the vertex
+    /// ground only, whose pieces are the columns (the node grid's nodes
+    /// hold no column to cross), and with the mean of the columns' angles,
+    /// since each column's φ is floored on its own.
+    fn validate_band_strength(&self) -> Result<(), CaseError> {
+        if self.choices.band_strength == BandStrengthRule::Footprint {
+            return Ok(());
+        }
+        if self.run.vertex_spacing == 0.0 {
+            return Err(CaseError::new(
+                "choices.band_strength",
+                "\"crossed-columns\" and \"crossed-columns-unfloored\" run on the vertex ground \
+                 only (run.vertex_spacing > 0), whose pieces are the columns the band crosses; \
+                 the node grid takes \"footprint\"",
+            ));
+        }
+        if self.choices.band_angles == BandAngleRule::AngleOfMeanShear {
+            return Err(CaseError::new(
+                "choices.band_strength",
+                "the crossed columns need choices.band_angles = \"mean-of-angles\": each \
+                 column's φ is its own (floored at the angle it stands at), which a φ of the \
+                 mean ut cannot hold",
+            ));
+        }
+        Ok(())
     }
 
     /// `run.time_scheme`: the midpoint force on the vertex ground

@@ -16,9 +16,10 @@ use super::midpoint::{half_slip, midpoint_force};
 use super::motion::Cut;
 use super::scan::{Pick, Scan};
 use super::search::{PickObserver, VertexSearch};
+use super::strength::Columns;
 use super::{Ground, Quiet};
 use crate::band::{stretch, BandMotion};
-use crate::case::{Case, TimeScheme};
+use crate::case::{BandStrengthRule, Case, TimeScheme};
 use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::landscape::Candidate;
@@ -146,6 +147,12 @@ impl Cutting {
                 Crescents::of(c, side, (u, face_node, spacing))
             },
             choose_at_midpoint: c.run.time_scheme == TimeScheme::MidpointForce && !c.soil.softens(),
+            // The floor's cap: θr, or 0° where the columns are unfloored.
+            columns: match c.choices.band_strength {
+                BandStrengthRule::Footprint => None,
+                BandStrengthRule::CrossedColumns => Some(Columns::new(c.soil.repose, self.rake)),
+                BandStrengthRule::CrossedColumnsUnfloored => Some(Columns::new(0.0, self.rake)),
+            },
         }
     }
 

@@ -26,6 +26,7 @@
 //! explicit rule does.
 
 use super::scan::{Pick, Scan};
+use super::strength::Columns;
 use super::Ground;
 use crate::band::BandMotion;
 use crate::laws::BandAngles;
@@ -47,9 +48,11 @@ pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip
     if pick.angles.fresh {
         return pick;
     }
-    let angles = scan
-        .laws
-        .band_angles(footprint_means(ground, scan, &pick, half_slip));
+    let means = match scan.columns {
+        None => footprint_means(ground, scan, &pick, half_slip),
+        Some(columns) => crossed_means(ground, (scan, &columns), &pick, half_slip),
+    };
+    let angles = scan.laws.band_angles(means);
     let factor = scan.laws.factor(angles, pick.tan_beta, scan.face);
     let geometry = (pick.weight, pick.length, pick.tan_beta);
     match scan.force(&factor, geometry, pick.x - ground.x[0]) {
@@ -59,6 +62,48 @@ pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip
             ..pick
         },
         None => pick,
+    }
+}
+
+/// The crossed columns' means (M53) half an increment on: the start's,
+/// `pick.angles`, over [x_0, x], with the columns of the footprint
+/// [x − L, x], the band's soil that the motion shears (M22), at
+/// ut + `half_slip` (φ̂ floored as at the start: the band keeps its
+/// geometry); the columns the band crosses below its footprint are not
+/// sheared by the increment and keep their state. A slip line's footprint
+/// is a point: its means are the start's.
+fn crossed_means(
+    ground: &Ground,
+    (scan, columns): (&Scan, &Columns),
+    pick: &Pick,
+    half_slip: f64,
+) -> BandAngles {
+    let material = &scan.laws.material;
+    let at = |k: usize, ut: f64| {
+        let phi = columns.friction(ground, k, material.friction.at(ut));
+        [phi, material.dilation.at(ut), ut]
+    };
+    let start = &pick.angles;
+    let mut means = [start.friction, start.dilation, start.shear];
+    let run = pick.x - ground.x[0];
+    let last = ground.piece_at(pick.x);
+    if pick.rear < pick.x {
+        for k in ground.piece_at(pick.rear).min(last)..=last {
+            let overlap = ground.x[k + 1].min(pick.x) - ground.x[k].max(pick.rear);
+            if overlap > 0.0 {
+                let ut = ground.accumulated_shear[k];
+                let (now, mid) = (at(k, ut), at(k, ut + half_slip));
+                for (i, mean) in means.iter_mut().enumerate() {
+                    *mean += (mid[i] - now[i]) * overlap / run;
+                }
+            }
+        }
+    }
+    BandAngles {
+        friction: means[0],
+        dilation: means[1],
+        shear: means[2],
+        fresh: false,
     }
 }
 

@@ -3,6 +3,7 @@
 //! search's spacings and reach, and Eq. (1) with the crescents of a blade
 //! of finite width.
 
+use super::strength::Columns;
 use crate::crescent::{blade_force, bound_weight, Crescents, Fan};
 use crate::face_friction::Face;
 use crate::laws::{BandAngles, Laws};
@@ -47,6 +48,9 @@ pub(crate) struct Scan<'a> {
     /// (M51, `ground::midpoint`) rather than the start's: the midpoint
     /// force where the soil never softens.
     pub(crate) choose_at_midpoint: bool,
+    /// The band's strength from the columns it crosses (M53,
+    /// `strength`); `None`: from its footprint, the paper's (M10, M17).
+    pub(crate) columns: Option<Columns>,
 }
 
 impl Scan<'_> {

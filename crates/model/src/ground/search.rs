@@ -69,6 +69,9 @@ struct Row {
     state: [f64; 3],
     /// min over vertices 1..k (before k) of (y_i + d) / (x_i − x_0).
     least_slope: f64,
+    /// Whether a piece before k stands steeper than its φ(ut) (M53: its
+    /// φ̂ is then the floor, and a band crossing it is not fresh soil).
+    lifted: bool,
 }
 
 /// The search's reusable scratch.
@@ -208,7 +211,9 @@ impl VertexSearch {
     fn push_row(&mut self, ground: &Ground, scan: &Scan, k: usize) {
         let material = &scan.laws.material;
         let ut = ground.accumulated_shear[k];
-        let (phi, psi) = (material.friction.at(ut), material.dilation.at(ut));
+        let (law, psi) = (material.friction.at(ut), material.dilation.at(ut));
+        // φ̂_k under the crossed columns (M53), else φ(ut_k).
+        let phi = scan.columns.map_or(law, |c| c.friction(ground, k, law));
         self.angles.push((phi, psi));
         if self.least.is_none_or(|(least, _)| phi < least) {
             self.least = Some((phi, Lower::new(phi, scan.laws)));
@@ -232,6 +237,7 @@ impl VertexSearch {
                 row.state[2] + ut * dx,
             ],
             least_slope: row.least_slope.min(slope),
+            lifted: row.lifted || phi > law,
         });
     }
 
@@ -396,7 +402,12 @@ impl VertexSearch {
         if !lower.can_beat(bound, t, bar, &scan.face) {
             return None;
         }
-        let (angles, rear) = self.footprint_angles(ground, scan, (k, x, y), (grid, t));
+        let (mut angles, rear) = self.footprint_angles(ground, scan, (k, x, y), (grid, t));
+        // Beyond the paper (M53): the columns crossed from the face to x;
+        // the footprint's rear stays where the motion's Δut goes (M22).
+        if scan.columns.is_some() {
+            angles = self.crossed_means(ground, scan, (k, x));
+        }
         let angles = scan.laws.band_angles(angles);
         // Eq. (1) at the band's φ rounded down on the table's grid.
         if !may_win((scan.laws, &scan.face), (bound, t), &angles, bar) {
@@ -421,6 +432,23 @@ impl VertexSearch {
             return Some(pick);
         }
         Some(midpoint_force(ground, scan, pick, half_slip(scan, &pick)))
+    }
+
+    /// The means of φ̂, ψ and ut over the columns from the face to x on
+    /// piece k, weighted by the band's length in each (M53): the prefix
+    /// integrals over [x_0, x]. Fresh where every one of them is
+    /// unsheared and stands no steeper than its φ(ut).
+    fn crossed_means(&self, ground: &Ground, scan: &Scan, (k, x): (usize, f64)) -> BandAngles {
+        let run = x - ground.x[0];
+        let hi = self.integral(ground, k, x);
+        let law = scan.laws.material.friction.at(ground.accumulated_shear[k]);
+        let lifted = self.rows[k].lifted || (x > ground.x[k] && self.angles[k].0 > law);
+        BandAngles {
+            friction: hi[0] / run,
+            dilation: hi[1] / run,
+            shear: hi[2] / run,
+            fresh: hi[2] == 0.0 && !lifted,
+        }
     }
 
     /// Means of φ, ψ and ut over the band's footprint [x − L, x] (M10,
