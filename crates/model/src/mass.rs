@@ -5,20 +5,41 @@
 /// Neumaier's compensated sum: conservation checks at 1e-12 need better than
 /// naive summation over 10⁵ nodes.
 pub fn compensated_sum(values: impl Iterator<Item = f64>) -> f64 {
-    let (mut sum, mut c) = (0.0f64, 0.0f64);
+    let mut sum = CompensatedSum::default();
     for v in values {
-        let t = sum + v;
+        sum.add(v);
+    }
+    sum.total()
+}
+
+/// `compensated_sum` as a running sum, for loops that sum several
+/// quantities in one pass.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CompensatedSum {
+    sum: f64,
+    c: f64,
+}
+
+impl CompensatedSum {
+    /// Adds v.
+    #[inline]
+    pub fn add(&mut self, v: f64) {
+        let t = self.sum + v;
         // The larger and the smaller of the two by magnitude: a select,
         // not a branch.
-        let (large, small) = if sum.abs() >= v.abs() {
-            (sum, v)
+        let (large, small) = if self.sum.abs() >= v.abs() {
+            (self.sum, v)
         } else {
-            (v, sum)
+            (v, self.sum)
         };
-        c += (large - t) + small;
-        sum = t;
+        self.c += (large - t) + small;
+        self.sum = t;
     }
-    sum + c
+
+    /// The sum of everything added.
+    pub fn total(&self) -> f64 {
+        self.sum + self.c
+    }
 }
 
 #[cfg(test)]

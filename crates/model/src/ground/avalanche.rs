@@ -214,6 +214,9 @@ impl Ground {
     /// once a vertex there stands as a pool of its own, every vertex after
     /// it does too, and the pass stops.
     fn pool(&mut self, s: f64, sign: f64, unchanged: usize) -> Option<usize> {
+        if !self.would_level(s, sign, unchanged) {
+            return None;
+        }
         let mut pools: Vec<Pool> = Vec::new();
         let mut end = None;
         for k in 0..self.x.len() {
@@ -248,6 +251,31 @@ impl Ground {
             }
         }
         end
+    }
+
+    /// Whether `pool` would level anything: two neighbouring vertices out
+    /// of order before the first vertex from `unchanged` on. Where none
+    /// is, every vertex is a pool of its own and `pool` compares exactly
+    /// these pairs, so this scan stands for it without building pools
+    /// (most passes find nothing: the last of every relax does).
+    fn would_level(&self, s: f64, sign: f64, unchanged: usize) -> bool {
+        let mut previous = f64::NAN;
+        for k in 0..self.x.len() {
+            let g = sign * self.y[k] + s * self.x[k];
+            if k > 0 {
+                let gap = s * (self.x[k] - self.x[k - 1]);
+                // As `pool` compares: a NaN levels.
+                let in_order = previous - g <= SLOPE_TOLERANCE * gap;
+                if !in_order {
+                    return true;
+                }
+            }
+            if k >= unchanged {
+                return false;
+            }
+            previous = g;
+        }
+        false
     }
 
     /// Moves the soil the pieces lost onto the pieces that gained, within

@@ -28,7 +28,7 @@
 use super::Ground;
 use crate::band::dilation_gap;
 use crate::case::{BandShearRule, UnitWeightRule};
-use crate::mass::compensated_sum;
+use crate::mass::{compensated_sum, CompensatedSum};
 
 /// The mechanism an increment moves the soil by.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -304,9 +304,13 @@ impl Ground {
     /// Weight and area of the pieces from the face to the vertex at `end`.
     fn region(&self, end: f64) -> (f64, f64) {
         let pieces = self.x.partition_point(|&x| x < end);
-        let mass = (0..pieces).map(|k| self.unit_weight[k] * self.piece_area(k));
-        let area = (0..pieces).map(|k| self.piece_area(k));
-        (compensated_sum(mass), compensated_sum(area))
+        let (mut mass, mut area) = (CompensatedSum::default(), CompensatedSum::default());
+        for k in 0..pieces {
+            let a = self.piece_area(k);
+            mass.add(self.unit_weight[k] * a);
+            area.add(a);
+        }
+        (mass.total(), area.total())
     }
 
     /// The band's state stays where it was (M48; docs/model.md §3.6, as on the
@@ -315,9 +319,11 @@ impl Ground {
     /// new extent before the increment (a conservative remap within the
     /// band; the block's pieces carry theirs).
     fn keep_band_state(&mut self, before: &PiecesBefore, band: std::ops::Range<usize>) {
+        let mut first = 0;
         for k in band {
             let (xa, xb) = (self.x[k], self.x[k + 1]);
-            self.accumulated_shear[k] = before.mean_shear(xa, xb);
+            first = before.walk_to(first, xa);
+            self.accumulated_shear[k] = before.mean_shear(first, xa, xb);
         }
     }
 
@@ -416,9 +422,7 @@ impl Ground {
             let total = self.piece_area(k);
             // A linear walk, not a binary search: old and new pieces are
             // about one to one, so the walk takes a step or two a piece.
-            while first_old + 1 < before.x.len() && before.x[first_old + 1] <= xa {
-                first_old += 1;
-            }
+            first_old = before.walk_to(first_old, xa);
             let staying = before.weight_below(first_old, xa, xb, at_rest);
             let resting = 0.5 * (xb - xa) * (at_rest(xa) + at_rest(xb));
             let arriving = self.unit_weight[k] * (total - resting - gap * (xb - xa));
@@ -501,48 +505,46 @@ impl PiecesBefore {
     }
 
     /// Mean ut of the old pieces over [xa, xb] (the last old piece reaches
-    /// beyond its end).
-    fn mean_shear(&self, xa: f64, xb: f64) -> f64 {
-        // The old pieces before the one holding xa lie before it.
-        let first = self.x[1..self.shear.len()].partition_point(|&x| x <= xa);
+    /// beyond its end); the old pieces before `first` lie before xa.
+    fn mean_shear(&self, first: usize, xa: f64, xb: f64) -> f64 {
+        let last = self.shear.len() - 1;
         let mut sum = 0.0;
-        for (k, lo, hi) in self.overlaps(first, (xa, xb), true) {
-            sum += self.shear[k] * (hi - lo);
+        let mut k = first;
+        while k <= last && self.x[k] < xb {
+            let hi = if k == last { xb } else { self.x[k + 1].min(xb) };
+            let lo = self.x[k].max(xa);
+            if hi > lo {
+                sum += self.shear[k] * (hi - lo);
+            }
+            k += 1;
         }
         sum / (xb - xa)
+    }
+
+    /// The old piece holding x, walking on from `from` (one at or before
+    /// it): the last k with x_k ≤ x, at most the last old piece.
+    fn walk_to(&self, mut from: usize, x: f64) -> usize {
+        let last = self.unit_weight.len() - 1;
+        while from < last && self.x[from + 1] <= x {
+            from += 1;
+        }
+        from
     }
 
     /// ∫ γ_old(x) h(x) dx over [xa, xb], h the height of the soil that
     /// stayed (linear): the weight of the soil that stayed below a piece
     /// now over [xa, xb]; the old pieces before `first` lie before xa.
     fn weight_below(&self, first: usize, xa: f64, xb: f64, height: impl Fn(f64) -> f64) -> f64 {
+        let last = self.unit_weight.len() - 1;
         let mut weight = 0.0;
-        for (k, s0, s1) in self.overlaps(first, (xa, xb), false) {
-            weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));
+        let mut k = first;
+        while k <= last && self.x[k] < xb {
+            let (s0, s1) = (self.x[k].max(xa), self.x[k + 1].min(xb));
+            if s1 > s0 {
+                weight += self.unit_weight[k] * 0.5 * (s1 - s0) * (height(s0) + height(s1));
+            }
+            k += 1;
         }
         weight
-    }
-
-    /// The old pieces k from `first` on that overlap [xa, xb], each with
-    /// the overlap (k, lo, hi), lo < hi, in order of x; with `open_end`
-    /// the last old piece reaches to xb, beyond its end.
-    fn overlaps(
-        &self,
-        first: usize,
-        (xa, xb): (f64, f64),
-        open_end: bool,
-    ) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
-        let last = self.unit_weight.len() - 1;
-        (first..=last)
-            .take_while(move |&k| self.x[k] < xb)
-            .map(move |k| {
-                let hi = if open_end && k == last {
-                    xb
-                } else {
-                    self.x[k + 1].min(xb)
-                };
-                (k, self.x[k].max(xa), hi)
-            })
-            .filter(|&(_, lo, hi)| hi > lo)
     }
 }
