@@ -242,6 +242,27 @@ fn fig5_configuration(bencher: Bencher, name: &str) {
         .bench(|| run(divan::black_box(&case)));
 }
 
+/// A steered control tick of fig5 at its defaults on the pile developed
+/// after 3 d of travel, with `points` points of depth path behind the blade
+/// (a steered session's history, a point a tick: 100 000 are a 1 kHz
+/// controller's 100 s): a tick costs what it changes, not the path's
+/// length (issue 39).
+#[divan::bench(args = [2, 100_000], sample_count = 20, sample_size = 20)]
+fn fig5_steered_tick_after_path(bencher: Bencher, points: usize) {
+    let mut case = shipped_case("paper/fig5.toml", &[]);
+    let (d, behind) = (case.blade.depth, 3.0 * case.blade.depth);
+    case.blade.depth_path = (0..points)
+        .map(|i| [behind * i as f64 / points as f64, d])
+        .collect();
+    // One session, tick after tick (a copy per tick would make each
+    // tick's new point reallocate the copied path).
+    let mut sim = developed(&case, 3.0);
+    bencher.bench_local(|| {
+        let x = sim.blade_position() + sim.case().run.increment;
+        sim.advance_to(x, Some(sim.tip_depth() * 0.9995)).unwrap();
+    });
+}
+
 /// A control tick of fig5 at its defaults on the pile developed after 3 d
 /// of travel, steered and not: `advance_to` the next increment (d/350),
 /// the tip going 0.1 % shallower over it (steered: a depth path made and

@@ -386,14 +386,26 @@ impl Case {
     /// between its points, constant beyond them; else `blade.depth`).
     pub fn tip_depth(&self, u: f64) -> f64 {
         let path = &self.blade.depth_path;
-        match path.iter().position(|p| p[0] > u) {
-            None => path.last().map_or(self.blade.depth, |p| p[1]),
-            Some(0) => path[0][1],
-            Some(k) => {
+        // The path's u increases (`Case::validate`): a binary search, as a
+        // steered session's path grows a point a tick.
+        match path.partition_point(|p| p[0] <= u) {
+            k if k == path.len() => path.last().map_or(self.blade.depth, |p| p[1]),
+            0 => path[0][1],
+            k => {
                 let ([u0, d0], [u1, d1]) = (path[k - 1], path[k]);
                 d0 + (d1 - d0) * (u - u0) / (u1 - u0)
             }
         }
+    }
+
+    /// The fastest the tip climbs along `blade.depth_path`, the largest
+    /// (d_i − d_{i+1}) / (u_{i+1} − u_i) (a rise per unit of travel); 0 where
+    /// it never climbs. The search's bounds hold for any climb up to it.
+    pub fn steepest_climb(&self) -> f64 {
+        let path = &self.blade.depth_path;
+        path.windows(2)
+            .map(|w| (w[0][1] - w[1][1]) / (w[1][0] - w[0][0]))
+            .fold(0.0, f64::max)
     }
 
     /// The deepest the tip goes: soil below it never moves.

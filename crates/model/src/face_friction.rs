@@ -116,17 +116,11 @@ impl FaceFriction {
     }
 
     /// ω for the least mobilisation any block of the run may have: at
-    /// β → 0 with the least ψ and the fastest climb of the depth path (s
-    /// grows with β + ψ and falls with κ, (M41)), less a margin for the
-    /// rounding of an increment's climb; `None` where every block
-    /// mobilises the full +φw.
-    pub(crate) fn least_angle(&self, case: &Case) -> Option<f64> {
-        let climb_max = case
-            .blade
-            .depth_path
-            .windows(2)
-            .map(|w| (w[0][1] - w[1][1]) / (w[1][0] - w[0][0]))
-            .fold(0.0, f64::max);
+    /// β → 0 with the least ψ and the fastest climb of the depth path,
+    /// `climb_max` (`Case::steepest_climb`; s grows with β + ψ and falls
+    /// with κ, (M41)), less a margin for the rounding of an increment's
+    /// climb; `None` where every block mobilises the full +φw.
+    pub(crate) fn least_angle(&self, climb_max: f64) -> Option<f64> {
         let tan_psi = self.least_dilation.tan();
         let across = 1.0 + tan_psi * self.rake_cot;
         let least = if across <= 0.0 {

@@ -38,6 +38,10 @@ pub struct Laws {
     fresh_sinking: ForceFactor,
     /// Lower bound of P/W over every admissible mechanism.
     pub(crate) min_factor: f64,
+    /// `Case::steepest_climb` of the case they were made for: the bounds
+    /// (`min_factor`, the face's least mobilisation) hold for climbs up to
+    /// it, and a tip steered to climb faster needs new laws.
+    pub(crate) steepest_climb: f64,
     /// (sin, cos) of the two walls.
     wall_sin_cos: ((f64, f64), (f64, f64)),
     /// Eq. (1) on a grid of friction angles, for the search's bounds.
@@ -53,10 +57,12 @@ impl Laws {
         let face = FaceFriction::new(case);
         let walls = face.walls;
         let phi0 = material.friction.at(0.0);
+        let steepest_climb = case.steepest_climb();
         Laws {
             fresh_rising: ForceFactor::new(phi0, walls.0),
             fresh_sinking: ForceFactor::new(phi0, walls.1),
-            min_factor: least_force_factor(case, &material, &face),
+            min_factor: least_force_factor(case, &material, &face, steepest_climb),
+            steepest_climb,
             wall_sin_cos: (walls.0.sin_cos(), walls.1.sin_cos()),
             table: FactorTable::new(walls, (material.friction.min(), material.friction.max())),
             fresh: BandAngles {
@@ -69,6 +75,14 @@ impl Laws {
             rule: case.choices.band_angles,
             face,
         }
+    }
+
+    /// The laws of `case` for a tip that climbs up to `climb` per unit of
+    /// travel, faster than any climb they were made for (a steered tip):
+    /// the stopping bound made for it.
+    pub(crate) fn climbing(&mut self, case: &Case, climb: f64) {
+        self.steepest_climb = climb;
+        self.min_factor = least_force_factor(case, &self.material, &self.face, climb);
     }
 
     /// Eq. (1) coefficients for a candidate band at tan β, with the face

@@ -11,7 +11,14 @@ use crate::material::Material;
 use crate::mechanism::ForceFactor;
 
 /// f_min of (M31) for the case's soil and face.
-pub(crate) fn least_force_factor(case: &Case, material: &Material, face: &FaceFriction) -> f64 {
+/// The tip climbs at most `steepest_climb` per unit of travel
+/// (`Case::steepest_climb`).
+pub(crate) fn least_force_factor(
+    case: &Case,
+    material: &Material,
+    face: &FaceFriction,
+    steepest_climb: f64,
+) -> f64 {
     let phi_min = material.friction.min();
     let at_zero = |wall: f64| ForceFactor::new(phi_min, wall).at_zero_angle();
     let walls = face.walls;
@@ -20,7 +27,7 @@ pub(crate) fn least_force_factor(case: &Case, material: &Material, face: &FaceFr
         // compaction, or a blade climbing faster than the block) the
         // friction acts upward on it (M9): ω is one of the two walls.
         FaceFrictionRule::Sign => {
-            let climbs = case.blade.depth_path.windows(2).any(|w| w[1][1] < w[0][1]);
+            let climbs = steepest_climb > 0.0;
             if case.soil.dilation.min().to_radians() < 0.0 || climbs {
                 at_zero(walls.0).min(at_zero(walls.1))
             } else {
@@ -28,7 +35,7 @@ pub(crate) fn least_force_factor(case: &Case, material: &Material, face: &FaceFr
             }
         }
         // ω anywhere between the least mobilisation's and +φw (M41).
-        FaceFrictionRule::Mobilised => match face.least_angle(case) {
+        FaceFrictionRule::Mobilised => match face.least_angle(steepest_climb) {
             None => at_zero(walls.0),
             Some(lowest) => {
                 let ends = at_zero(walls.0).min(at_zero(lowest));

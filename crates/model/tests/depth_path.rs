@@ -194,3 +194,39 @@ fn steering_keeps_the_vertex_ground() {
     let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
     assert!(drift.abs() < 1e-11, "drift {drift:e}");
 }
+
+/// A steered run is the run of the case it resolves to (docs/model.md
+/// §17): a controller pulls the tip of Table 1 S (ψ ≥ 0: no block sinks
+/// while the tip keeps its depth) up by 0.4 d over one depth of travel, then
+/// holds it; a fresh simulation of the steered case makes the same
+/// increments, bit for bit. The stopping bound and the face's least
+/// mobilisation of the steered run are those of a climbing tip: its
+/// landscape reaches as far as that of a run restored from its snapshot.
+#[test]
+fn a_steered_run_is_the_run_of_its_resolved_case() {
+    let case = common::at_vertex_defaults(common::refined("table1-s", 4.0, 100.0));
+    let d = case.blade.depth;
+    for rule in [FaceFrictionRule::Sign, FaceFrictionRule::Mobilised] {
+        let mut case = case.clone();
+        case.choices.face_friction = rule;
+        if rule == FaceFrictionRule::Sign {
+            case.run.time_scheme = soilcut_model::TimeScheme::Explicit;
+        }
+        let mut steered = Simulation::new(&case).unwrap();
+        let mut records = steered.advance_to(1.5 * d, None).unwrap();
+        records.extend(steered.advance_to(2.5 * d, Some(0.6 * d)).unwrap());
+        // The landscape reaches as far as a restored run's, whose stopping
+        // bound is made from the steered case.
+        let mut restored = Simulation::from_snapshot(&steered.snapshot()).unwrap();
+        let (seen, expected) = (steered.landscape().unwrap(), restored.landscape().unwrap());
+        assert_eq!(seen.len(), expected.len(), "{rule:?}: candidates");
+        assert!(seen == expected, "{rule:?}");
+        records.extend(steered.advance_to(4.0 * d, Some(0.6 * d)).unwrap());
+        let mut fresh = Simulation::new(steered.case()).unwrap();
+        let again = fresh.advance_to(4.0 * d, None).unwrap();
+        assert_eq!(records.len(), again.len());
+        for (a, b) in records.iter().zip(&again) {
+            assert_eq!(a, b, "{rule:?}, step {}", a.step);
+        }
+    }
+}

@@ -309,9 +309,18 @@ fn advance_to_a_depth_needs_a_vertical_blade_unless_the_depth_stays() {
     let mut sim = Simulation::new(&c).unwrap();
     sim.advance_to(0.2 * c.blade.depth, Some(c.blade.depth))
         .unwrap();
+    // Refused, beyond the travel too: the case stays as it was, its
+    // travel and its (empty) path.
+    let before = sim.case().clone();
     let e = sim
+        .advance_to(1.5 * c.run.travel, Some(0.8 * c.blade.depth))
+        .unwrap_err();
+    assert_eq!(sim.case(), &before);
+    let e2 = sim
         .advance_to(0.4 * c.blade.depth, Some(0.8 * c.blade.depth))
         .unwrap_err();
+    assert_eq!(sim.case(), &before);
+    assert_eq!(e.to_string(), e2.to_string());
     assert!(
         matches!(&e, AdvanceError::Case(k) if k.key == "blade.depth_path"),
         "{e}"

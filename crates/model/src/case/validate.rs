@@ -362,9 +362,16 @@ impl Case {
     }
 
     fn validate_depth_path(&self) -> Result<(), CaseError> {
+        self.validate_depth_points(0)
+    }
+
+    /// The rules of `blade.depth_path` for its points from `from` on (each
+    /// against the one before it) and for the path as a whole: what a
+    /// steered tick checks of the points it adds (`Simulation::advance_to`).
+    pub(crate) fn validate_depth_points(&self, from: usize) -> Result<(), CaseError> {
         let key = "blade.depth_path";
         let path = &self.blade.depth_path;
-        for (k, &[u, d]) in path.iter().enumerate() {
+        for (k, &[u, d]) in path.iter().enumerate().skip(from) {
             finite(key, u)?;
             finite(key, d)?;
             let [least, greatest] = MAGNITUDE;

@@ -8,7 +8,7 @@
 //! one increment past x and the results stay those of the case.
 
 use super::{Simulation, StepRecord};
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::simulation::StepError;
 use std::fmt;
 
@@ -90,16 +90,7 @@ impl Simulation {
         mut on_step: impl FnMut(&Simulation, &StepRecord),
     ) -> Result<usize, AdvanceError> {
         let target = self.target(x)?;
-        let todo = target - self.done;
-        let mut case = match depth {
-            Some(depth) => self.steered(x, depth, todo)?,
-            None => self.case.clone(),
-        };
-        case.run.travel = case.run.travel.max(x);
-        if case != self.case {
-            case.validate().map_err(AdvanceError::Case)?;
-            self.case = case;
-        }
+        self.steer(x, depth, target - self.done)?;
         let start = self.done;
         while self.done < target {
             match self.step() {
@@ -134,9 +125,74 @@ impl Simulation {
         Ok(target)
     }
 
-    /// The case with the tip going linearly from its depth now to `depth`
-    /// at x (the caller validates it); `todo` increments get it there.
-    fn steered(&self, x: f64, depth: f64, todo: usize) -> Result<Case, AdvanceError> {
+    /// Brings the case to the advance to x: its travel to x at least and,
+    /// with `depth`, the tip going linearly from its depth now to `depth`
+    /// at x (`todo` increments get it there). Edits the case in place, so
+    /// that a tick costs what it changes and not the length of the path
+    /// steered so far (a clone and a full check of the case at every tick
+    /// made a long steered session's ticks grow with it); an error leaves
+    /// the case as it was.
+    fn steer(&mut self, x: f64, depth: Option<f64>, todo: usize) -> Result<(), AdvanceError> {
+        let new_points = match depth {
+            Some(depth) => self.steered_points(x, depth, todo)?,
+            None => None,
+        };
+        let travel = self.case.run.travel;
+        if new_points.is_none() && x <= travel {
+            return Ok(());
+        }
+        let u0 = self.blade_position();
+        let path = &mut self.case.blade.depth_path;
+        let kept = path.partition_point(|p| p[0] < u0);
+        let ahead = match new_points {
+            // What lies behind the blade stays as run; the tip is pinned
+            // where it is now, so that the increments to come start from it.
+            Some(points) => {
+                let ahead = path.split_off(kept);
+                path.extend(points);
+                ahead
+            }
+            None => Vec::new(),
+        };
+        self.case.run.travel = travel.max(x);
+        // The rest of the case is as it was checked; the rules that read
+        // the path beyond its points read its deepest point, which stays
+        // within the ground's floor, the depth the case was checked for.
+        let checked = if x > travel {
+            self.case.validate()
+        } else {
+            self.case.validate_depth_points(kept)
+        };
+        if let Err(e) = checked {
+            let path = &mut self.case.blade.depth_path;
+            if new_points.is_some() {
+                path.truncate(kept);
+                path.extend(ahead);
+            }
+            self.case.run.travel = travel;
+            return Err(AdvanceError::Case(e));
+        }
+        // The stopping bound and the face's least mobilisation hold for the
+        // climbs the laws were made for: a tip pulled up faster than any
+        // before needs laws made for it (a new fastest climb: rare).
+        if let Some([[u0, tip], [x, depth]]) = new_points {
+            let climb = (tip - depth) / (x - u0);
+            if climb > self.laws.steepest_climb {
+                self.laws.climbing(&self.case, climb);
+            }
+        }
+        Ok(())
+    }
+
+    /// The two points of the depth path that take the tip from its depth
+    /// now to `depth` at x over `todo` increments; `None` where the case
+    /// holds the tip at `depth` with no path (nor a vertical blade).
+    fn steered_points(
+        &self,
+        x: f64,
+        depth: f64,
+        todo: usize,
+    ) -> Result<Option<[[f64; 2]; 2]>, AdvanceError> {
         let argument = |message: String| AdvanceError::Argument {
             name: "depth",
             value: depth,
@@ -151,11 +207,8 @@ impl Simulation {
                 "must be in ({least}, {floor}]: deeper than run.increment and the band width, and no deeper than the ground the simulation holds, down to the deepest tip depth of its case (give the case a blade.depth_path reaching the deepest depth to steer to)"
             )));
         }
-        let mut case = self.case.clone();
-        // A tip that stays where the case holds it needs no path (nor a
-        // vertical blade).
-        if case.blade.depth_path.is_empty() && depth == case.blade.depth {
-            return Ok(case);
+        if self.case.blade.depth_path.is_empty() && depth == self.case.blade.depth {
+            return Ok(None);
         }
         if todo == 0 {
             return Err(argument(format!(
@@ -163,13 +216,9 @@ impl Simulation {
                 self.blade_position()
             )));
         }
-        let u0 = self.blade_position();
-        let path = &mut case.blade.depth_path;
-        // What lies behind the blade stays as run; the tip is pinned where
-        // it is now, so that the increments to come start from it.
-        path.retain(|p| p[0] < u0);
-        path.push([u0, self.tip_depth()]);
-        path.push([x, depth]);
-        Ok(case)
+        Ok(Some([
+            [self.blade_position(), self.tip_depth()],
+            [x, depth],
+        ]))
     }
 }
