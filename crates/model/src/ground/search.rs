@@ -211,7 +211,12 @@ impl VertexSearch {
     fn push_row(&mut self, ground: &Ground, scan: &Scan, k: usize) {
         let material = &scan.laws.material;
         let ut = ground.accumulated_shear[k];
-        let (law, psi) = (material.friction.at(ut), material.dilation.at(ut));
+        // Most of the ground ahead is fresh: its angles are known.
+        let (law, psi) = if ut == 0.0 {
+            (scan.laws.fresh.friction, scan.laws.fresh.dilation)
+        } else {
+            (material.friction.at(ut), material.dilation.at(ut))
+        };
         // φ̂_k under the crossed columns (M53), else φ(ut_k).
         let phi = scan.columns.map_or(law, |c| c.friction(ground, k, law));
         self.angles.push((phi, psi));
