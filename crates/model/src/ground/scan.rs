@@ -23,9 +23,12 @@ pub(crate) struct Scan<'a> {
     /// Spacing of the first stage's samples along the ground (length).
     pub(crate) sample: f64,
     /// Whether the first stage samples flat bands coarser (M52,
-    /// `search::far_spacing`): the sampled search (K > 0) of a band with
+    /// `search::far_spacing`) and crowded vertices not each (M54,
+    /// `VertexSearch::crowded`): the sampled search (K > 0) of a band with
     /// a width.
-    pub(crate) coarsens_flat_bands: bool,
+    pub(crate) thins_samples: bool,
+    /// h, `run.vertex_spacing` (length).
+    pub(crate) vertex_spacing: f64,
     /// Width at which a local minimum's bracket stops narrowing (length).
     pub(crate) resolution: f64,
     /// v0: the block's advance in the increment (length).

@@ -19,7 +19,9 @@
 //!
 //! Every one is O(1) from prefix sums at the vertices (O(log n) for the
 //! footprint's rear end). The search samples every piece at spacing
-//! dB / K (the sampled search of (M47), here along the ground), stops
+//! dB / K (the sampled search of (M47), here along the ground; coarser
+//! for flat bands, M52, and once for vertices crowded closer than h/2,
+//! M54), stops
 //! where the block's weight times the least factor passes the best force
 //! (M31), then narrows every local minimum of the samples within 0.5 % of
 //! the least by golden-section search down to the resolution.
@@ -48,6 +50,12 @@ const LEAD: usize = 8;
 /// 20° Fig. 5 in an 8 d bin fails the ensemble rule (6.6 and 23.6 times
 /// its tolerance: docs/model.md §19).
 const FLAT_BAND: f64 = 0.176_326_980_708_464_97;
+/// A vertex closer than this many h (`run.vertex_spacing`) to the last
+/// vertex sampled takes no sample of its own (M54, `VertexSearch::crowded`):
+/// at h or more Fig. 5 raked at 60° fails the ensemble rule (1.43 times
+/// its tolerance), at ¾ h and ½ h every class stays accurate
+/// (docs/model.md §19).
+const CROWDED: f64 = 0.5;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
 
@@ -91,6 +99,8 @@ pub(crate) struct VertexSearch {
     pub(crate) evaluations: u64,
     /// Where the next sample on a flat band's piece lies (M52).
     next_sample: f64,
+    /// The last vertex that took a sample (M54).
+    last_vertex_sample: f64,
 }
 
 /// What the prefix sums count below the line at the face where the face
@@ -125,7 +135,7 @@ fn air_at_face(ground: &Ground, (k, x, y): (usize, f64, f64), (d, grid): (f64, f
 /// strength jumps at every vertex, no footprint averaging it) and for the
 /// exhaustive search.
 fn far_spacing(ground: &Ground, scan: &Scan, k: usize) -> Option<f64> {
-    if k == 0 || !scan.coarsens_flat_bands {
+    if k == 0 || !scan.thins_samples {
         return None;
     }
     let t = (ground.y[k] + scan.depth) / (ground.x[k] - ground.x[0]);
@@ -201,6 +211,7 @@ impl VertexSearch {
         self.samples.clear();
         self.least = None;
         self.hints = [0, 0];
+        self.last_vertex_sample = f64::NEG_INFINITY;
         self.rows.push(Row {
             least_slope: f64::INFINITY,
             ..Row::default()
@@ -259,8 +270,9 @@ impl VertexSearch {
         scan.bound_weight(row.sum_a - t * row.sum_b, run) * scan.laws.min_factor > best.force
     }
 
-    /// The first stage on piece k: candidates from x_k (not the face) at
-    /// spacing `scan.sample`, or, on a piece seen from the tip flatter
+    /// The first stage on piece k: candidates from x_k (not the face, nor
+    /// a crowded vertex, M54) at spacing `scan.sample`, or, on a piece
+    /// seen from the tip flatter
     /// than `FLAT_BAND` where the search coarsens, from where the last
     /// piece's samples stopped at the spacing `far_spacing` (M52); of
     /// which every `stride`-th along the ground is evaluated now (the
@@ -287,9 +299,27 @@ impl VertexSearch {
         let n = ((xb - xa) / scan.sample).ceil().max(1.0) as usize;
         for i in usize::from(k == 0)..n {
             let x = xa + (xb - xa) * i as f64 / n as f64;
+            if i == 0 {
+                if self.crowded(scan, x) {
+                    continue;
+                }
+                self.last_vertex_sample = x;
+            }
             self.push_sample(ground, scan, (k, x, stride), best, observer);
         }
         self.next_sample = xb;
+    }
+
+    /// Whether the vertex at x lies closer than `CROWDED` h to the last
+    /// vertex that took a sample, where the search thins its samples
+    /// (M54): vertices crowd where the bands have sheared the ground (each
+    /// increment cuts the ground at the band's upper boundary and its
+    /// emergence point), pieces there a few v0 long, and a sample at each
+    /// of them is denser than the ground's own h; a slip line (whose
+    /// strength jumps at every vertex) and the exhaustive search keep every
+    /// vertex.
+    fn crowded(&self, scan: &Scan, x: f64) -> bool {
+        scan.thins_samples && x - self.last_vertex_sample < CROWDED * scan.vertex_spacing
     }
 
     /// A first-stage candidate at x on piece k: evaluated now if it is
