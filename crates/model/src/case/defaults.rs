@@ -48,20 +48,21 @@ pub const SOFTENING_INCREMENTS_PER_DEPTH: f64 = 1250.0;
 /// force (`default_time_scheme`) is accurate by the ensemble rule on every
 /// paper case of the refined model in softening soil against the
 /// reference grid's ensemble at d/2000 (worst window / tolerance: Fig. 5
-/// 0.44, Table 1 HS 0.45, Table 1 S 0.12; with vertices d/100 apart 0.90,
+/// 0.46, Table 1 HS 0.45, Table 1 S 0.12; with vertices d/100 apart 0.90,
 /// 0.41, 0.23; `docs/studies/vertex-ground/`, with the flat bands of
-/// (M52)). Of d/250, d/300, d/350, d/400 and d/500 it is the coarsest that
-/// passes at both vertex spacings: d/250 fails Fig. 5 (1.80), d/300 Fig. 5
-/// (1.70, and 1.22 with vertices d/100 apart). The explicit rule at d/250
+/// (M52) and the crowded vertices of (M54)). Of d/250, d/300, d/350, d/400
+/// and d/500 it is the coarsest that passes at both vertex spacings: d/250
+/// fails Fig. 5 (1.54), d/300 Fig. 5 (1.47, and 1.22 with vertices d/100
+/// apart). The explicit rule at d/250
 /// passes the paper cases but not Fig. 5 in a bin (1.24) or raked (1.00;
 /// docs/model.md §19).
 pub const VERTEX_INCREMENTS_PER_DEPTH: f64 = 350.0;
 
 /// Vertex spacings per blade depth of the default vertex ground: h = d/50
 /// is accurate on every case of its class, where h = d/25 stands at the
-/// edge at the default d/350 with the midpoint force (Table 1 S 0.94, HS
-/// 0.79, Fig. 5 0.77) and fails under the explicit rule (Fig. 5 2.22 at
-/// d/1250), and d/100 is no more accurate (Fig. 5 0.90 against 0.44 at
+/// edge at the default d/350 with the midpoint force (Table 1 S 0.64, HS
+/// 0.79, Fig. 5 0.75) and fails under the explicit rule (Fig. 5 2.20 at
+/// d/1250), and d/100 is no more accurate (Fig. 5 0.90 against 0.46 at
 /// d/350; `docs/studies/vertex-ground/`).
 pub const VERTICES_PER_DEPTH: f64 = 50.0;
 
@@ -138,8 +139,8 @@ pub fn default_increments_per_depth(model: Model, soil: &Soil) -> f64 {
 /// rule of the face friction's, or `run.time_scheme = "explicit"`
 /// given) when a case does not give it: v0 = d / 500 is accurate by the
 /// ensemble rule on every paper case of the refined model (worst window /
-/// tolerance: Fig. 5 0.74, Table 1 HS 0.38, Table 1 S 0.30, Fig. 8b 0.61),
-/// d/250 not on Fig. 8b (1.47) and only at the edge on Fig. 5 (0.96;
+/// tolerance: Fig. 5 0.92, Table 1 HS 0.38, Table 1 S 0.38, Fig. 8b 0.61),
+/// d/250 not on Fig. 8b (1.47) and only at the edge on Fig. 5 (0.95;
 /// `docs/studies/vertex-ground/`).
 pub const VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH: f64 = 500.0;
 

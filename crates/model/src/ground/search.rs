@@ -20,7 +20,7 @@
 //! Every one is O(1) from prefix sums at the vertices (O(log n) for the
 //! footprint's rear end). The search samples every piece at spacing
 //! dB / K (the sampled search of (M47), here along the ground; coarser
-//! for flat bands, M52, and once for vertices crowded closer than h/2,
+//! for flat bands, M52, and once for vertices crowded closer than h/4,
 //! M54), stops
 //! where the block's weight times the least factor passes the best force
 //! (M31), then narrows every local minimum of the samples within 0.5 % of
@@ -52,10 +52,11 @@ const LEAD: usize = 8;
 const FLAT_BAND: f64 = 0.176_326_980_708_464_97;
 /// A vertex closer than this many h (`run.vertex_spacing`) to the last
 /// vertex sampled takes no sample of its own (M54, `VertexSearch::crowded`):
-/// at h or more Fig. 5 raked at 60° fails the ensemble rule (1.43 times
-/// its tolerance), at ¾ h and ½ h every class stays accurate
-/// (docs/model.md §19).
-const CROWDED: f64 = 0.5;
+/// crowded vertices lie a few v0 apart, far closer than h / 4, so h / 2
+/// saves no more time, and at h / 2 Fig. 5 under the explicit rule at its
+/// default d/500 fails the ensemble rule (1.02 times its tolerance), at h
+/// Fig. 5 raked at 60° (1.43) (docs/model.md §19).
+const CROWDED: f64 = 0.25;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;
 
