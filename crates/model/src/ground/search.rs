@@ -78,6 +78,9 @@ struct Row {
     state: [f64; 3],
     /// min over vertices 1..k (before k) of (y_i + d) / (x_i − x_0).
     least_slope: f64,
+    /// (y_k + d) / (x_k − x_0), vertex k's (infinite at the face): the
+    /// admissibility slope, the stopping rule's and (M52)'s, computed once.
+    slope: f64,
     /// Whether a piece before k stands steeper than its φ(ut) (M53: its
     /// φ̂ is then the floor, and a band crossing it is not fresh soil).
     lifted: bool,
@@ -135,11 +138,10 @@ fn air_at_face(ground: &Ground, (k, x, y): (usize, f64, f64), (d, grid): (f64, f
 /// sample at the vertex) on steeper pieces, for a slip line (whose
 /// strength jumps at every vertex, no footprint averaging it) and for the
 /// exhaustive search.
-fn far_spacing(ground: &Ground, scan: &Scan, k: usize) -> Option<f64> {
+fn far_spacing(scan: &Scan, (k, t): (usize, f64)) -> Option<f64> {
     if k == 0 || !scan.thins_samples {
         return None;
     }
-    let t = (ground.y[k] + scan.depth) / (ground.x[k] - ground.x[0]);
     (t > 0.0 && t < FLAT_BAND).then(|| scan.sample * FLAT_BAND / t)
 }
 
@@ -215,6 +217,7 @@ impl VertexSearch {
         self.last_vertex_sample = f64::NEG_INFINITY;
         self.rows.push(Row {
             least_slope: f64::INFINITY,
+            slope: f64::INFINITY,
             ..Row::default()
         });
     }
@@ -240,11 +243,6 @@ impl VertexSearch {
         let (xa, xb, ya, yb) = (ground.x[k], ground.x[k + 1], ground.y[k], ground.y[k + 1]);
         let g = ground.unit_weight[k];
         let dx = xb - xa;
-        let slope = if k == 0 {
-            f64::INFINITY
-        } else {
-            (ya + d) / (xa - x0)
-        };
         self.rows.push(Row {
             sum_a: row.sum_a + g * 0.5 * dx * (ya + yb + 2.0 * d),
             sum_b: row.sum_b + g * 0.5 * dx * (xa + xb - 2.0 * x0),
@@ -253,7 +251,8 @@ impl VertexSearch {
                 row.state[1] + psi * dx,
                 row.state[2] + ut * dx,
             ],
-            least_slope: row.least_slope.min(slope),
+            least_slope: row.least_slope.min(row.slope),
+            slope: (yb + d) / (xb - x0),
             lifted: row.lifted || phi > law,
         });
     }
@@ -267,8 +266,7 @@ impl VertexSearch {
         }
         let row = &self.rows[k];
         let run = ground.x[k] - ground.x[0];
-        let t = (ground.y[k] + scan.depth) / run;
-        scan.bound_weight(row.sum_a - t * row.sum_b, run) * scan.laws.min_factor > best.force
+        scan.bound_weight(row.sum_a - row.slope * row.sum_b, run) * scan.laws.min_factor > best.force
     }
 
     /// The first stage on piece k: candidates from x_k (not the face, nor
@@ -288,7 +286,7 @@ impl VertexSearch {
         observer: &mut Option<PickObserver>,
     ) {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
-        if let Some(spacing) = far_spacing(ground, scan, k) {
+        if let Some(spacing) = far_spacing(scan, (k, self.rows[k].slope)) {
             let mut x = self.next_sample.max(xa);
             while x < xb {
                 self.push_sample(ground, scan, (k, x, stride), best, observer);
@@ -408,7 +406,7 @@ impl VertexSearch {
         let t = (y + d) / run;
         // Vertex k is before x unless x is vertex k (M3).
         let least = if x > xa && k > 0 {
-            row.least_slope.min((ya + d) / (xa - x0))
+            row.least_slope.min(row.slope)
         } else {
             row.least_slope
         };
