@@ -266,7 +266,8 @@ impl VertexSearch {
         }
         let row = &self.rows[k];
         let run = ground.x[k] - ground.x[0];
-        scan.bound_weight(row.sum_a - row.slope * row.sum_b, run) * scan.laws.min_factor > best.force
+        scan.bound_weight(row.sum_a - row.slope * row.sum_b, run) * scan.laws.min_factor
+            > best.force
     }
 
     /// The first stage on piece k: candidates from x_k (not the face, nor
