@@ -404,7 +404,7 @@ impl Case {
     pub fn steepest_climb(&self) -> f64 {
         let path = &self.blade.depth_path;
         path.windows(2)
-            .map(|w| (w[0][1] - w[1][1]) / (w[1][0] - w[0][0]))
+            .map(|w| climb(w[0], w[1]))
             .fold(0.0, f64::max)
     }
 
@@ -413,4 +413,11 @@ impl Case {
         let path = self.blade.depth_path.iter().map(|p| p[1]);
         path.fold(self.blade.depth, f64::max)
     }
+}
+
+/// The tip's rise per unit of travel from path point `from` to `to`
+/// ([u, depth] each): (d_from − d_to) / (u_to − u_from), negative where it
+/// deepens.
+pub(crate) fn climb(from: [f64; 2], to: [f64; 2]) -> f64 {
+    (from[1] - to[1]) / (to[0] - from[0])
 }

@@ -8,7 +8,7 @@
 //! one increment past x and the results stay those of the case.
 
 use super::{Simulation, StepRecord};
-use crate::case::CaseError;
+use crate::case::{climb, CaseError};
 use crate::simulation::StepError;
 use std::fmt;
 
@@ -175,8 +175,8 @@ impl Simulation {
         // The stopping bound and the face's least mobilisation hold for the
         // climbs the laws were made for: a tip pulled up faster than any
         // before needs laws made for it (a new fastest climb: rare).
-        if let Some([[u0, tip], [x, depth]]) = new_points {
-            let climb = (tip - depth) / (x - u0);
+        if let Some([from, to]) = new_points {
+            let climb = climb(from, to);
             if climb > self.laws.steepest_climb {
                 self.laws.climbing(&self.case, climb);
             }
