@@ -129,3 +129,127 @@ impl Laws {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::case::{AngleLaw, Bin, Blade, Choices, FaceFrictionRule, Model, Run, Soil};
+
+    fn case(friction: AngleLaw, dilation: AngleLaw, rake: f64, path: &[[f64; 2]]) -> Case {
+        Case {
+            name: "bound".into(),
+            title: String::new(),
+            model: Model::Refined,
+            blade: Blade {
+                depth: 20.0,
+                wall_friction: 10.0,
+                rake,
+                adhesion: 0.0,
+                depth_path: path.to_vec(),
+                width: None,
+            },
+            soil: Soil {
+                unit_weight: 1.0,
+                friction,
+                dilation,
+                peak_shear: 2.0,
+                residual_shear: 4.0,
+                repose: 30.0,
+                band_width: 6.0,
+                cohesion: 0.0,
+                surcharge: 0.0,
+            },
+            run: Run {
+                travel: 40.0,
+                increment: 0.1,
+                node_spacing: 0.1,
+                samples_per_band: 0.0,
+                vertex_spacing: 0.0,
+                time_scheme: Default::default(),
+                merge_tolerance: 0.0,
+            },
+            bin: Bin::default(),
+            choices: Choices::default(),
+        }
+    }
+
+    /// The least P/W of Eq. (1) over a grid of the band angles the law can
+    /// give (φ and ψ each anywhere in its range, as a footprint's means
+    /// are), tan β from 1e-8 to 10 and every climb of the path, each
+    /// block with the face friction it mobilises (M9, M41).
+    fn least_on_grid(laws: &Laws, climbs: &[f64]) -> f64 {
+        let (friction, dilation) = (&laws.material.friction, &laws.material.dilation);
+        let within =
+            |(lo, hi): (f64, f64), k: usize, n: usize| lo + (hi - lo) * k as f64 / n as f64;
+        let mut least = f64::INFINITY;
+        for &climb in climbs {
+            let face = laws.face.for_climb(climb);
+            for i in 0..=5 {
+                for j in 0..=10 {
+                    let angles = BandAngles {
+                        friction: within((friction.min(), friction.max()), i, 5),
+                        dilation: within((dilation.min(), dilation.max()), j, 10),
+                        shear: 0.0,
+                        fresh: false,
+                    };
+                    for k in 0..=60 {
+                        let t = 10f64.powf(-8.0 + 9.0 * k as f64 / 60.0);
+                        if let Some(p) = laws.factor(angles, t, face).at(t) {
+                            least = least.min(p);
+                        }
+                    }
+                }
+            }
+        }
+        least
+    }
+
+    /// The stopping bound's f_min (M31) is the infimum of P/W over every
+    /// mechanism a run may try: no band on the grid lies below it, and the
+    /// flattest band of the least φ comes within 0.1 % of it. A bound 1 %
+    /// higher would end the scan before bands that can win; 1 % lower, it
+    /// would scan ground no band can win on. Compacting and dilating soils,
+    /// vertical and raked blades, both face-friction rules, a constant
+    /// depth and a path that climbs.
+    #[test]
+    fn the_stopping_bound_is_the_infimum_of_eq_1() {
+        let law = |initial, peak, residual| AngleLaw {
+            initial,
+            peak,
+            residual,
+        };
+        let soils = [
+            (law(20.0, 40.0, 30.0), law(-5.0, 10.0, 0.0)),
+            (law(35.0, 35.0, 30.0), law(0.0, 5.0, 0.0)),
+        ];
+        let climbing = [[0.0, 20.0], [10.0, 16.0], [20.0, 16.0], [25.0, 20.0]];
+        let paths: [&[[f64; 2]]; 2] = [&[], &climbing];
+        for (friction, dilation) in soils {
+            for rake in [90.0, 60.0, 45.0] {
+                for path in paths {
+                    for rule in [FaceFrictionRule::Mobilised, FaceFrictionRule::Sign] {
+                        let mut case = case(friction, dilation, rake, path);
+                        case.choices.face_friction = rule;
+                        let laws = Laws::new(&case);
+                        let climbs: Vec<f64> = match path {
+                            [] => vec![0.0],
+                            _ => path
+                                .windows(2)
+                                .map(|w| crate::case::climb(w[0], w[1]))
+                                .collect(),
+                        };
+                        let ratio = least_on_grid(&laws, &climbs) / laws.min_factor;
+                        let what = format!(
+                            "φ {friction:?}, ψ {dilation:?}, α {rake}, {rule:?}, path {path:?}"
+                        );
+                        assert!(ratio >= 1.0 - 1e-12, "{what}: a band {ratio} of f_min");
+                        assert!(
+                            ratio <= 1.0 + 1e-3,
+                            "{what}: the least band {ratio} of f_min"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
