@@ -5,7 +5,8 @@ Usage: python3 docs/scripts/analyse.py OUTDIR [OUTDIR ...]
 
 For each run folder (written by `soilcut run`) prints the summary figures,
 the mean normalised force over each unit of u/d, the initial-stage β* swings,
-the longest stay of the band at one location, far-band excursions, the band
+the longest stay of the band at one location, far-band excursions (and the
+force at those after u/d = 1), the band
 jump nearest each peak, the slope of the window means and, for a variant, its
 window means against the shipped run's.
 """
@@ -68,17 +69,32 @@ def longest_stay(h, depth):
 
 
 def far_excursions(h, depth, far=4.0, brief=25):
-    """Bands more than `far` depths ahead of the blade that last < `brief` increments."""
+    """Bands more than `far` depths ahead of the blade that last < `brief`
+    increments: how many, how many of one increment, the furthest (depths),
+    and for each after u/d = 1 (first increment i, last j) the force at i
+    and at j + 1 as changes from the force at i − 1."""
     ahead = [(x - u) / depth for x, u in zip(h["x_emergence"], h["u"])]
-    count, run = 0, 0
-    for a in ahead + [0.0]:
+    f, v = h["force_norm"], h["u_over_d"]
+    count, single, late, run = 0, 0, [], 0
+    for k, a in enumerate(ahead + [0.0]):
         if a > far:
             run += 1
-        else:
-            if 0 < run < brief:
-                count += 1
-            run = 0
-    return count, max(ahead)
+            continue
+        if 0 < run < brief:
+            count += 1
+            single += run == 1
+            i = k - run
+            if v[i] > 1.0 and i > 0 and k < len(f):
+                late.append((f[i] / f[i - 1] - 1, f[k] / f[i - 1] - 1))
+        run = 0
+    return count, single, max(ahead), late
+
+
+def spread(changes):
+    """Least, median and largest of `changes` (fractions) in %, and how many
+    are negative."""
+    c = sorted(changes)
+    return f"{100 * c[0]:+.2f} % to {100 * c[-1]:+.2f} % (median {100 * c[len(c) // 2]:+.2f} %, {sum(x < 0 for x in c)} down)"
 
 
 def initial_range(h, depth, until=0.5):
@@ -139,7 +155,7 @@ def against_shipped(run, means):
     """For a variant folder CASE-VARIANT beside the shipped CASE: the relative
     change of each window mean from the shipped run's."""
     run = Path(run)
-    for variant in ("-angle-of-mean-shear", "-by-position", "-per-node-formula"):
+    for variant in ("-angle-of-mean-shear", "-by-position", "-per-node-formula", "-explicit"):
         if run.name.endswith(variant):
             base = run.parent / run.name[: -len(variant)]
             if (base / "history.csv").exists():
@@ -155,14 +171,19 @@ def main():
         peaks = " ".join(f"({p['u_over_d']:.2f}, {p['force_norm']:.2f})" for p in s["peaks"])
         means = " ".join(f"{m:.3f}" for m in window_means(h))
         stay, at = longest_stay(h, depth)
-        far, furthest = far_excursions(h, depth)
+        far, single, furthest, late = far_excursions(h, depth)
         print(
             f"{run}: initial {s['initial_force_norm']:.4f}; max {s['max_force_norm']:.2f} at u/d {s['u_over_d_at_max']:.2f}; "
             f"peaks {peaks or 'none'}; band jumps {s['band_jumps']}; sheared_fraction {s['sheared_fraction']:.2f}; "
             f"mass_drift_rel {s['mass_drift_rel']:.1e}; dilation_area {s['dilation_area']:.1f}; "
             f"mean force per unit u/d [{means}]; beta swings (u/d<0.5) {beta_swings(h)}; "
-            f"longest stay {stay} increments from u/d {at:.2f}; brief far bands (>4 d ahead) {far}, furthest {furthest:.1f} d"
+            f"longest stay {stay} increments from u/d {at:.2f}; brief far bands (>4 d ahead) {far} ({single} of one increment), furthest {furthest:.1f} d"
         )
+        if late:
+            print(
+                f"  brief far bands after u/d 1: {len(late)}; force at the first increment against the one before: "
+                f"{spread([a for a, _ in late])}; the increment after each: {spread([b for _, b in late])}"
+            )
         (b0, x0), (b1, x1) = initial_range(h, depth)
         print(
             f"  initial stage (u/d < 0.5): beta* from {b0:.1f} deg ({x0:.0f} ahead, {x0 / depth:.1f} d) to {b1:.1f} deg ({x1:.0f} ahead)"

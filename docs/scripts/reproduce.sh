@@ -21,6 +21,8 @@ for case in fig5 table1-hs table1-s; do
   run "cases/paper/$case.toml" --out "$out/$case-by-position" --set choices.band_shear=by-position
   run "cases/paper/$case.toml" --out "$out/$case-per-node-formula" --set choices.unit_weight=per-node-formula
 done
+# The force recorded at the band of the increment's start (row 6).
+run cases/paper/fig5.toml --out "$out/fig5-explicit" --set run.time_scheme=explicit
 
 # Convergence in the ensemble sense (docs/model.md §12.1): every paper case's
 # and the tine's and dozer's ensemble on the reference grid at d/250, d/500,
