@@ -133,45 +133,7 @@ impl Laws {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::case::{AngleLaw, Bin, Blade, Choices, FaceFrictionRule, Model, Run, Soil};
-
-    fn case(friction: AngleLaw, dilation: AngleLaw, rake: f64, path: &[[f64; 2]]) -> Case {
-        Case {
-            name: "bound".into(),
-            title: String::new(),
-            model: Model::Refined,
-            blade: Blade {
-                depth: 20.0,
-                wall_friction: 10.0,
-                rake,
-                adhesion: 0.0,
-                depth_path: path.to_vec(),
-                width: None,
-            },
-            soil: Soil {
-                unit_weight: 1.0,
-                friction,
-                dilation,
-                peak_shear: 2.0,
-                residual_shear: 4.0,
-                repose: 30.0,
-                band_width: 6.0,
-                cohesion: 0.0,
-                surcharge: 0.0,
-            },
-            run: Run {
-                travel: 40.0,
-                increment: 0.1,
-                node_spacing: 0.1,
-                samples_per_band: 0.0,
-                vertex_spacing: 0.0,
-                time_scheme: Default::default(),
-                merge_tolerance: 0.0,
-            },
-            bin: Bin::default(),
-            choices: Choices::default(),
-        }
-    }
+    use crate::case::{AngleLaw, FaceFrictionRule};
 
     /// The least P/W of Eq. (1) over a grid of the band angles the law can
     /// give (φ and ψ each anywhere in its range, as a footprint's means
@@ -228,7 +190,11 @@ mod tests {
             for rake in [90.0, 60.0, 45.0] {
                 for path in paths {
                     for rule in [FaceFrictionRule::Mobilised, FaceFrictionRule::Sign] {
-                        let mut case = case(friction, dilation, rake, path);
+                        let mut case = crate::common::refined("fig5", 2.0, 50.0);
+                        case.soil.friction = friction;
+                        case.soil.dilation = dilation;
+                        case.blade.rake = rake;
+                        case.blade.depth_path = path.to_vec();
                         case.choices.face_friction = rule;
                         let laws = Laws::new(&case);
                         let climbs: Vec<f64> = match path {

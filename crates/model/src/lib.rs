@@ -11,6 +11,11 @@
 #[cfg(test)]
 extern crate self as soilcut_model;
 
+/// The integration tests' case builders, for the unit tests too.
+#[cfg(test)]
+#[path = "../tests/common.rs"]
+mod common;
+
 pub mod accuracy;
 pub mod analytic;
 pub mod avalanche;

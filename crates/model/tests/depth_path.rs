@@ -230,3 +230,26 @@ fn a_steered_run_is_the_run_of_its_resolved_case() {
         }
     }
 }
+
+/// A steered tip that replaces a steep climb ahead with a level path: the
+/// run keeps the bounds made for the climb its case had, and a run
+/// restored from its snapshot keeps them too, so the two scan the same
+/// ground and count the same evaluations from there on.
+#[test]
+fn a_restored_steered_run_keeps_the_bounds_of_the_live_one() {
+    let mut case = common::at_vertex_defaults(common::refined("table1-s", 4.0, 100.0));
+    let d = case.blade.depth;
+    case.blade.depth_path = vec![[0.0, d], [2.0 * d, d], [2.2 * d, 0.6 * d]];
+    let mut live = Simulation::new(&case).unwrap();
+    live.advance_to(1.5 * d, None).unwrap();
+    live.advance_to(2.5 * d, Some(d)).unwrap();
+    let mut restored = Simulation::from_snapshot(&live.snapshot()).unwrap();
+    assert_eq!(restored.snapshot(), live.snapshot());
+    for _ in 0..3 {
+        let (seen, expected) = (live.landscape().unwrap(), restored.landscape().unwrap());
+        assert_eq!(seen.len(), expected.len(), "candidates");
+        assert!(seen == expected);
+        assert_eq!(live.step().unwrap(), restored.step().unwrap());
+        assert_eq!(live.evaluations(), restored.evaluations());
+    }
+}

@@ -3,7 +3,8 @@
 //! A snapshot holds everything that determines the rest of the run: the
 //! case (as `advance_to` may have steered it), the surface's nodes and
 //! counters, the search's seed (the previous increment's emergence node)
-//! and evaluation count, the side heaps and the increments done (`Body`);
+//! and evaluation count, the side heaps, the increments done and the
+//! steepest climb the laws were made for (`Body`);
 //! on the vertex ground, its vertices and evaluation count instead of the
 //! node grid's fields, which are then written empty.
 //! What the case determines (the laws, the rake's grid, the node scheme,
@@ -42,7 +43,7 @@ use std::borrow::Cow;
 /// The first bytes of every snapshot.
 pub const MAGIC: [u8; 8] = *b"SOILCUT\x01";
 /// The layout's version: raised whenever the body changes.
-pub const FORMAT_VERSION: u32 = 8;
+pub const FORMAT_VERSION: u32 = 9;
 /// The crate version a snapshot must come from.
 pub const CRATE_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Bytes of the CRC-32 that ends every snapshot.
@@ -59,6 +60,10 @@ struct Body<'a> {
     note: Cow<'a, [u8]>,
     /// Increments done; the face follows from them.
     done: usize,
+    /// The steepest climb the laws' bounds were made for: a steered tip
+    /// keeps the bounds of a climb its path no longer holds (the points
+    /// ahead of it replaced), and the restored run must scan as far.
+    steepest_climb: f64,
     initial_mass: f64,
     /// The side heaps of a blade of finite width, on either ground.
     side: Cow<'a, SideHeaps>,
@@ -143,6 +148,7 @@ impl Simulation {
             case: Cow::Borrowed(&self.case),
             note: Cow::Borrowed(note),
             done: self.done,
+            steepest_climb: self.laws.steepest_climb,
             initial_mass: self.initial_mass,
             side: Cow::Borrowed(side),
             nodes,
@@ -155,7 +161,7 @@ impl Simulation {
     fn restore(b: Body) -> Result<Simulation, SnapshotError> {
         let case = b.case.into_owned();
         let initial_mass = finite("initial mass", b.initial_mass)?;
-        let laws = Laws::new(&case);
+        let laws = laws_for(&case, b.steepest_climb)?;
         let side = side_heaps(&case, b.side.into_owned())?;
         let ground = match resumed_vertices(&case, b.vertices)? {
             Some(ground) => {
@@ -176,6 +182,23 @@ impl Simulation {
             initial_mass,
         })
     }
+}
+
+/// The laws of `case` made for a climb up to `climb`, which is no less
+/// than the case's own (a steered run's laws only grow their climb).
+fn laws_for(case: &Case, climb: f64) -> Result<Laws, SnapshotError> {
+    let mut laws = Laws::new(case);
+    let own = laws.steepest_climb;
+    if finite("steepest climb", climb)? < own {
+        return Err(SnapshotError::invalid(
+            "steepest climb",
+            format!("{climb} is below the steepest climb of the case's path, {own}"),
+        ));
+    }
+    if climb > own {
+        laws.climbing(case, climb);
+    }
+    Ok(laws)
 }
 
 impl<'a> NodeBody<'a> {
@@ -387,15 +410,11 @@ fn checked_body(bytes: &[u8]) -> Result<&[u8], SnapshotError> {
 }
 
 #[cfg(test)]
-#[path = "../../tests/common.rs"]
-mod common;
-
-#[cfg(test)]
 mod tests {
     use super::*;
 
     fn sim() -> Simulation {
-        let mut sim = Simulation::new(&super::common::original(0.5, 40.0)).unwrap();
+        let mut sim = Simulation::new(&crate::common::original(0.5, 40.0)).unwrap();
         for _ in 0..4 {
             sim.step().unwrap();
         }
@@ -446,5 +465,10 @@ mod tests {
         assert_eq!(about(e), "side heaps");
         let e = restored(|s| s.case.soil.unit_weight = -1.0);
         assert_eq!(about(e), "case");
+        // Bounds made for less than the case's own climb would not bound.
+        let e = restored(|s| s.laws.steepest_climb = -0.5);
+        assert_eq!(about(e), "steepest climb");
+        let e = restored(|s| s.laws.steepest_climb = f64::NAN);
+        assert_eq!(about(e), "steepest climb");
     }
 }
