@@ -135,7 +135,9 @@ class CuttingEnv(gymnasium.Env):
     **Termination.** ``terminated`` when the episode's travel is reached,
     or when an increment has no admissible mechanism
     (:class:`soilcut.StepError`): the episode then ends with the reward
-    ``-failure_penalty`` and ``info["error"]`` holds the message.
+    ``-failure_penalty`` and ``info["error"]`` holds the message; ``info``
+    and the observation count the step's increments made before the one
+    that failed.
     ``truncated`` is never set by the environment (wrap it in a
     ``TimeLimit`` for that). A step after the end raises ``RuntimeError``.
 
@@ -282,9 +284,9 @@ class CuttingEnv(gymnasium.Env):
             records = self.sim.advance_to(x, depth=depth)
             error = None
         except StepError as failure:
-            # The increments before the failed one were made but their
-            # records are lost with the exception: the episode ends here.
-            records, error = [], str(failure)
+            # The increments before the failed one were made: their records
+            # come with the error, and the episode ends here.
+            records, error = failure.steps, str(failure)
         moved = self.gamma0 * self.width * sum(r.depth for r in records) * self.v0
         work = sum(r.force_h for r in records) * self.v0
         peak = max((r.force_h for r in records), default=0.0)

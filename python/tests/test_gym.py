@@ -134,15 +134,17 @@ def test_the_force_limit_penalises_and_the_depth_is_clipped():
 
 
 class Failing:
-    """A simulation whose advance_to raises soilcut.StepError, as one does
-    when an increment has no admissible mechanism (no case of the tine in
-    range reaches that, so the failure is stood in for)."""
+    """A simulation whose advance_to makes half its increments and then
+    raises soilcut.StepError with their records, as one does when an
+    increment has no admissible mechanism (no case of the tine in range
+    reaches that, so the failure is stood in for)."""
 
     def __init__(self, sim):
         self.sim = sim
 
     def advance_to(self, x, depth=None):
-        raise soilcut.StepError("increment 11: no admissible mechanism")
+        made = self.sim.advance_to(0.5 * (self.sim.blade_position + x), depth=depth)
+        raise soilcut.StepError("increment 16: no admissible mechanism", steps=made)
 
     def __getattr__(self, name):
         return getattr(self.sim, name)
@@ -151,13 +153,16 @@ class Failing:
 def test_no_admissible_mechanism_ends_the_episode_with_the_penalty():
     env = short(failure_penalty=3.0)
     env.reset(seed=0)
-    env.step(np.array([0.0]))
+    _, _, _, _, first = env.step(np.array([0.0]))
     env.sim = Failing(env.sim)
     obs, reward, terminated, truncated, info = env.step(np.array([0.0]))
     assert terminated and not truncated and reward == -3.0
     assert "no admissible mechanism" in info["error"]
     assert env.observation_space.contains(obs)
-    assert info["soil_moved"] == 0.0 and info["work"] == 0.0
+    # The five increments made before the failure count, as a step's do.
+    assert info["u"] == pytest.approx(first["u"] * 1.5, rel=1e-12)
+    assert info["soil_moved"] == pytest.approx(0.5 * first["soil_moved"], rel=1e-9)
+    assert 0.0 < info["work"] and 0.0 < info["max_force_h"]
     with pytest.raises(RuntimeError, match="ended"):
         env.step(np.array([0.0]))
 
