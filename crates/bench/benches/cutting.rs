@@ -249,8 +249,22 @@ fn fig5_configuration(bencher: Bencher, name: &str) {
 /// length (issue 39).
 #[divan::bench(args = [2, 100_000], sample_count = 20, sample_size = 20)]
 fn fig5_steered_tick_after_path(bencher: Bencher, points: usize) {
+    steered_ticks(bencher, points, 5.0);
+}
+
+/// The same with the case's travel ending at 3 d, so that every tick runs
+/// past it: a tick checks what a longer travel can break, not the path.
+#[divan::bench(args = [2, 100_000], sample_count = 20, sample_size = 20)]
+fn fig5_steered_tick_past_travel_after_path(bencher: Bencher, points: usize) {
+    steered_ticks(bencher, points, 3.0);
+}
+
+/// Ticks of one steered session of fig5 after 3 d, `points` points of path
+/// behind the blade, the case's travel `travel` d.
+fn steered_ticks(bencher: Bencher, points: usize, travel: f64) {
     let mut case = shipped_case("paper/fig5.toml", &[]);
     let (d, behind) = (case.blade.depth, 3.0 * case.blade.depth);
+    case.run.travel = travel * d;
     case.blade.depth_path = (0..points)
         .map(|i| [behind * i as f64 / points as f64, d])
         .collect();

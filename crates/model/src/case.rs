@@ -375,8 +375,14 @@ impl Case {
     /// `INITIAL_REACH_DEPTHS`, N0 = ceil((travel + 8 d_max) / Δx) + 2 (M30).
     /// With an end wall, no more than the points up to it.
     pub fn initial_nodes(&self) -> f64 {
+        self.nodes_to_depth(self.deepest())
+    }
+
+    /// `initial_nodes` with the tip no deeper than `deepest` (an upper
+    /// bound of the case's own, which the count grows with).
+    pub(crate) fn nodes_to_depth(&self, deepest: f64) -> f64 {
         let spacing = self.ground_spacing();
-        let reach = self.run.travel + INITIAL_REACH_DEPTHS * self.deepest();
+        let reach = self.run.travel + INITIAL_REACH_DEPTHS * deepest;
         let nodes = (reach / spacing).ceil() + 2.0;
         self.wall_point(spacing)
             .map_or(nodes, |wall| nodes.min(wall as f64 + 1.0))

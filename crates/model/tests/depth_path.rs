@@ -253,3 +253,47 @@ fn a_restored_steered_run_keeps_the_bounds_of_the_live_one() {
         assert_eq!(live.evaluations(), restored.evaluations());
     }
 }
+
+/// A controller that steers past the case's travel tick by tick: each
+/// tick checks only what a longer travel can break (O(1), not the path),
+/// the run is that of its resolved case, and a position whose ground the
+/// case could not hold is refused as `Case::validate` refuses it, naming
+/// the spacing, leaving the simulation as it was.
+#[test]
+fn steering_past_the_travel_checks_what_the_travel_changes() {
+    let mut case = common::at_vertex_defaults(common::refined("table1-s", 1.0, 100.0));
+    let d = case.blade.depth;
+    case.blade.depth_path = vec![[0.0, d], [0.5 * d, d]];
+    let mut steered = Simulation::new(&case).unwrap();
+    let mut records = steered.advance_to(d, None).unwrap();
+    let v0 = case.run.increment;
+    for i in 1..=60 {
+        let depth = d * (1.0 - 0.002 * i as f64);
+        records.extend(steered.advance_to(d + i as f64 * v0, Some(depth)).unwrap());
+    }
+    assert!(steered.case().run.travel > d + 59.0 * v0);
+    let before = steered.snapshot();
+    let far = 5.0e7 * steered.case().ground_spacing();
+    let e = steered.advance_to(far, Some(0.8 * d)).unwrap_err();
+    let mut expected = steered.case().clone();
+    expected.run.travel = far;
+    expected.blade.depth_path.push([far, 0.8 * d]);
+    let expected = expected.validate().unwrap_err();
+    match e {
+        soilcut_model::AdvanceError::Case(e) => {
+            assert_eq!(e.key, "run.vertex_spacing", "{e}");
+            assert_eq!(e, expected);
+        }
+        other => panic!("{other}"),
+    }
+    assert_eq!(steered.snapshot(), before);
+    let mut fresh = Simulation::new(steered.case()).unwrap();
+    let again = fresh.run_to_end(|_| {}).unwrap();
+    assert_eq!(records.len(), again.len());
+    // The same increments; the mass record counts the ground held at the
+    // start, which a longer travel makes longer.
+    for (a, b) in records.iter().zip(&again) {
+        let a = soilcut_model::StepRecord { mass: b.mass, ..*a };
+        assert_eq!(&a, b, "step {}", a.step);
+    }
+}

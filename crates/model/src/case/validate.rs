@@ -361,6 +361,23 @@ impl Case {
         Ok(())
     }
 
+    /// The rules a longer `run.travel` can break, for a case that passed
+    /// `validate` with a shorter one and whose tip goes no deeper than
+    /// `deepest` (a simulation's floor): the travel itself, the end wall
+    /// ahead of it and the points of the ground at the start, counted at
+    /// `deepest`. Where that count is over, the full `validate` decides
+    /// with the case's own deepest point (O(path)); else this is O(1), so
+    /// a tick that runs past the travel does not cost the length of the
+    /// path a session has steered (`Simulation::advance_to`).
+    pub(crate) fn validate_longer_travel(&self, deepest: f64) -> Result<(), CaseError> {
+        positive("run.travel", self.run.travel)?;
+        self.validate_bin()?;
+        if self.nodes_to_depth(deepest) > MAX_NODES {
+            return self.validate();
+        }
+        Ok(())
+    }
+
     fn validate_depth_path(&self) -> Result<(), CaseError> {
         self.validate_depth_points(0)
     }

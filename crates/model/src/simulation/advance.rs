@@ -129,9 +129,9 @@ impl Simulation {
     /// with `depth`, the tip going linearly from its depth now to `depth`
     /// at x (`todo` increments get it there). Edits the case in place, so
     /// that a tick costs what it changes and not the length of the path
-    /// steered so far (a clone and a full check of the case at every tick
-    /// made a long steered session's ticks grow with it); an error leaves
-    /// the case as it was.
+    /// steered so far (a clone and a full check of the case at every tick,
+    /// and then at every tick past the travel, made a long steered
+    /// session's ticks grow with it); an error leaves the case as it was.
     fn steer(&mut self, x: f64, depth: Option<f64>, todo: usize) -> Result<(), AdvanceError> {
         let new_points = match depth {
             Some(depth) => self.steered_points(x, depth, todo)?,
@@ -158,11 +158,14 @@ impl Simulation {
         // The rest of the case is as it was checked; the rules that read
         // the path beyond its points read its deepest point, which stays
         // within the ground's floor, the depth the case was checked for.
-        let checked = if x > travel {
-            self.case.validate()
-        } else {
-            self.case.validate_depth_points(kept)
-        };
+        let floor = -self.ground.get().floor();
+        let checked = self.case.validate_depth_points(kept).and_then(|()| {
+            if x > travel {
+                self.case.validate_longer_travel(floor)
+            } else {
+                Ok(())
+            }
+        });
         if let Err(e) = checked {
             let path = &mut self.case.blade.depth_path;
             if new_points.is_some() {
