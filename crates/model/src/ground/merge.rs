@@ -60,8 +60,10 @@ impl Ground {
     ) -> usize {
         let len = self.x.len();
         let (mut w, mut removed) = (from.max(1), 0);
+        // r = w + removed, the original index of the vertex judged: before
+        // `to`, and `removed + 1` vertices short of the ground's end.
         let mut r = w;
-        while w < to.min(len - removed - 1) - removed {
+        while r < to.min(len - removed - 1) {
             self.place(r + 1, w + 1);
             if goes(self, w) {
                 self.join_at(w);
