@@ -371,11 +371,12 @@ impl Case {
     /// path a session has steered (`Simulation::advance_to`).
     pub(crate) fn validate_longer_travel(&self, deepest: f64) -> Result<(), CaseError> {
         positive("run.travel", self.run.travel)?;
-        self.validate_bin()?;
+        // In `validate`'s order, so that a travel that breaks two rules
+        // is refused by the same one.
         if self.nodes_to_depth(deepest) > MAX_NODES {
             return self.validate();
         }
-        Ok(())
+        self.validate_bin()
     }
 
     fn validate_depth_path(&self) -> Result<(), CaseError> {
