@@ -159,7 +159,11 @@ impl Simulation {
         // the path beyond its points read its deepest point, which stays
         // within the ground's floor, the depth the case was checked for.
         let floor = -self.ground.get().floor();
-        let checked = self.case.validate_depth_points(kept).and_then(|()| {
+        let checked = match new_points {
+            Some(_) => self.case.validate_depth_points(kept),
+            None => Ok(()),
+        }
+        .and_then(|()| {
             if x > travel {
                 self.case.validate_longer_travel(floor)
             } else {
