@@ -27,8 +27,8 @@ def case_seeds():
         ("travel = 20.0", "travel = -20.0"),
         ("travel = 20.0", 'travel = "far"'),
         ("increment = 0.2", "increment = 1e-300"),
-        ("increment = 0.2", "increment = 0.2\nnode_spacing = 0.6"),
-        ("increment = 0.2", "increment = 0.2\nnode_spacing = 0.3"),
+        ("increment = 0.2", "increment = 0.2\nground = \"nodes\""),
+        ("increment = 0.2", "increment = 0.2\nvertex_spacing = 0.0"),
         # More vertices than the fuzzer creates a simulation for (1e6) and
         # fewer than a case may hold (5e7): parsed and validated only.
         ("increment = 0.2", "increment = 0.2\nvertex_spacing = 0.0001"),
@@ -93,7 +93,7 @@ def override_seeds():
         "0run.increment=-1",
         "0run.travel=1e308",
         "0run.travel=5000",
-        "0run.node_spacing=0.6",
+        '0run.ground="nodes"',
         "0model=refined",
         '0model="refined"',
         "0soil.friction={ peak = 36, residual = 30 }",

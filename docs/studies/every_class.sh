@@ -32,8 +32,8 @@ row() { # name, class, case file, extra --set arguments
   local d v
   d=$(grep -m1 '^depth' "$file" | awk '{print $3}')
   v=$(python3 -c "print(repr($d / 2000))")
-  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set run.vertex_spacing=0 \
-    --set run.increment="$v" --set run.node_spacing="$v" --set run.samples_per_band=0
+  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set 'run.ground="nodes"' \
+    --set run.increment="$v"
   ensemble "$runs/$name/defaults" "$file" "$@"
   local ground
   ground=$("$soilcut" check "$file" "$@" | tail -1 | sed -E 's/^ +//; s/\|/\\|/g')
@@ -62,8 +62,6 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row fig5 "refined, hardening-softening" cases/paper/fig5.toml
   row fig8b "refined, never softening" cases/paper/fig8b.toml
   row fig8b-rake60 "refined, never softening, raked (Fig. 8b, α = 60°)" cases/paper/fig8b.toml --set blade.rake=60
-  row fig8b-nodes "never softening on the coarse node grid (the default before M51a)" cases/paper/fig8b.toml --set run.vertex_spacing=0
-  row fig8b-rake60-nodes "never softening, raked, on the coarse node grid (the default before M51a)" cases/paper/fig8b.toml --set blade.rake=60 --set run.vertex_spacing=0
   row fig8b-vertices-explicit "never softening on vertices d/25, explicit (not the default: slower)" cases/paper/fig8b.toml --set 'run.time_scheme="explicit"'
   row fig5-bin "soil bin (Fig. 5 with bin.length = 8 d)" cases/paper/fig5.toml --set bin.length=160
   row validation-vertical "soil bin (DEM's, 10 d)" cases/validation/vertical.toml
@@ -74,8 +72,7 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
   row original "original model" cases/paper/original.toml
   row tine "original model, finite width (the tine)" cases/tools/tine.toml
   row dozer "original model, finite width (the dozer)" cases/tools/dozer.toml
-  row original-nonsoftening "original model, never softening (φr = φp)" cases/paper/original.toml --set soil.friction.residual=35
-  row original-nonsoftening-vertices "original model, never softening, on vertices d/25 (not the default: slower)" cases/paper/original.toml --set soil.friction.residual=35 --set run.vertex_spacing=0.8
+  row original-nonsoftening "original model, never softening (φr = φp; on vertices d/25 since issue 49)" cases/paper/original.toml --set soil.friction.residual=35
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 cat "$out"

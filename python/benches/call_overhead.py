@@ -42,7 +42,7 @@ def main():
     args = parser.parse_args()
     case = soilcut.Case.from_file(ROOT / "cases/paper/original.toml")
     d = case["blade.depth"]
-    one = case.update({"run.increment": 1.0, "run.travel": 1.0, "run.node_spacing": d / 20})
+    one = case.update({"run.increment": 1.0, "run.travel": 1.0, "run.vertex_spacing": d / 20})
     rows = [
         ('`case.set("soil.repose", 31)`', lambda: case.set("soil.repose", 31)),
         ('`case["soil.repose"]`', lambda: case["soil.repose"]),

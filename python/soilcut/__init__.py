@@ -24,13 +24,14 @@ degrees, forces per unit width.
 """
 
 from ._case import Case
-from ._errors import AccuracyWarning, CaseError, SnapshotError, StepError
+from ._errors import AccuracyWarning, CaseError, CaseFormWarning, SnapshotError, StepError
 from ._run import Ensemble, Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
 from ._study import Bounds, FitResult, Landscape, analytic, bounds, fit, landscape, sweep
 
 __all__ = [
     "AccuracyWarning",
+    "CaseFormWarning",
     "Bounds",
     "Case",
     "CaseError",

@@ -118,7 +118,7 @@ class Case:
         if value is None:
             raise KeyError(
                 f"{key}: not in this case as resolved (no such key, or one that it"
-                " does not use, as run.node_spacing on the vertex ground; the keys"
+                " does not use, as run.vertex_spacing on the node grid; the keys"
                 " are in docs/guide/case-keys.md)"
             )
         return value

@@ -66,9 +66,15 @@ class SnapshotError(ValueError):
 
 
 class AccuracyWarning(UserWarning):
-    """A case that runs, on a grid known to cost accuracy: nodes coarser
-    than the increment (``run.node_spacing`` > ``run.increment``) in soil
-    that softens converge to a limit of their own, 7-22 times the ensemble
-    rule's tolerance off the reference grid in the window mean forces of the
-    paper's softening cases (``docs/model.md`` §9, §12.1). ``soilcut run``
-    prints the same message on stderr."""
+    """A case that runs where the model is known to cost accuracy: a blade
+    narrower than a sixth of its depth, which fails the soil sideways below
+    a critical depth that the side crescents do not describe
+    (``docs/model.md`` §16.4). ``soilcut run`` prints the same message on
+    stderr."""
+
+
+class CaseFormWarning(FutureWarning):
+    """A case file with a key in the form of an earlier version, which
+    still runs (``run.vertex_spacing = 0`` for the node grid, now
+    ``run.ground = "nodes"``): the message says what to write instead.
+    ``soilcut run`` prints the same message on stderr as a notice."""

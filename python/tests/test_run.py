@@ -210,12 +210,21 @@ def test_a_blade_flatter_than_the_repose_runs_in_both_front_ends(cli, original):
         soilcut.Simulation("name = = 2")
 
 
-def test_coarse_nodes_in_softening_soil_warn_as_the_cli_does(original):
-    coarse = original.update({"run.increment": 0.2, "run.node_spacing": 0.4, "run.travel": 4})
-    with pytest.warns(soilcut.AccuracyWarning, match="run.node_spacing = 0.4"):
-        soilcut.run(coarse)
+def test_a_narrow_tine_warns_as_the_cli_does(original):
+    narrow = original.update({"blade.width": 1.0, "run.travel": 4})
+    with pytest.warns(soilcut.AccuracyWarning, match="blade.width = 1"):
+        soilcut.run(narrow)
     with pytest.warns(soilcut.AccuracyWarning):
-        soilcut.Simulation(coarse)
+        soilcut.Simulation(narrow)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        soilcut.Simulation(coarse.set("run.node_spacing", 0.2))
+        soilcut.Simulation(narrow.set("blade.width", 20.0))
+
+
+def test_an_old_node_grid_key_warns_and_runs_on_the_node_grid(original):
+    old = original.update({"run.vertex_spacing": 0.0, "run.travel": 4})
+    with pytest.warns(soilcut.CaseFormWarning, match='write run.ground = "nodes"'):
+        records = soilcut.run(old)
+    assert records.case["run.ground"] == "nodes"
+    with pytest.raises(soilcut.CaseError, match="run.vertex_spacing"):
+        original.update({"run.ground": "nodes", "run.vertex_spacing": 0.4})

@@ -12,24 +12,12 @@ fn main() {
 }
 
 /// Whole run of `cases/paper/fig5.toml` on the node grid (nodes every
-/// increment) at increments d/200 to d/2000 with the default search
+/// increment, the exhaustive search) at increments d/200 to d/2000
 /// (`docs/performance.md`: run time against the increment).
 #[divan::bench(args = [200, 250, 500, 1000, 2000], sample_count = 3, sample_size = 1)]
 fn fig5_run(bencher: Bencher, per_depth: u32) {
     let increment = format!("run.increment={}", 20.0 / per_depth as f64);
-    let case = shipped_case("paper/fig5.toml", &[&increment, "run.vertex_spacing=0"]);
-    let evaluations = run(&case);
-    bencher
-        .counter(ItemsCount::new(evaluations))
-        .bench(|| run(divan::black_box(&case)));
-}
-
-/// The same with the exhaustive search (`run.samples_per_band = 0`), the
-/// search before issue 28, for the ratio in one bench run.
-#[divan::bench(args = [250, 500, 1000], sample_count = 3, sample_size = 1)]
-fn fig5_run_exhaustive(bencher: Bencher, per_depth: u32) {
-    let increment = format!("run.increment={}", 20.0 / per_depth as f64);
-    let case = shipped_case("paper/fig5.toml", &[&increment, "run.samples_per_band=0"]);
+    let case = shipped_case("paper/fig5.toml", &[&increment, "run.ground=\"nodes\""]);
     let evaluations = run(&case);
     bencher
         .counter(ItemsCount::new(evaluations))
@@ -51,15 +39,15 @@ fn fig5_run_vertices(bencher: Bencher, per_depth: u32) {
 
 /// Whole run of each paper case whose default ground is the vertex ground
 /// on the node grid instead, at the node grid's default increment (d/1250
-/// where the soil softens; Fig. 8b d/500 on its coarse grid): the defaults
-/// before the vertex ground, beside `paper_case_at_defaults`.
+/// where the soil softens, d/500 where it never does), beside
+/// `paper_case_at_defaults`.
 #[divan::bench(
     args = ["original", "table1-s", "fig8b", "table1-hs", "fig5"],
     sample_count = 3,
     sample_size = 1
 )]
 fn paper_case_on_nodes(bencher: Bencher, name: &str) {
-    let case = shipped_case(&format!("paper/{name}.toml"), &["run.vertex_spacing=0"]);
+    let case = shipped_case(&format!("paper/{name}.toml"), &["run.ground=\"nodes\""]);
     let evaluations = run(&case);
     bencher
         .counter(ItemsCount::new(evaluations))
@@ -115,7 +103,7 @@ fn fig5_step_on_vertices(bencher: Bencher) {
 fn fig5_step_on_developed_pile(bencher: Bencher) {
     let case = shipped_case(
         "paper/fig5.toml",
-        &["run.increment=0.02", "run.vertex_spacing=0"],
+        &["run.increment=0.02", "run.ground=\"nodes\""],
     );
     let developed = developed(&case, 3.0);
     let mut probe = Simulation::clone(&developed);
@@ -143,7 +131,7 @@ mod snapshot {
     static DEVELOPED: LazyLock<Simulation> = LazyLock::new(|| {
         let case = shipped_case(
             "paper/fig5.toml",
-            &["run.increment=0.02", "run.vertex_spacing=0"],
+            &["run.increment=0.02", "run.ground=\"nodes\""],
         );
         developed(&case, 3.0)
     });
@@ -173,23 +161,6 @@ mod snapshot {
             .counter(bytes())
             .bench(|| Simulation::from_snapshot(divan::black_box(&data)).unwrap());
     }
-}
-
-/// Whole run of `cases/paper/fig8b.toml` (soil that only hardens) at about
-/// equal accuracy on the two node grids (`docs/performance.md`, "Time to
-/// accuracy"): the reference grid at d/500 (0.69 % from d/2000) and the
-/// coarse grid h = d/25 at v0 = d/500 (0.33 %).
-#[divan::bench(args = ["reference", "coarse"], sample_count = 3, sample_size = 1)]
-fn fig8b_equal_accuracy(bencher: Bencher, grid: &str) {
-    let spacing = match grid {
-        "reference" => "run.node_spacing=0.0508",
-        _ => "run.node_spacing=1.016",
-    };
-    let case = shipped_case("paper/fig8b.toml", &["run.increment=0.0508", spacing]);
-    let evaluations = run(&case);
-    bencher
-        .counter(ItemsCount::new(evaluations))
-        .bench(|| run(divan::black_box(&case)));
 }
 
 /// Whole run of the finite-width tools (`cases/tools/tine.toml`,
@@ -232,8 +203,8 @@ fn fig5_configuration(bencher: Bencher, name: &str) {
         "depth-path" => &["blade.depth_path=[[0, 20], [40, 24], [80, 20]]"],
         "bin" => &["bin.length=160"],
         "width40" => &["blade.width=40"],
-        "width40-nodes" => &["blade.width=40", "run.vertex_spacing=0"],
-        _ => &["blade.rake=60", "run.vertex_spacing=0"],
+        "width40-nodes" => &["blade.width=40", "run.ground=\"nodes\""],
+        _ => &["blade.rake=60", "run.ground=\"nodes\""],
     };
     let case = shipped_case("paper/fig5.toml", overrides);
     let evaluations = run(&case);

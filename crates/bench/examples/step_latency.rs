@@ -22,9 +22,9 @@ fn main() {
         // increment (Fig. 8b's 5 d at d/250 ends 250 steps after 3 d).
         case.run.travel = 10.0 * case.blade.depth;
         let d = case.blade.depth;
-        let ground = match case.run.vertex_spacing {
-            h if h > 0.0 => format!("vertices d/{:.0}", d / h),
-            _ => format!("nodes d/{:.0}", d / case.run.node_spacing),
+        let ground = match case.run.vertices() {
+            Some(v) => format!("vertices d/{:.0}", d / v.spacing),
+            None => format!("nodes d/{:.0}", d / case.run.increment),
         };
         let mut sim = developed(&case, 3.0);
         let mut micros: Vec<f64> = (0..STEPS)

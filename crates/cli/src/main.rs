@@ -22,7 +22,7 @@ use soilcut_io::{
     read_case, record_kept, write_run_dir, InputError, LoadedCase, OutputError, Override,
     PictureError, RecordedRun,
 };
-use soilcut_model::{Case, Simulation};
+use soilcut_model::{Case, Ground, Simulation};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -357,7 +357,13 @@ fn overrides(set: &[String]) -> Result<Vec<Override>, Failure> {
 
 fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
     let overrides = overrides(set)?;
-    read_case(path, &overrides).map_err(|e| Failure::argument(path, "--set", set, e))
+    let loaded =
+        read_case(path, &overrides).map_err(|e| Failure::argument(path, "--set", set, e))?;
+    // Shown even with --quiet: the file will stop working as written.
+    for notice in loaded.notices() {
+        eprintln!("notice: {}: {notice}", path.display());
+    }
+    Ok(loaded)
 }
 
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
@@ -389,24 +395,22 @@ fn resolution(case: &Case) -> String {
             format!("{short} (d/{n:.2})")
         }
     };
-    let ground = if run.vertex_spacing > 0.0 {
-        format!(
-            "vertex ground, vertices every {}",
-            of_depth(run.vertex_spacing)
-        )
-    } else {
-        format!("node grid, nodes every {}", of_depth(run.node_spacing))
-    };
-    format!(
-        "{ground}; increment {}; time scheme {}; {} per band",
-        of_depth(run.increment),
-        run.time_scheme.name(),
-        match run.samples_per_band {
-            0.0 => "every candidate".to_string(),
-            1.0 => "1 sample".to_string(),
-            k => format!("{k} samples"),
-        }
-    )
+    let increment = of_depth(run.increment);
+    match &run.ground {
+        Ground::Vertices(v) => format!(
+            "vertex ground, vertices every {}; increment {increment}; time scheme {}; {} per band",
+            of_depth(v.spacing),
+            v.time_scheme.name(),
+            match v.samples_per_band {
+                0.0 => "every candidate".to_string(),
+                1.0 => "1 sample".to_string(),
+                k => format!("{k} samples"),
+            }
+        ),
+        Ground::Nodes => format!(
+            "node grid (the yardstick), nodes every increment {increment}; time scheme explicit; every candidate"
+        ),
+    }
 }
 
 /// A case that runs but whose grid is known to cost accuracy.

@@ -129,7 +129,7 @@ pub struct ConvergeArgs {
     /// Levels: level k halves the resolution k times (see --refine).
     #[arg(long, value_name = "N", default_value_t = 4)]
     levels: usize,
-    /// What each level halves: both the increment and the node spacing, the increment alone, or the node spacing alone (which must stay a whole multiple of the increment).
+    /// What each level halves on the case's own ground: the increment and the vertex spacing together, the increment alone, or the vertex spacing alone (the vertex ground only; the node grid's nodes are every increment).
     #[arg(long, value_enum, default_value_t = RefineArg::Both)]
     refine: RefineArg,
     /// Relative change between the two finest levels under which a quantity counts as converged.
@@ -146,7 +146,7 @@ pub struct ConvergeArgs {
 pub enum RefineArg {
     Both,
     Increment,
-    NodeSpacing,
+    VertexSpacing,
 }
 
 impl From<RefineArg> for Refine {
@@ -154,7 +154,7 @@ impl From<RefineArg> for Refine {
         match r {
             RefineArg::Both => Refine::Both,
             RefineArg::Increment => Refine::Increment,
-            RefineArg::NodeSpacing => Refine::NodeSpacing,
+            RefineArg::VertexSpacing => Refine::VertexSpacing,
         }
     }
 }

@@ -605,7 +605,7 @@ fn last_error_truncates_to_the_buffer_and_tells_the_length() {
 
 #[test]
 fn warnings_are_the_command_lines() {
-    let sim = create(&short(2), &["run.node_spacing=0.4"]).unwrap();
+    let sim = create(&short(2), &["blade.width=1"]).unwrap();
     let _free = Free(sim);
     let mut needed = 0;
     assert_eq!(
@@ -618,7 +618,7 @@ fn warnings_are_the_command_lines() {
         SOILCUT_OK
     );
     let text = unsafe { CStr::from_ptr(buf.as_ptr()) }.to_str().unwrap();
-    let loaded = parse_case(&short(2), &["run.node_spacing=0.4".parse().unwrap()]).unwrap();
+    let loaded = parse_case(&short(2), &["blade.width=1".parse().unwrap()]).unwrap();
     let expected = loaded.case.accuracy_warnings();
     assert!(!expected.is_empty());
     assert_eq!(text, expected.join("\n"));

@@ -7,14 +7,15 @@
 
 use crate::error::InputError;
 use crate::overrides::Override;
+use run::RunFile;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
-    default_increment, default_node_spacing, default_samples_per_band, default_time_scheme,
-    default_vertex_spacing, AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade,
-    Case, CaseError, Choices, FaceFrictionRule, Model, Run, SnapshotError, Soil, TimeScheme,
-    UnitWeightRule,
+    AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade, Case, CaseError, Choices,
+    Class, FaceFrictionRule, Model, SnapshotError, Soil, UnitWeightRule,
 };
 use std::path::Path;
+
+mod run;
 
 const REFINED_ONLY: &str = "applies to model = \"refined\" only";
 const REFINED_REQUIRED: &str = "required for model = \"refined\"";
@@ -119,16 +120,6 @@ enum FaceFrictionName {
     #[default]
     Mobilised,
     Sign,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(
-    rename_all = "kebab-case",
-    expecting = "\"explicit\" or \"midpoint-force\""
-)]
-enum TimeSchemeName {
-    Explicit,
-    MidpointForce,
 }
 
 impl ChoicesFile {
@@ -237,33 +228,15 @@ struct AngleFile {
     residual: f64,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a table { travel, increment, node_spacing, samples_per_band, vertex_spacing, time_scheme, merge_tolerance }"
-)]
-struct RunFile {
-    travel: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    increment: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    node_spacing: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    samples_per_band: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    vertex_spacing: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    time_scheme: Option<TimeSchemeName>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    merge_tolerance: Option<f64>,
-}
-
 /// A case read from a file: the model's [`Case`] and its resolved file form.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoadedCase {
     /// The case as the model takes it, every default filled in.
     pub case: Case,
     resolved: CaseFile,
+    /// What the file wrote in the form of an earlier version, and what to
+    /// write instead: one line each, for the front ends to show.
+    notices: Vec<String>,
 }
 
 impl LoadedCase {
@@ -278,6 +251,13 @@ impl LoadedCase {
         loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone());
         loaded.resolved.run.travel = case.run.travel;
         loaded
+    }
+
+    /// The notices of keys written in the form of an earlier version,
+    /// one line each (the command line prints them on stderr, Python warns
+    /// with them).
+    pub fn notices(&self) -> &[String] {
+        &self.notices
     }
 
     /// The table of `case.resolved.toml` (without its comment line).
@@ -598,87 +578,39 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         Model::Original => choices_file.original()?,
         Model::Refined => choices_file.refined(),
     };
+    let blade = Blade {
+        depth,
+        wall_friction: file.blade.wall_friction,
+        rake,
+        adhesion,
+        depth_path: file.blade.depth_path.clone().unwrap_or_default(),
+        width: file.blade.width,
+    };
+    let class = Class {
+        model,
+        soil: &soil,
+        blade: &blade,
+        face_friction: choices.face_friction,
+    };
+    let (run, notices) = file.run.resolve(class)?;
     let case = Case {
         name: file.name.clone(),
         title,
         model,
-        blade: Blade {
-            depth,
-            wall_friction: file.blade.wall_friction,
-            rake,
-            adhesion,
-            depth_path: file.blade.depth_path.clone().unwrap_or_default(),
-            width: file.blade.width,
-        },
+        blade,
         soil,
-        run: Run {
-            travel: file.run.travel,
-            increment: 0.0,
-            node_spacing: 0.0,
-            // Their defaults depend on the ground (`with_grid`).
-            samples_per_band: 0.0,
-            vertex_spacing: 0.0,
-            time_scheme: TimeScheme::Explicit,
-            merge_tolerance: *file.run.merge_tolerance.get_or_insert(0.0),
-        },
+        run,
         bin: Bin {
             length: file.bin.map(|b| b.length),
         },
         choices,
     };
-    let case = with_grid(case, &mut file.run);
     case.validate().map_err(|e| key_as_written(e, &file))?;
     Ok(LoadedCase {
         case,
         resolved: file,
+        notices,
     })
-}
-
-/// `case` on the ground and at the increment and time scheme its file
-/// gives, or else the defaults of its class of case
-/// (soilcut_model::default_vertex_spacing, default_increment,
-/// default_node_spacing, default_time_scheme), written into `run`: the
-/// vertex ground where the file names neither ground and the class is
-/// the vertex ground's, the node grid where it names node spacing.
-fn with_grid(mut case: Case, run: &mut RunFile) -> Case {
-    let depth = case.blade.depth;
-    let node_spacing_given = run.node_spacing.is_some();
-    let vertex_spacing = *run.vertex_spacing.get_or_insert_with(|| {
-        if node_spacing_given {
-            0.0
-        } else {
-            default_vertex_spacing(&case)
-        }
-    });
-    let on_vertices = vertex_spacing > 0.0;
-    case.run.samples_per_band = *run
-        .samples_per_band
-        .get_or_insert_with(|| default_samples_per_band(&case.soil, on_vertices));
-    let default_scheme = match default_time_scheme(on_vertices, case.choices.face_friction) {
-        TimeScheme::Explicit => TimeSchemeName::Explicit,
-        TimeScheme::MidpointForce => TimeSchemeName::MidpointForce,
-    };
-    let scheme = match *run.time_scheme.get_or_insert(default_scheme) {
-        TimeSchemeName::Explicit => TimeScheme::Explicit,
-        TimeSchemeName::MidpointForce => TimeScheme::MidpointForce,
-    };
-    let increment = *run.increment.get_or_insert_with(|| {
-        default_increment(case.model, &case.soil, depth, (on_vertices, scheme))
-    });
-    let node_spacing = run
-        .node_spacing
-        .unwrap_or_else(|| default_node_spacing(&case.soil, depth, increment));
-    // The vertex ground has no nodes: a node spacing it was not given is
-    // not written, so that the resolved file changed to the node grid
-    // takes that grid's default rather than a value the run never used.
-    if !on_vertices {
-        run.node_spacing = Some(node_spacing);
-    }
-    case.run.time_scheme = scheme;
-    case.run.vertex_spacing = vertex_spacing;
-    case.run.increment = increment;
-    case.run.node_spacing = node_spacing;
-    case
 }
 
 /// The soil of a case file, its defaults written into `soil`: the repose
@@ -735,6 +667,7 @@ fn key_as_written(e: CaseError, file: &CaseFile) -> InputError {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use soilcut_model::{TimeScheme, VertexGround};
 
     const ORIGINAL: &str = include_str!("../testdata/original.toml");
     const REFINED: &str = include_str!("../testdata/refined.toml");
@@ -881,172 +814,162 @@ mod tests {
             .collect()
     }
 
-    /// The increment and node spacing `text` resolves to with `overrides`,
-    /// checked to be written into the resolved file.
-    fn resolved_grid(text: &str, overrides: &[&str]) -> (f64, f64, f64) {
-        let (d, v0, h, _) = resolved_ground(text, overrides);
-        (d, v0, h)
+    fn loaded(text: &str, overrides: &[&str]) -> LoadedCase {
+        let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
+        parse_case(text, &overrides).unwrap()
     }
 
-    /// `resolved_grid` and `run.vertex_spacing` (0: the node grid).
-    fn resolved_ground(text: &str, overrides: &[&str]) -> (f64, f64, f64, f64) {
-        let given = overrides.iter().any(|o| o.contains("node_spacing"));
-        let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
-        let loaded = parse_case(text, &overrides).unwrap();
+    /// (d, v0, the vertex ground's keys) `text` resolves to with
+    /// `overrides`, checked to be written into the resolved file, which
+    /// reads back to the same case.
+    fn resolved_ground(text: &str, overrides: &[&str]) -> (f64, f64, Option<VertexGround>) {
+        let loaded = loaded(text, overrides);
         let run = &loaded.case.run;
         let resolved = loaded.resolved_toml();
-        for line in [
-            format!("increment = {:?}", run.increment),
-            format!("vertex_spacing = {:?}", run.vertex_spacing),
-        ] {
+        let ground = format!("ground = \"{}\"", run.ground.name());
+        let mut lines = vec![format!("increment = {:?}", run.increment), ground];
+        if let Some(v) = run.vertices() {
+            lines.push(format!("vertex_spacing = {:?}", v.spacing));
+            lines.push(format!("samples_per_band = {:?}", v.samples_per_band));
+            lines.push(format!("time_scheme = \"{}\"", v.time_scheme.name()));
+            lines.push(format!("merge_tolerance = {:?}", v.merge_tolerance));
+        }
+        for line in lines {
             assert!(resolved.contains(&line), "{line} not in {resolved}");
         }
-        let nodes = format!("node_spacing = {:?}", run.node_spacing);
-        assert_eq!(
-            resolved.contains(&nodes),
-            run.vertex_spacing == 0.0 || given,
-            "{resolved}"
-        );
-        let d = loaded.case.blade.depth;
-        (d, run.increment, run.node_spacing, run.vertex_spacing)
-    }
-
-    #[test]
-    fn the_vertex_grounds_resolved_case_names_no_node_spacing() {
-        let loaded = parse_case(REFINED, &[]).unwrap();
-        assert!(loaded.case.run.vertex_spacing > 0.0);
-        let resolved = loaded.resolved_toml();
         assert!(!resolved.contains("node_spacing"), "{resolved}");
         assert_eq!(parse_case(&resolved, &[]).unwrap().case, loaded.case);
-        // Changed to the node grid, it takes the grid's default at its
-        // increment, as the case file itself would.
-        let v0 = format!("run.increment={:?}", loaded.case.run.increment);
-        let nodes = ["run.vertex_spacing=0", "run.time_scheme=\"explicit\""];
-        let on_nodes = nodes.map(|s| s.parse().unwrap());
-        let from_resolved = parse_case(&resolved, &on_nodes).unwrap();
-        let mut and_increment = on_nodes.to_vec();
-        and_increment.push(v0.parse().unwrap());
-        let from_file = parse_case(REFINED, &and_increment).unwrap();
-        assert_eq!(
-            from_resolved.case.run.node_spacing,
-            from_file.case.run.node_spacing
-        );
+        (
+            loaded.case.blade.depth,
+            run.increment,
+            run.vertices().copied(),
+        )
+    }
+
+    /// The vertex spacing of `ground`, panicking on the node grid.
+    fn spacing(ground: Option<VertexGround>) -> f64 {
+        ground.expect("on the vertex ground").spacing
     }
 
     #[test]
-    fn increment_and_nodes_default_by_the_class_of_case() {
+    fn increment_and_ground_default_by_the_class_of_case() {
         let original = without_increment(ORIGINAL);
         let refined = without_increment(REFINED);
         // The original model: d/250 on the vertex ground, vertices d/50
-        // apart, in softening soil; on nodes every d/25 (ten increments)
-        // where it never softens.
-        let (d, v0, _, vertices) = resolved_ground(&original, &[]);
-        assert_eq!((v0, vertices), (d / 250.0, d / 50.0));
-        let (d, v0, h) = resolved_grid(&original, &["soil.friction.residual=35"]);
-        assert_eq!((v0, h), (d / 250.0, 10.0 * (d / 250.0)));
-        // The refined model in softening soil: d/350 on the vertex ground,
-        // vertices d/50 apart (d/100 under a raked blade), a finite width
-        // too; on nodes (given node spacing, or no vertices) d/1250, nodes
-        // every increment.
-        let (d, v0, _, vertices) = resolved_ground(&refined, &[]);
-        assert_eq!((v0, vertices), (d / 350.0, d / 50.0));
-        let (d, v0, _, vertices) = resolved_ground(&refined, &["blade.rake=70"]);
-        assert_eq!((v0, vertices), (d / 350.0, d / 100.0));
-        let (d, v0, _, vertices) = resolved_ground(&refined, &["blade.width=40"]);
-        assert_eq!((v0, vertices), (d / 350.0, d / 50.0));
-        let (d, v0, h, vertices) = resolved_ground(&refined, &["run.vertex_spacing=0"]);
-        assert_eq!((v0, h, vertices), (d / 1250.0, d / 1250.0, 0.0));
-        let given = ["run.node_spacing=0.04", "run.increment=0.04"];
-        assert_eq!(resolved_ground(&refined, &given).3, 0.0);
-        // The refined model in soil that never softens (Fig. 8b's kind):
-        // d/250 on vertices d/25, 1 sample per band; on the node grid,
-        // given, d/500 on the coarse grid, h = d/25 in whole increments.
-        let never = ["soil.friction.residual=35"];
-        let (d, v0, _, vertices) = resolved_ground(&refined, &never);
-        assert_eq!((v0, vertices), (d / 250.0, d / 25.0));
-        let samples = |overrides: &[&str]| {
-            let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
-            parse_case(&refined, &overrides)
-                .unwrap()
-                .case
-                .run
-                .samples_per_band
-        };
-        assert_eq!(samples(&never), 1.0);
-        assert_eq!(samples(&[]), 8.0);
-        let on_nodes = ["soil.friction.residual=35", "run.vertex_spacing=0"];
-        assert_eq!(samples(&on_nodes), 8.0);
-        let (d, v0, h) = resolved_grid(&refined, &on_nodes);
+        // apart in softening soil, d/25 where it never softens (the coarse
+        // node grid's class before issue 49).
+        let (d, v0, v) = resolved_ground(&original, &[]);
+        assert_eq!((v0, spacing(v)), (d / 250.0, d / 50.0));
+        let (d, v0, v) = resolved_ground(&original, &["soil.friction.residual=35"]);
+        assert_eq!((v0, spacing(v)), (d / 250.0, d / 25.0));
+        // The refined model in softening soil: d/350, vertices d/50 (d/100
+        // raked), 8 samples; on the node grid d/1250.
+        let (d, v0, v) = resolved_ground(&refined, &[]);
+        assert_eq!((v0, spacing(v)), (d / 350.0, d / 50.0));
+        assert_eq!(v.unwrap().samples_per_band, 8.0);
+        let (d, v0, v) = resolved_ground(&refined, &["blade.rake=70"]);
+        assert_eq!((v0, spacing(v)), (d / 350.0, d / 100.0));
+        let (d, v0, v) = resolved_ground(&refined, &["run.ground=\"nodes\""]);
+        assert_eq!((v0, v), (d / 1250.0, None));
+        // Soil that never softens: d/250 on vertices d/25, 1 sample; on
+        // the node grid d/500.
+        let never = "soil.friction.residual=35";
+        let (d, v0, v) = resolved_ground(&refined, &[never]);
+        assert_eq!((v0, spacing(v)), (d / 250.0, d / 25.0));
+        assert_eq!(v.unwrap().samples_per_band, 1.0);
+        let (d, v0, _) = resolved_ground(&refined, &[never, "run.ground=\"nodes\""]);
         assert_eq!(v0, d / 500.0);
-        let n = (h / v0).round();
-        assert_eq!(h, n * v0);
-        assert!(
-            n * v0 <= d / 25.0 * (1.0 + 1e-12) && (n + 1.0) * v0 > d / 25.0,
-            "{h}"
-        );
-        // An increment given keeps the class's grid rule at that increment.
-        let (_, v0, h) = resolved_grid(&original, &["run.increment=0.05"]);
-        assert_eq!((v0, h), (0.05, 0.05));
-        let (_, v0, h, vertices) = resolved_ground(&refined, &["run.increment=0.02"]);
-        assert_eq!((v0, h, vertices), (0.02, 0.02, 20.0 / 50.0));
-        let given = [
-            "soil.friction.residual=35",
-            "run.increment=0.2",
-            "run.vertex_spacing=0",
-        ];
-        let (_, v0, h) = resolved_grid(&refined, &given);
-        assert_eq!(v0, 0.2);
-        assert!((h - 0.8).abs() < 1e-12, "{h}");
-        let coarse = parse_case(&original, &["run.node_spacing=0.08".parse().unwrap()]).unwrap();
-        assert_eq!(coarse.case.run.node_spacing, 0.08);
-        assert_eq!(coarse.case.run.increment, 0.08);
-        let e = key_error(&original, &["run.node_spacing=0.03"]);
-        assert_eq!(e.key, "run.node_spacing");
+        // An increment given keeps the class's spacing.
+        let (d, v0, v) = resolved_ground(&refined, &["run.increment=0.02"]);
+        assert_eq!((v0, spacing(v)), (0.02, d / 50.0));
     }
 
     #[test]
-    fn the_time_scheme_defaults_by_the_ground_and_midpoint_needs_vertices() {
-        let refined = without_increment(REFINED);
-        let scheme = |overrides: &[&str]| {
-            let overrides: Vec<Override> = overrides.iter().map(|s| s.parse().unwrap()).collect();
-            let loaded = parse_case(&refined, &overrides).unwrap();
-            let resolved = loaded.resolved_toml();
-            (loaded.case.run.time_scheme, resolved)
-        };
-        let (on_vertices, resolved) = scheme(&[]);
-        assert_eq!(on_vertices, TimeScheme::MidpointForce);
-        assert!(
-            resolved.contains("time_scheme = \"midpoint-force\""),
-            "{resolved}"
+    fn a_key_of_the_other_ground_is_refused_naming_it() {
+        let nodes = "run.ground=\"nodes\"";
+        for key in [
+            "run.vertex_spacing=0.4",
+            "run.samples_per_band=8",
+            "run.time_scheme=\"explicit\"",
+            "run.merge_tolerance=0",
+        ] {
+            let e = key_error(REFINED, &[nodes, key]);
+            assert_eq!(e.key, key.split('=').next().unwrap(), "{e}");
+            assert!(e.message.contains("run.ground = \"vertices\""), "{e}");
+        }
+        // The coarse grid's key names what to write instead.
+        for set in [
+            &["run.node_spacing=0.4"][..],
+            &[nodes, "run.node_spacing=0.4"],
+        ] {
+            let e = key_error(REFINED, set);
+            assert_eq!(e.key, "run.node_spacing", "{e}");
+            assert!(e.message.contains("remove it"), "{e}");
+        }
+        let e = key_error(REFINED, &["run.ground=\"grid\""]);
+        assert_eq!(e.key, "run.ground", "{e}");
+        assert!(e.message.contains("`vertices` or `nodes`"), "{e}");
+        let e = key_error(
+            REFINED,
+            &["run.ground=\"vertices\"", "run.vertex_spacing=0"],
         );
-        assert_eq!(scheme(&["run.vertex_spacing=0"]).0, TimeScheme::Explicit);
-        let given = scheme(&["run.time_scheme=\"explicit\""]);
-        assert_eq!(given.0, TimeScheme::Explicit);
-        // Explicit on the vertex ground takes its own default increment,
-        // d/500, as does the sign rule of the face friction, which has no
-        // midpoint force.
-        let (d, v0, _, _) = resolved_ground(&refined, &["run.time_scheme=\"explicit\""]);
+        assert_eq!(e.key, "run.vertex_spacing", "{e}");
+    }
+
+    #[test]
+    fn an_old_node_grid_file_runs_on_the_node_grid_with_a_notice() {
+        // As earlier versions wrote a node-grid case: vertex_spacing = 0 and
+        // the node grid's only values of the vertex ground's keys.
+        let old = [
+            "run.vertex_spacing=0",
+            "run.node_spacing=0.2",
+            "run.time_scheme=\"explicit\"",
+            "run.merge_tolerance=0",
+            "run.samples_per_band=0",
+        ];
+        let from_old = loaded(REFINED, &old);
+        let new = loaded(REFINED, &["run.ground=\"nodes\""]);
+        assert_eq!(from_old.case, new.case);
+        assert!(new.notices().is_empty());
+        let notices = from_old.notices();
+        assert_eq!(notices.len(), 2, "{notices:?}");
+        assert!(
+            notices[0].contains("write run.ground = \"nodes\""),
+            "{notices:?}"
+        );
+        assert!(notices[1].contains("run.node_spacing"), "{notices:?}");
+        assert_eq!(from_old.resolved_toml(), new.resolved_toml());
+        // The sampled search of the node grid is gone: named.
+        let e = key_error(REFINED, &["run.vertex_spacing=0", "run.samples_per_band=8"]);
+        assert_eq!(e.key, "run.samples_per_band", "{e}");
+    }
+
+    #[test]
+    fn the_time_scheme_defaults_by_the_face_friction() {
+        let refined = without_increment(REFINED);
+        let scheme = |o: &[&str]| resolved_ground(&refined, o).2.unwrap().time_scheme;
+        assert_eq!(scheme(&[]), TimeScheme::MidpointForce);
+        assert_eq!(
+            scheme(&["run.time_scheme=\"explicit\""]),
+            TimeScheme::Explicit
+        );
+        // Explicit takes its own default increment, d/500, as does the
+        // sign rule of the face friction, which has no midpoint force.
+        let (d, v0, _) = resolved_ground(&refined, &["run.time_scheme=\"explicit\""]);
         assert_eq!(v0, d / 500.0);
         let sign = ["choices.face_friction=\"sign\""];
-        assert_eq!(scheme(&sign).0, TimeScheme::Explicit);
+        assert_eq!(scheme(&sign), TimeScheme::Explicit);
         assert_eq!(resolved_ground(&refined, &sign).1, 20.0 / 500.0);
         let e = key_error(&refined, &[sign[0], "run.time_scheme=\"midpoint-force\""]);
         assert_eq!(e.key, "run.time_scheme");
         assert!(e.message.contains("needs choices.face_friction"), "{e}");
-        let e = key_error(
-            &refined,
-            &["run.vertex_spacing=0", "run.time_scheme=\"midpoint-force\""],
-        );
-        assert_eq!(e.key, "run.time_scheme");
-        assert!(e.message.contains("vertex ground only"), "{e}");
     }
 
     #[test]
     fn merge_tolerance_defaults_to_none_and_refuses_its_range() {
         let refined = without_increment(REFINED);
-        let loaded = parse_case(&refined, &[]).unwrap();
-        assert_eq!(loaded.case.run.merge_tolerance, 0.0);
-        assert!(loaded.resolved_toml().contains("merge_tolerance = 0.0"));
+        let v = resolved_ground(&refined, &[]).2.unwrap();
+        assert_eq!(v.merge_tolerance, 0.0);
         for bad in ["0.5", "-0.01", "nan"] {
             let e = key_error(&refined, &[&format!("run.merge_tolerance={bad}")]);
             assert_eq!(e.key, "run.merge_tolerance", "{bad}");
@@ -1056,17 +979,9 @@ mod tests {
     }
 
     #[test]
-    fn samples_per_band_defaults_and_refuses_a_negative_count() {
-        let loaded = parse_case(ORIGINAL, &[]).unwrap();
-        let samples = loaded.case.run.samples_per_band;
-        assert_eq!(samples, soilcut_model::DEFAULT_SAMPLES_PER_BAND);
-        let resolved = loaded.resolved_toml();
-        assert!(
-            resolved.contains(&format!("samples_per_band = {samples:?}")),
-            "{resolved}"
-        );
-        let every = parse_case(ORIGINAL, &["run.samples_per_band=0".parse().unwrap()]).unwrap();
-        assert_eq!(every.case.search_stride(), 1);
+    fn samples_per_band_refuses_a_negative_count() {
+        let every = resolved_ground(ORIGINAL, &["run.samples_per_band=0"]).2;
+        assert_eq!(every.unwrap().samples_per_band, 0.0);
         for bad in ["-1", "nan", "inf"] {
             let e = key_error(ORIGINAL, &[&format!("run.samples_per_band={bad}")]);
             assert_eq!(e.key, "run.samples_per_band", "{bad}");

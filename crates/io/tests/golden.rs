@@ -28,8 +28,7 @@ fn history_csv(face_friction: &str) -> String {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let set = [
         "run.increment=0.04",
-        "run.node_spacing=0.04",
-        "run.samples_per_band=0",
+        "run.ground=\"nodes\"",
         &format!("choices.face_friction={face_friction}"),
     ]
     .map(|s| s.parse().unwrap());

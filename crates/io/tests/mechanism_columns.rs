@@ -83,7 +83,7 @@ fn balance(history: &[StepRecord], alpha: f64, what: &str) {
 fn the_first_block_is_coulombs_wedge_and_its_factor_eq_1s() {
     for name in CUTS {
         for rule in ["mean-of-angles", "angle-of-mean-shear"] {
-            for ground in [&[][..], &["run.vertex_spacing=0"][..]] {
+            for ground in [&[][..], &["run.ground=\"nodes\""][..]] {
                 let band = format!("choices.band_angles=\"{rule}\"");
                 let set: Vec<&str> = [&[band.as_str()][..], ground].concat();
                 let c = case(name, &set);
@@ -121,7 +121,7 @@ fn every_increment_balances_the_block_the_dem_reduction_reads() {
             let band = format!("choices.band_angles=\"{rule}\"");
             // Two depths on the vertex ground (the band softens and moves);
             // a quarter depth on nodes (d/1250 increments).
-            for (ground, travel) in [(&[][..], 2.0), (&["run.vertex_spacing=0"][..], 0.25)] {
+            for (ground, travel) in [(&[][..], 2.0), (&["run.ground=\"nodes\""][..], 0.25)] {
                 let d = case(name, &[]).blade.depth;
                 let travel = format!("run.travel={}", travel * d);
                 let set: Vec<&str> = [&[band.as_str(), travel.as_str()][..], ground].concat();

@@ -5,13 +5,13 @@
 //! profile, with `==`.
 
 use soilcut_io::read_case;
-use soilcut_model::{default_node_spacing, Case, Simulation};
+use soilcut_model::{Case, Ground, Simulation};
 use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The shipped case at increment d / `per_depth` over `travel_depths`
-/// depths (none: its own travel), with the default node spacing for it, as
-/// `--set run.increment=… --set run.travel=…` would give.
+/// depths (none: its own travel), as `--set run.increment=… --set
+/// run.travel=…` would give.
 fn shortened(name: &str, per_depth: f64, travel_depths: Option<f64>) -> Case {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../cases")
@@ -19,7 +19,6 @@ fn shortened(name: &str, per_depth: f64, travel_depths: Option<f64>) -> Case {
     let mut case = read_case(&path, &[]).unwrap().case;
     let d = case.blade.depth;
     case.run.increment = d / per_depth;
-    case.run.node_spacing = default_node_spacing(&case.soil, d, case.run.increment);
     if let Some(depths) = travel_depths {
         case.run.travel = depths * d;
     }
@@ -63,20 +62,15 @@ fn points(case: &Case) -> Vec<usize> {
     at
 }
 
-/// Every paper case, and fig8b's coarse grid between nodes: its soil only
-/// hardens, nodes every d/25 at d/100 (k = 4), restored with the face
-/// between nodes (2 of 4 increments on) in the same run as its other
-/// points.
+/// Every paper case, on its own ground and on the node grid.
 #[test]
-fn every_paper_case_continues_bit_for_bit_also_between_nodes() {
+fn every_paper_case_continues_bit_for_bit_on_either_ground() {
     for name in ["original", "table1-s", "table1-hs", "fig5", "fig8b"] {
         let case = shortened(&format!("paper/{name}.toml"), 100.0, Some(3.0));
-        let mut at = points(&case);
-        if name == "fig8b" {
-            assert_eq!(case.increments_per_node(), 4);
-            at.extend([2, 101, 150]);
-        }
-        continues_bit_for_bit(&case, &at);
+        continues_bit_for_bit(&case, &points(&case));
+        let mut nodes = case;
+        nodes.run.ground = Ground::Nodes;
+        continues_bit_for_bit(&nodes, &points(&nodes));
     }
 }
 

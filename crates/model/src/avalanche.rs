@@ -45,10 +45,7 @@ impl Avalanche {
     ) -> Range<usize> {
         // s_down, s_up = Δx times the grid's repose slopes (M29); the passes
         // restore −s_down ≤ y_{i+1} − y_i ≤ s_up (M28).
-        let (down, up) = (
-            surface.scheme.spacing * slopes.0,
-            surface.scheme.spacing * slopes.1,
-        );
+        let (down, up) = (surface.spacing * slopes.0, surface.spacing * slopes.1);
         self.set_windows(changed, first, surface.len());
         let mut touched = first..first;
         for _ in 0..MAX_PASSES {
@@ -140,7 +137,7 @@ impl Avalanche {
         let tolerance = SLOPE_TOLERANCE * s;
         for i in window {
             let w = surface.node_weight(i, first);
-            let g = sign * surface.height[i] + s * surface.face_at(first).spacings(i);
+            let g = sign * surface.height[i] + s * (i - first) as f64;
             let mut top = Pool::new(i, w, g);
             while self.pools.len() > bottom {
                 let below = self.pools.last_mut().expect("a pool below");
@@ -189,8 +186,8 @@ impl Avalanche {
             .extend_from_slice(&surface.height[range.clone()]);
         let (mut lost_area, mut lost_mass, mut lost_shear, mut gained_area) = (0.0, 0.0, 0.0, 0.0);
         for i in range.clone() {
-            let new = sign * (mean - s * surface.face_at(first).spacings(i));
-            let w = surface.node_weight(i, first) * surface.scheme.spacing;
+            let new = sign * (mean - s * (i - first) as f64);
+            let w = surface.node_weight(i, first) * surface.spacing;
             let delta = (new - surface.height[i]) * w;
             if delta < 0.0 {
                 let m = -delta * surface.unit_weight[i];
@@ -209,7 +206,7 @@ impl Avalanche {
         let deposit_weight = lost_mass / gained_area;
         let deposit_shear = lost_shear / lost_mass;
         for (k, i) in range.enumerate() {
-            let w = surface.node_weight(i, first) * surface.scheme.spacing;
+            let w = surface.node_weight(i, first) * surface.spacing;
             let old_area = (self.old_height[k] - surface.floor) * w;
             let gain = (surface.height[i] - self.old_height[k]) * w;
             if gain <= 0.0 {

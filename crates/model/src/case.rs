@@ -12,11 +12,9 @@ mod validate;
 mod warnings;
 
 pub use defaults::{
-    default_increment, default_increments_per_depth, default_node_spacing,
-    default_samples_per_band, default_time_scheme, default_vertex_spacing, COARSE_NODES_PER_DEPTH,
-    DEFAULT_SAMPLES_PER_BAND, NON_SOFTENING_INCREMENTS_PER_DEPTH, NON_SOFTENING_SAMPLES_PER_BAND,
-    NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH, NON_SOFTENING_VERTICES_PER_DEPTH,
-    ORIGINAL_INCREMENTS_PER_DEPTH, RAKED_VERTICES_PER_DEPTH, SOFTENING_INCREMENTS_PER_DEPTH,
+    Class, GroundKind, RunKeys, DEFAULT_SAMPLES_PER_BAND, NODE_INCREMENTS_PER_DEPTH,
+    NON_SOFTENING_SAMPLES_PER_BAND, NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH,
+    NON_SOFTENING_VERTICES_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH, RAKED_VERTICES_PER_DEPTH,
     VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
@@ -131,31 +129,74 @@ impl Soil {
     }
 }
 
-/// How far the blade goes and in what increments.
+/// How far the blade goes, in what increments, and on which ground.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Run {
-    /// Total blade displacement.
+    /// Total blade displacement (length).
     pub travel: f64,
-    /// v0: blade displacement per increment.
+    /// v0: blade displacement per increment (length).
     pub increment: f64,
-    /// h: spacing of the surface nodes, a whole multiple k = h / v0 of the
-    /// increment (k = 1 is the reference scheme; see `surface`).
-    pub node_spacing: f64,
-    /// Candidates the search's first stage evaluates per band width dB
-    /// (0: every node; `Case::search_stride`, docs/model.md §2.8).
+    /// The discretisation of the ground (`run.ground`), with its own keys.
+    pub ground: Ground,
+}
+
+/// The discretisation a case runs on (`run.ground`): one choice, each with
+/// its own keys, so that no number of one ground means "the other ground".
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Ground {
+    /// `"vertices"`, the default: the free surface as vertices that the
+    /// bands create and the soil carries (docs/model.md §1.2, §3).
+    Vertices(VertexGround),
+    /// `"nodes"`: the node grid, nodes every increment (h = v0) and an
+    /// exhaustive search: the yardstick the defaults are judged against
+    /// (docs/model.md §9).
+    Nodes,
+}
+
+impl Ground {
+    /// The case file's word for the ground: `vertices` or `nodes`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Ground::Vertices(_) => "vertices",
+            Ground::Nodes => "nodes",
+        }
+    }
+}
+
+/// The keys of the vertex ground (docs/model.md §1.2).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VertexGround {
+    /// h (`run.vertex_spacing`, length): vertices every h on flat ground,
+    /// and a band's points snap to a vertex within h/2.
+    pub spacing: f64,
+    /// K (`run.samples_per_band`): candidates the search's first stage
+    /// evaluates per band width dB (0: every vertex; (M47)).
     pub samples_per_band: f64,
-    /// h of the vertex ground (0: the node grid; docs/model.md §19):
-    /// vertices every h on flat ground, and a band's points snap to a
-    /// vertex within h/2 (issue 28; the default of its class of case,
-    /// `default_vertex_spacing`).
-    pub vertex_spacing: f64,
-    /// When in the increment a band's strength is taken (docs/model.md §19;
-    /// the default of its ground, `default_time_scheme`).
+    /// When in the increment a band's strength is taken
+    /// (`run.time_scheme`, (M51)).
     pub time_scheme: TimeScheme,
-    /// Relative tolerance within which a vertex of the vertex ground that
-    /// carries no information is removed after each increment (0: none,
-    /// the default; `Ground::merge_quiet`, docs/model.md §19).
+    /// Relative tolerance within which a vertex that carries no
+    /// information is removed after each increment (`run.merge_tolerance`,
+    /// 0: none, the default; (M50)).
     pub merge_tolerance: f64,
+}
+
+impl Run {
+    /// The vertex ground's keys, `None` on the node grid.
+    pub fn vertices(&self) -> Option<&VertexGround> {
+        match &self.ground {
+            Ground::Vertices(v) => Some(v),
+            Ground::Nodes => None,
+        }
+    }
+
+    /// The vertex ground's keys to change, `None` on the node grid.
+    pub fn vertices_mut(&mut self) -> Option<&mut VertexGround> {
+        match &mut self.ground {
+            Ground::Vertices(v) => Some(v),
+            Ground::Nodes => None,
+        }
+    }
 }
 
 /// When in the increment the chosen band's strength is taken.
@@ -326,31 +367,10 @@ impl Case {
         self.soil.unit_weight * self.blade.depth * self.blade.depth
     }
 
-    /// k = h / v0: increments per node spacing (1: the reference scheme).
-    pub fn increments_per_node(&self) -> usize {
-        (self.run.node_spacing / self.run.increment)
-            .round()
-            .max(1.0) as usize
-    }
-
-    /// The search's stride: its first stage evaluates every stride-th
-    /// candidate from the face, dB / (samples h) nodes apart (at least 1;
-    /// 1 for a slip line or with `run.samples_per_band` = 0), its second
-    /// every node within a stride of their local minima (docs/model.md §2.8,
-    /// (M47)).
-    pub fn search_stride(&self) -> usize {
-        let samples = self.run.samples_per_band;
-        if samples == 0.0 {
-            return 1;
-        }
-        let spacing = samples * self.run.node_spacing;
-        ((self.soil.band_width / spacing).floor() as usize).max(1)
-    }
-
-    /// The last node of the ground: the node at or before the end wall
-    /// (`bin.length`), if there is one.
+    /// The last node of the node grid (nodes every increment): the node
+    /// at or before the end wall (`bin.length`), if there is one.
     pub fn wall_node(&self) -> Option<usize> {
-        self.wall_point(self.run.node_spacing)
+        self.wall_point(self.run.increment)
     }
 
     /// The last point, `spacing` apart from x = 0, at or before the end
@@ -361,12 +381,11 @@ impl Case {
     }
 
     /// The spacing of the ground's points: `run.vertex_spacing` on the
-    /// vertex ground, else `run.node_spacing`.
+    /// vertex ground, the increment on the node grid.
     pub fn ground_spacing(&self) -> f64 {
-        if self.run.vertex_spacing > 0.0 {
-            self.run.vertex_spacing
-        } else {
-            self.run.node_spacing
+        match &self.run.ground {
+            Ground::Vertices(v) => v.spacing,
+            Ground::Nodes => self.run.increment,
         }
     }
 

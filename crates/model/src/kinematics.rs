@@ -24,9 +24,6 @@
 //! the old area plus the dilation. Block nodes carry their state, band nodes
 //! keep theirs (the band is part of the ground) and all accumulate Δut.
 //!
-//! **Coarse node grid** (h = k v0, k > 1): the same motion on nodes that the
-//! face passes only every k increments (`coarse`).
-//!
 //! **Mass** (all): the band's nodes, from the first one the band reaches to
 //! the emergence node, take one uniform unit weight chosen so that the weight
 //! of the soil in front of the blade is unchanged (paper: γ = Wb / Anew for
@@ -41,12 +38,9 @@ use crate::search::Choice;
 use crate::surface::Surface;
 use std::ops::Range;
 
-mod coarse;
-
-/// How the face moves in an increment (by v0, `Scheme::increment`): how
-/// much deeper the tip goes (Δd, negative while it rises), and the face
-/// node and its offset δ/h afterwards (node b + 1 and 0 on the reference
-/// grid h = v0; `Scheme::face_after`).
+/// How the face moves in an increment (by v0 = h): how much deeper the tip
+/// goes (Δd, negative while it rises), and the face node afterwards
+/// (node b + 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Advance {
     /// Δd, how much deeper the tip goes (length).
@@ -82,10 +76,6 @@ pub struct Kinematics {
     position: Vec<f64>,
     /// γ of nodes b..=j before the update.
     old_unit_weight: Vec<f64>,
-    /// Heights and accumulated shear of nodes b..=j before the update
-    /// (coarse grid only).
-    old_height: Vec<f64>,
-    old_shear: Vec<f64>,
 }
 
 impl Kinematics {
@@ -99,17 +89,10 @@ impl Kinematics {
         rake: &Rake,
         advance: Advance,
     ) -> Update {
-        if !surface.scheme.reference() {
-            return self.coarse(surface, band, choice, choices, rake, advance);
-        }
         let (trench_mass, mass_before) = self.start(surface, band, advance);
         surface.face = advance.face;
         let deepening = advance.deepening;
-        let motion = BandMotion::new(
-            (choice.tan_beta, choice.dilation),
-            rake,
-            surface.scheme.spacing,
-        );
+        let motion = BandMotion::new((choice.tan_beta, choice.dilation), rake, surface.spacing);
         let update =
             match motion.and_then(|m| self.shear_band(surface, band, m, choices.band_shear)) {
                 Some(update) => update,
@@ -146,7 +129,7 @@ impl Kinematics {
         // face's lift; a rising tip, Δd < 0, leaves more behind and lifts
         // the face less).
         let depth_below = -surface.floor - band.depth - 0.5 * advance.deepening;
-        let trench_mass = surface.unit_weight[b] * (surface.scheme.increment * depth_below);
+        let trench_mass = surface.unit_weight[b] * (surface.spacing * depth_below);
         let mass_before = region_mass(surface, b, b..j + 1) - trench_mass;
         self.old_unit_weight.clear();
         self.old_unit_weight
@@ -166,7 +149,7 @@ impl Kinematics {
         let (b, j, dx, t) = (
             band.face.node,
             band.emergence,
-            surface.scheme.spacing,
+            surface.spacing,
             band.tan_beta,
         );
         let (e, rise, slip) = (band.thickness, motion.rise, motion.slip);
@@ -223,7 +206,7 @@ impl Kinematics {
             let g = band.position(h[i], i);
             if banded && (g_prev - 1.0) * (g - 1.0) < 0.0 {
                 let lambda = (g_prev - 1.0) / (g_prev - g);
-                let x = surface.x(i - 1) + lambda * surface.segment(i - 1);
+                let x = surface.x(i - 1) + lambda * surface.spacing;
                 let y = h[i - 1] + lambda * (h[i] - h[i - 1]);
                 self.image.push((x + v0, y + rise));
                 if g < 1.0 {
@@ -273,11 +256,8 @@ impl Kinematics {
 /// M22).
 pub fn slide_block(surface: &mut Surface, blade: usize, choice: &Choice, rake: &Rake) -> Update {
     let j = choice.node;
-    let BandMotion { rise, slip, .. } = BandMotion::slip_line(
-        (choice.grid_slope, choice.tan_beta),
-        rake,
-        surface.scheme.spacing,
-    );
+    let BandMotion { rise, slip, .. } =
+        BandMotion::slip_line((choice.grid_slope, choice.tan_beta), rake, surface.spacing);
     let h = &mut surface.height;
     // y'_{i+1} = y_i + v0 tan β*, b ≤ i < j (M14).
     h.copy_within(blade..j, blade + 1);
@@ -309,14 +289,11 @@ fn shift_block_state(surface: &mut Surface, blade: usize, end: usize) {
     surface.dilation.copy_within(range, blade + 1);
 }
 
-/// Trapezoid area between the floor and the surface over nodes a..=z
-/// (a the face: its segment is 1 − δ/h of a spacing).
+/// Trapezoid area between the floor and the surface over nodes a..=z.
 fn region_area(surface: &Surface, a: usize, z: usize) -> f64 {
     let (h, floor) = (&surface.height, surface.floor);
     let inner: f64 = h[a + 1..z].iter().map(|y| y - floor).sum();
-    let face_segment = 0.5 * (h[a] - floor + h[a + 1] - floor) * surface.offset_of(a);
-    surface.scheme.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
-        - surface.scheme.spacing * face_segment
+    surface.spacing * (inner + 0.5 * (h[a] - floor) + 0.5 * (h[z] - floor))
 }
 
 /// Weight of the columns of `nodes` as counted by `Surface::mass` with the
@@ -390,7 +367,7 @@ fn mix_column(
 fn spread_residual(surface: &mut Surface, nodes: Range<usize>, residual: f64) {
     let face = surface.face.node;
     let weights: f64 = nodes.clone().map(|i| surface.node_weight(i, face)).sum();
-    let correction = residual / (weights * surface.scheme.spacing);
+    let correction = residual / (weights * surface.spacing);
     for y in &mut surface.height[nodes] {
         *y += correction;
     }

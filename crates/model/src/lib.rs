@@ -46,17 +46,12 @@ pub mod surface;
 pub mod trig;
 
 pub use case::{
-    default_increment, default_increments_per_depth, default_node_spacing,
-    default_samples_per_band, default_time_scheme, default_vertex_spacing,
-};
-pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade, Case, CaseError, Choices,
-    FaceFrictionRule, Model, Run, Soil, TimeScheme, UnitWeightRule, COARSE_NODES_PER_DEPTH,
-    DEFAULT_SAMPLES_PER_BAND, MAGNITUDE, NON_SOFTENING_INCREMENTS_PER_DEPTH,
+    Class, FaceFrictionRule, Ground, GroundKind, Model, Run, RunKeys, Soil, TimeScheme,
+    UnitWeightRule, VertexGround, DEFAULT_SAMPLES_PER_BAND, MAGNITUDE, NODE_INCREMENTS_PER_DEPTH,
     NON_SOFTENING_SAMPLES_PER_BAND, NON_SOFTENING_VERTEX_INCREMENTS_PER_DEPTH,
     NON_SOFTENING_VERTICES_PER_DEPTH, ORIGINAL_INCREMENTS_PER_DEPTH, RAKED_VERTICES_PER_DEPTH,
-    SOFTENING_INCREMENTS_PER_DEPTH, VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,
-    VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
+    VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use landscape::Candidate;
 pub use simulation::{

@@ -31,7 +31,6 @@ pub(crate) mod bounds;
 mod far_field;
 mod input;
 mod line;
-mod refine;
 mod seed;
 mod select;
 
@@ -58,9 +57,6 @@ pub struct Search {
     previous: Option<usize>,
     /// The block of nodes being scanned.
     block: Block,
-    /// The sampled scan's candidates and the windows searched around them.
-    samples: Vec<Choice>,
-    windows: Vec<std::ops::Range<usize>>,
     /// Candidates evaluated in full since creation (for benchmarks).
     pub evaluations: u64,
 }
@@ -89,11 +85,7 @@ impl Search {
         input: &SearchInput,
         max_nodes: usize,
     ) -> Option<Choice> {
-        let mut found = if input.stride > 1 {
-            self.sampled(surface, input, max_nodes)
-        } else {
-            self.scan(surface, input, max_nodes, true, None)
-        };
+        let mut found = self.scan(surface, input, max_nodes, true, None);
         if found.is_none() {
             // None may be true (an end wall leaves no room); that a bound
             // rejected every admissible candidate is proven not to happen:
@@ -106,29 +98,6 @@ impl Search {
             );
         }
         self.previous = found.map(|c| c.node);
-        found
-    }
-
-    /// The sampled scan (`refine`): every stride-th candidate, then every
-    /// node around those within `refine::SLACK` of the least.
-    fn sampled(
-        &mut self,
-        surface: &mut Surface,
-        input: &SearchInput,
-        max_nodes: usize,
-    ) -> Option<Choice> {
-        let mut samples = std::mem::take(&mut self.samples);
-        samples.clear();
-        let mut record = |c: &Choice| samples.push(*c);
-        self.scan(surface, input, max_nodes, true, Some(&mut record))?;
-        let found = refine::refine(
-            surface,
-            input,
-            &mut self.block,
-            &mut samples,
-            (&mut self.windows, &mut self.admissible),
-        );
-        self.samples = samples;
         found
     }
 
@@ -161,22 +130,14 @@ impl Search {
         observer: Option<Observer>,
     ) -> Option<Choice> {
         let b = input.blade;
-        let slack = if prune && input.stride > 1 {
-            refine::SLACK
-        } else {
-            0.0
-        };
-        let mut best = Best::new(std::mem::take(&mut self.admissible), prune, observer, slack);
+        let mut best = Best::new(std::mem::take(&mut self.admissible), prune, observer);
         self.block.start_scan();
         let mut lines = Lines::new(surface, b, input.depth);
         let previous = self.previous.filter(|_| prune);
         if let Some((at, line, angles)) =
             previous.and_then(|j| seed::seed(surface, input, lines, j))
         {
-            if input.stride > 1 {
-                // A sampled scan may pass the seed by: it must be a candidate.
-                best.consider(input, &at, line, angles);
-            } else if let Some(force) = line.force(input, &at, angles) {
+            if let Some(force) = line.force(input, &at, angles) {
                 best.improve(force);
             }
         }

@@ -2,13 +2,12 @@
 //!
 //! Each `step()` finds the minimum-effort mechanism on the current ground,
 //! records its force, moves the soil by it and relaxes the slopes, on the
-//! node grid (`node_grid`) or, where the case sets `run.vertex_spacing`,
-//! on the vertex ground (`ground::cutting`, docs/model.md §19): which one
-//! is decided once, when the simulation is set up (`Discretised`). The
+//! vertex ground (`ground::cutting`) or the node grid (`node_grid`), as
+//! the case's `run.ground` says: which one is decided once, when the simulation is set up (`Discretised`). The
 //! caller owns the loop, so the model can sit inside a robot simulator or
 //! a notebook; `run_to_end` is the whole case.
 
-use crate::case::{Case, CaseError};
+use crate::case::{Case, CaseError, Ground};
 use crate::discretisation::{Context, Discretisation};
 use crate::ground::cutting::Cutting;
 use crate::landscape::Candidate;
@@ -33,13 +32,11 @@ enum Discretised {
 }
 
 impl Discretised {
-    /// The vertex ground where the case sets `run.vertex_spacing` above 0,
-    /// else the node grid; both flat, of fresh soil.
+    /// The ground of the case's `run.ground`, flat, of fresh soil.
     fn flat(case: &Case, laws: &Laws) -> Self {
-        if case.run.vertex_spacing > 0.0 {
-            Discretised::Vertices(Box::new(Cutting::new(case)))
-        } else {
-            Discretised::Nodes(Box::new(NodeGrid::flat(case, laws)))
+        match case.run.ground {
+            Ground::Vertices(keys) => Discretised::Vertices(Box::new(Cutting::new(case, keys))),
+            Ground::Nodes => Discretised::Nodes(Box::new(NodeGrid::flat(case, laws))),
         }
     }
 

@@ -1,34 +1,26 @@
-//! The free surface: nodes on a fixed grid x_i = i Δx, each carrying the
-//! height of the surface, the accumulated shearing displacement ut of the
-//! soil there (with the friction and dilation angles it implies) and the unit
-//! weight γ of its column.
-//!
-//! The grid spacing h is a whole multiple k of the blade increment v0. With
-//! k = 1 (the reference scheme) the blade sits on node b = (steps done)
-//! and a block translating by v0 moves exactly one node. With k > 1 the face
-//! lies between nodes: node b (`face.node`) holds the soil column at the blade, at
-//! x = b h + δ with δ = `face.offset` h (a whole number of increments),
-//! and the nodes ahead stay on the grid x_i = i h. The surface holds the
-//! scheme (`Scheme`), so that h, v0 and k are chosen in one place.
+//! The free surface of the node grid: nodes on a fixed grid x_i = i h,
+//! h = v0 (docs/model.md §9), each carrying the height of the surface, the
+//! accumulated shearing displacement ut of the soil there (with the
+//! friction and dilation angles it implies) and the unit weight γ of its
+//! column. The blade sits on node b = (increments done), and a block
+//! translating by v0 moves exactly one node.
 //!
 //! The soil of node i is its column from the fixed floor y = −d up to the
 //! surface, integrated with the trapezoid rule over the nodes in front of the
 //! blade: the weight of soil is M = h Σ w_i γ_i (y_i + d), w_i = 1 inside,
-//! ½ at the far end, ½ (1 − δ/h) at the face and 1 − ½ δ/h next to it (the
-//! face's segment is h − δ long; `FaceNode`).
+//! ½ at the face and at the far end (`FaceNode`).
 
-use crate::grid::{FaceNode, Scheme};
+use crate::grid::FaceNode;
 use crate::mass::compensated_sum;
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
 pub struct Surface {
-    /// The discretisation, h = k v0 (h = Δx, the node spacing).
-    pub scheme: Scheme,
+    /// h = Δx = v0, the node spacing (length).
+    pub spacing: f64,
     /// y of the floor below which soil never moves (−d).
     pub floor: f64,
-    /// The blade face: the node of the soil column at it, and its offset
-    /// δ / h from that node's grid point, in [0, 1).
+    /// The blade face: the node of the soil column at it.
     pub face: FaceNode,
     /// Unit weight of the ground appended when the domain grows.
     pub ground_unit_weight: f64,
@@ -58,19 +50,18 @@ pub struct Surface {
 }
 
 impl Surface {
-    /// Flat ground y = 0 of `nodes` nodes from x = 0 on the grid of
-    /// `scheme` (the node grid (M1): x_i = i Δx, Δx = v0 on the reference
-    /// scheme), of fresh soil with friction and dilation angles
-    /// `fresh_angles` (radians).
+    /// Flat ground y = 0 of `nodes` nodes from x = 0, `spacing` apart (the
+    /// node grid (M1): x_i = i Δx, Δx = v0), of fresh soil with friction
+    /// and dilation angles `fresh_angles` (radians).
     pub fn flat(
-        scheme: Scheme,
+        spacing: f64,
         depth: f64,
         unit_weight: f64,
         fresh_angles: (f64, f64),
         nodes: usize,
     ) -> Self {
         Surface {
-            scheme,
+            spacing,
             face: FaceNode::default(),
             floor: -depth,
             ground_unit_weight: unit_weight,
@@ -97,33 +88,9 @@ impl Surface {
         self.height.is_empty()
     }
 
-    /// x of node i: i Δx on the grid (M1), the face node offset by δ
-    /// (physical for a vertical blade).
+    /// x of node i: i Δx on the grid (M1) (physical for a vertical blade).
     pub fn x(&self, i: usize) -> f64 {
-        i as f64 * self.scheme.spacing + self.offset_of(i) * self.scheme.spacing
-    }
-
-    /// δ / h if node i is the face node, else 0.
-    pub fn offset_of(&self, i: usize) -> f64 {
-        if i == self.face.node {
-            self.face.offset
-        } else {
-            0.0
-        }
-    }
-
-    /// The face as node `first` sees it: its offset if it is the face
-    /// node, else none.
-    pub fn face_at(&self, first: usize) -> FaceNode {
-        FaceNode {
-            node: first,
-            offset: self.offset_of(first),
-        }
-    }
-
-    /// Length of the segment from node i to node i + 1.
-    pub fn segment(&self, i: usize) -> f64 {
-        self.scheme.spacing * self.face.segment(i)
+        i as f64 * self.spacing
     }
 
     /// Appends `nodes` nodes of undisturbed flat ground at the far end.
@@ -140,17 +107,17 @@ impl Surface {
         // already counts. Found by fuzzing (docs/fuzzing.md): a slip line
         // at 75° friction reached the end, and the growth gained that half.
         let last = self.len() - 1;
-        let half = 0.5 * self.scheme.spacing * (self.height[last] - self.floor);
-        self.appended_area += half - 0.5 * self.scheme.spacing * (0.0 - self.floor);
+        let half = 0.5 * self.spacing * (self.height[last] - self.floor);
+        self.appended_area += half - 0.5 * self.spacing * (0.0 - self.floor);
         self.appended_mass += half * self.unit_weight[last]
-            - 0.5 * self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing;
+            - 0.5 * self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
         let n = self.len() + nodes;
         self.height.resize(n, 0.0);
         self.accumulated_shear.resize(n, 0.0);
         self.unit_weight.resize(n, self.ground_unit_weight);
         self.friction.resize(n, self.fresh_angles.0);
         self.dilation.resize(n, self.fresh_angles.1);
-        let appended = (0.0 - self.floor) * self.scheme.spacing * nodes as f64;
+        let appended = (0.0 - self.floor) * self.spacing * nodes as f64;
         self.appended_area += appended;
         self.appended_mass += self.ground_unit_weight * appended;
     }
@@ -165,13 +132,13 @@ impl Surface {
         if i + 1 == self.len() {
             0.5
         } else {
-            self.face_at(first).node_weight(i)
+            FaceNode { node: first }.node_weight(i)
         }
     }
 
     /// Area of the column of node i (trapezoid share, above the floor).
     pub fn column_area(&self, i: usize, first: usize) -> f64 {
-        self.node_weight(i, first) * (self.height[i] - self.floor) * self.scheme.spacing
+        self.node_weight(i, first) * (self.height[i] - self.floor) * self.spacing
     }
 
     /// Area of soil in front of the blade at node `first` (above the floor,
@@ -186,13 +153,7 @@ impl Surface {
     /// existed at the start: M = Δx Σ w_i γ_i (y_i − y_floor) + M_trench
     /// less the appended ground (M24).
     pub fn mass(&self, first: usize) -> f64 {
-        // The closed form below knows the face's half weight only on the grid.
-        let near = if self.offset_of(first) == 0.0 {
-            first
-        } else {
-            first + 2
-        };
-        let undisturbed = self.pristine_from.max(near).clamp(first, self.len());
+        let undisturbed = self.pristine_from.max(first).clamp(first, self.len());
         let disturbed =
             (first..undisturbed).map(|i| self.unit_weight[i] * self.column_area(i, first));
         // Undisturbed columns, γ0 d Δx each (half at the ends), in closed form.
@@ -201,7 +162,7 @@ impl Surface {
             .iter()
             .filter(|&&i| i >= undisturbed)
             .count() as f64;
-        let column = self.ground_unit_weight * (0.0 - self.floor) * self.scheme.spacing;
+        let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
         let pristine = column * (whole - 0.5 * halves.min(whole));
         compensated_sum(disturbed.chain([pristine, self.trench_mass, -self.appended_mass]))
     }
@@ -213,12 +174,7 @@ mod tests {
 
     #[test]
     fn growing_flat_ground_keeps_mass() {
-        let scheme = Scheme {
-            spacing: 0.1,
-            increment: 0.1,
-            increments_per_node: 1,
-        };
-        let mut s = Surface::flat(scheme, 2.0, 1.5, (0.5, 0.0), 101);
+        let mut s = Surface::flat(0.1, 2.0, 1.5, (0.5, 0.0), 101);
         let m0 = s.mass(0);
         assert!((m0 - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         s.grow(37);
@@ -228,12 +184,7 @@ mod tests {
 
     #[test]
     fn growing_past_soil_at_the_end_keeps_mass() {
-        let scheme = Scheme {
-            spacing: 0.1,
-            increment: 0.1,
-            increments_per_node: 1,
-        };
-        let mut s = Surface::flat(scheme, 2.0, 1.5, (0.5, 0.0), 101);
+        let mut s = Surface::flat(0.1, 2.0, 1.5, (0.5, 0.0), 101);
         // Soil that has reached the last node, looser than the ground.
         s.height[99] = 0.02;
         s.height[100] = 0.01;

@@ -168,7 +168,10 @@ fn a_run_under_the_crossed_columns_keeps_its_mass() {
         common::refined("fig5", 2.0, 250.0),
         50.0,
     ));
-    fig5.run.time_scheme = soilcut_model::TimeScheme::MidpointForce;
+    fig5.run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .time_scheme = soilcut_model::TimeScheme::MidpointForce;
     let mut raked = steep_pile(1.0);
     raked.blade.rake = 60.0;
     let mut unfloored = steep_pile(2.0);
@@ -183,7 +186,7 @@ fn a_run_under_the_crossed_columns_keeps_its_mass() {
 fn the_crossed_columns_are_refused_where_there_are_no_columns() {
     // The node grid: its nodes are no columns a band crosses.
     let mut nodes = steep_pile(0.5);
-    nodes.run.vertex_spacing = 0.0;
+    nodes.run.ground = soilcut_model::Ground::Nodes;
     let e = Simulation::new(&nodes).expect_err("refused on the node grid");
     assert!(format!("{e}").contains("choices.band_strength"), "{e}");
     // The angle of the mean shear: each column's φ is floored on its own.
@@ -210,7 +213,11 @@ fn the_midpoint_force_shears_only_the_footprint_of_the_crossed_columns() {
         50.0,
     ));
     let mut midpoint = case.clone();
-    midpoint.run.time_scheme = soilcut_model::TimeScheme::MidpointForce;
+    midpoint
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .time_scheme = soilcut_model::TimeScheme::MidpointForce;
     let (mut e, mut m) = (
         Simulation::new(&case).unwrap(),
         Simulation::new(&midpoint).unwrap(),

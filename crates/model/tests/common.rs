@@ -1,7 +1,7 @@
 //! Shared case builders for the model's integration tests.
 #![allow(dead_code)]
 
-use soilcut_model::{AngleLaw, Blade, Case, Model, Run, Soil, TimeScheme};
+use soilcut_model::{AngleLaw, Blade, Case, Ground, Model, Run, Soil, TimeScheme, VertexGround};
 
 /// The paper's original-model case (docs/model.md §13), shortened to
 /// `travel_depths` depths at increment d / `per_depth`.
@@ -37,11 +37,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
         run: Run {
             travel: travel_depths * d,
             increment: d / per_depth,
-            node_spacing: d / per_depth,
-            samples_per_band: 0.0,
-            vertex_spacing: 0.0,
-            time_scheme: TimeScheme::Explicit,
-            merge_tolerance: 0.0,
+            ground: Ground::Nodes,
         },
         bin: Default::default(),
         choices: Default::default(),
@@ -50,9 +46,14 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
 
 /// `case` on the vertex ground (docs/model.md §19), vertices d/`per_depth`
 /// apart, with the sampled search's default K (it has no exhaustive one).
+/// The time scheme is the explicit one.
 pub fn on_vertices(mut case: Case, per_depth: f64) -> Case {
-    case.run.vertex_spacing = case.blade.depth / per_depth;
-    case.run.samples_per_band = soilcut_model::DEFAULT_SAMPLES_PER_BAND;
+    case.run.ground = Ground::Vertices(VertexGround {
+        spacing: case.blade.depth / per_depth,
+        samples_per_band: soilcut_model::DEFAULT_SAMPLES_PER_BAND,
+        time_scheme: TimeScheme::Explicit,
+        merge_tolerance: 0.0,
+    });
     case
 }
 
@@ -60,9 +61,11 @@ pub fn on_vertices(mut case: Case, per_depth: f64) -> Case {
 /// (`VERTEX_INCREMENTS_PER_DEPTH`), vertices d/50, the midpoint force.
 pub fn at_vertex_defaults(mut case: Case) -> Case {
     case.run.increment = case.blade.depth / soilcut_model::VERTEX_INCREMENTS_PER_DEPTH;
-    case.run.node_spacing = case.run.increment;
-    case.run.time_scheme = TimeScheme::MidpointForce;
-    on_vertices(case, soilcut_model::VERTICES_PER_DEPTH)
+    let mut case = on_vertices(case, soilcut_model::VERTICES_PER_DEPTH);
+    if let Some(v) = case.run.vertices_mut() {
+        v.time_scheme = TimeScheme::MidpointForce;
+    }
+    case
 }
 
 /// Coulomb's passive coefficient with wall friction (angles in degrees).

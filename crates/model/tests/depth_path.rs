@@ -210,7 +210,10 @@ fn a_steered_run_is_the_run_of_its_resolved_case() {
         let mut case = case.clone();
         case.choices.face_friction = rule;
         if rule == FaceFrictionRule::Sign {
-            case.run.time_scheme = soilcut_model::TimeScheme::Explicit;
+            case.run
+                .vertices_mut()
+                .expect("on the vertex ground")
+                .time_scheme = soilcut_model::TimeScheme::Explicit;
         }
         let mut steered = Simulation::new(&case).unwrap();
         let mut records = steered.advance_to(1.5 * d, None).unwrap();

@@ -20,7 +20,6 @@ fn tine(rake: f64, cohesion: f64, width: f64, per_depth: f64) -> Case {
     case.soil.repose = 25.0;
     case.soil.cohesion = cohesion;
     case.run.increment = 1.0 / per_depth;
-    case.run.node_spacing = 1.0 / per_depth;
     case.run.travel = case.run.increment;
     case
 }
@@ -237,7 +236,6 @@ fn spilled_soil_on_vertices_is_conserved_and_follows_the_grid() {
     // differ by 0.2-0.6 % in the mean force at vertices d/100-d/50).
     let mut grid = narrow_cut(1.0);
     grid.run.increment = grid.blade.depth / 1000.0;
-    grid.run.node_spacing = grid.run.increment;
     let vertices = common::at_vertex_defaults(narrow_cut(1.0));
     let [a, b] = [grid, vertices].map(|case| {
         let h = Simulation::new(&case).unwrap().run_to_end(|_| {}).unwrap();

@@ -75,7 +75,6 @@ fn scaled(depth: f64, gamma: f64, stress: f64, width: Option<f64>) -> Case {
     case.blade.width = width;
     case.run.travel *= k;
     case.run.increment *= k;
-    case.run.node_spacing *= k;
     case.soil.residual_shear *= k;
     case.soil.unit_weight = gamma;
     case.soil.cohesion = stress;
@@ -119,22 +118,29 @@ fn cases_at_the_magnitudes_run_with_finite_forces() {
 fn a_ground_of_more_points_than_the_bound_is_refused_naming_its_spacing() {
     // A vertex spacing of 1e-12 asked for 1.8e14 vertices (a panic on
     // allocation); it is refused naming `run.vertex_spacing`, as too fine
-    // a node grid is refused naming `run.node_spacing`.
+    // a node grid is refused naming `run.increment`, its spacing.
     let too_fine = |case: &Case, key: &str| {
         let e = case.validate().expect_err(key);
         assert_eq!(e.key, key, "{e}");
         assert!(e.message.contains("too fine"), "{e}");
     };
-    let mut vertices = original(1.0, 250.0);
-    vertices.run.vertex_spacing = 1e-12;
+    let mut vertices = crate::common::on_vertices(original(1.0, 250.0), 50.0);
+    vertices
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .spacing = 1e-12;
     too_fine(&vertices, "run.vertex_spacing");
     let mut nodes = original(1.0, 250.0);
-    nodes.run.vertex_spacing = 0.0;
+    nodes.run.ground = soilcut_model::Ground::Nodes;
     nodes.run.increment = 1e-7;
-    nodes.run.node_spacing = 1e-7;
-    too_fine(&nodes, "run.node_spacing");
+    too_fine(&nodes, "run.increment");
     // Just inside the bound, the vertex ground is taken.
     let reach = vertices.run.travel + 8.0 * vertices.blade.depth;
-    vertices.run.vertex_spacing = reach / (0.9 * MAX_NODES);
+    vertices
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .spacing = reach / (0.9 * MAX_NODES);
     assert!(vertices.validate().is_ok());
 }

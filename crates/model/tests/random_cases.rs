@@ -14,9 +14,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner
 use soilcut_model::accuracy::{agreement, Spread};
 use soilcut_model::search::TIE_TOLERANCE;
 use soilcut_model::{
-    default_increment, default_node_spacing, default_samples_per_band, default_time_scheme,
-    default_vertex_spacing, AngleLaw, Case, FaceFrictionRule, Model, Simulation, TimeScheme,
-    DEFAULT_SAMPLES_PER_BAND,
+    AngleLaw, Case, Class, FaceFrictionRule, Ground, Model, Run, RunKeys, Simulation, TimeScheme,
 };
 
 /// Fractions in [0, 1) drawn in turn: the random choices of one case.
@@ -191,40 +189,6 @@ fn runs_and_keeps(case: &Case, chosen: impl Fn(f64, f64) -> bool) {
     }
 }
 
-/// The same random cases, refined, at v0 = d/200 with the sampled search
-/// (strides of 2 to 15 nodes): never below the least force of the full
-/// landscape, above it at few increments and by little
-/// (`sampled_search.rs`).
-#[test]
-fn random_cases_with_the_sampled_search_find_the_least_force() {
-    for_random(4, (20, 16), |draws| {
-        let mut case = case_of(draws);
-        if case.soil.band_width == 0.0 {
-            return;
-        }
-        case.run.increment = case.blade.depth / 200.0;
-        case.run.node_spacing = case.run.increment;
-        case.run.samples_per_band = 8.0;
-        let (checked, above, largest) = common::least_force_excess(&case, 7);
-        // With M26's dilation gap (issue 38) up to 6 of 42 (one case at
-        // rake 46°), 1 in 10 before it.
-        assert!(above * 6 <= checked, "{above} of {checked} above: {case:?}");
-        assert!(largest < 1e-2, "{largest:e} above: {case:?}");
-    });
-}
-
-/// The same random cases on coarse node grids (h = k v0, k from 2 to 8).
-#[test]
-fn random_cases_on_coarse_grids_run_and_conserve() {
-    for_random(3, (30, 64), |draws| {
-        let mut rng = Draws(draws.iter());
-        let mut case = random_case(&mut rng);
-        let per_node = 2.0 + rng.uniform(0.0, 7.0).floor();
-        case.run.node_spacing = per_node * case.run.increment;
-        runs_and_conserves(&case);
-    });
-}
-
 /// The mean P/(γ0 d²) of each unit window of `case` for every member of
 /// its ensemble (M39): the band width × (1 + 0.001 k) in the refined
 /// model, the wall friction + 0.01° × k in the original, k = −3 … 3.
@@ -247,23 +211,18 @@ fn ensemble(case: &Case, windows: usize) -> (Vec<Spread>, Spread) {
     ((0..windows).map(spread).collect(), spread(windows))
 }
 
-/// `case` at `increment` and `node_spacing`, with `samples` per band width
-/// in the search (0: every node).
-fn at(case: &Case, increment: f64, node_spacing: f64, samples: f64) -> Case {
+/// `case` on the node grid at `increment`.
+fn on_nodes_at(case: &Case, increment: f64) -> Case {
     let mut c = case.clone();
     c.run.increment = increment;
-    c.run.node_spacing = node_spacing;
-    c.run.samples_per_band = samples;
+    c.run.ground = Ground::Nodes;
     c
 }
 
-/// At the default ground, grid and search for the class of case
-/// (`default_vertex_spacing`, `default_increment`, `default_node_spacing`,
-/// `default_time_scheme`, `default_samples_per_band`)
-/// the ensembles of random cases it was not chosen on are accurate by the
-/// ensemble rule (M40) against the reference grid's ensemble at d/2000,
-/// over the first 1.5 depths of travel; the default is the vertex ground
-/// but in the original model's soil that never softens (the coarse grid).
+/// At the default run of the class of case (`Run::resolve` of a file that
+/// gives only the travel) the ensembles of random cases it was not chosen
+/// on are accurate by the ensemble rule (M40) against the node grid's
+/// ensemble at d/2000, over the first 1.5 depths of travel.
 #[test]
 fn the_default_grid_is_accurate_on_random_cases() {
     // Three cases as drawn, one whose soil does not soften; an ensemble
@@ -284,19 +243,21 @@ fn the_default_grid_is_accurate_on_random_cases() {
             }
             let d = case.blade.depth;
             case.run.travel = 1.5 * d;
-            let mut default = at(&case, 1.0, 1.0, DEFAULT_SAMPLES_PER_BAND);
-            let vertices = default_vertex_spacing(&default);
-            let scheme = default_time_scheme(vertices > 0.0, case.choices.face_friction);
-            let v0 = default_increment(case.model, &case.soil, d, (vertices > 0.0, scheme));
-            let h = default_node_spacing(&case.soil, d, v0);
-            assert_eq!(h > v0, !case.soil.softens());
-            let samples = default_samples_per_band(&case.soil, vertices > 0.0);
-            default = at(&default, v0, h, samples);
-            default.run.vertex_spacing = vertices;
-            default.run.time_scheme = scheme;
+            let keys = RunKeys {
+                travel: case.run.travel,
+                ..RunKeys::default()
+            };
+            let class = Class {
+                model: case.model,
+                soil: &case.soil,
+                blade: &case.blade,
+                face_friction: case.choices.face_friction,
+            };
+            let mut default = case.clone();
+            default.run = Run::resolve(&keys, class).unwrap();
+            assert_eq!(default.run.ground.name(), "vertices");
             let (windows, whole) = ensemble(&default, 1);
-            let fine = d / 2000.0;
-            let (ref_windows, ref_whole) = ensemble(&at(&case, fine, fine, 0.0), 1);
+            let (ref_windows, ref_whole) = ensemble(&on_nodes_at(&case, d / 2000.0), 1);
             let a = agreement(&windows, &whole, &ref_windows, &ref_whole);
             assert!(a.accurate(), "{a:?}: {case:?}");
         });
@@ -325,7 +286,11 @@ fn random_cases_on_the_vertex_ground_run_and_conserve() {
         // increment of the law (under the sign rule it is refused).
         if case.choices.face_friction == FaceFrictionRule::Mobilised {
             let mut midpoint = case.clone();
-            midpoint.run.time_scheme = TimeScheme::MidpointForce;
+            midpoint
+                .run
+                .vertices_mut()
+                .expect("on the vertex ground")
+                .time_scheme = TimeScheme::MidpointForce;
             runs_and_keeps(&midpoint, |force, least| {
                 (force - least).abs() <= 0.5 * least
             });

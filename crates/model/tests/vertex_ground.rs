@@ -55,8 +55,7 @@ fn a_run_keeps_its_mass_and_follows_the_node_grid() {
     let d = 20.0;
     let (history, sim) = common::run(&table1_s(3.0, 250.0));
     mass_is_kept(&history, sim.initial_mass());
-    let mut nodes = common::refined("table1-s", 3.0, 250.0);
-    nodes.run.samples_per_band = 0.0;
+    let nodes = common::refined("table1-s", 3.0, 250.0);
     let (reference, node_sim) = common::run(&nodes);
     // Both keep the band's state where it was; they differ in where a band
     // may emerge (anywhere, or at nodes) and in the avalanches' vertices.
@@ -115,8 +114,7 @@ fn the_band_rules_run_on_the_vertex_ground_as_on_the_grid() {
     ];
     for (rule, with) in rules {
         let (ours, sim) = common::run(&with(table1_s(3.0, 250.0)));
-        let mut grid = common::refined("table1-s", 3.0, 2000.0);
-        grid.run.samples_per_band = 0.0;
+        let grid = common::refined("table1-s", 3.0, 2000.0);
         let (theirs, _) = common::run(&with(grid));
         let windows = |h| common::window_means(h, d, 3);
         for (w, (a, b)) in windows(&ours).iter().zip(&windows(&theirs)).enumerate() {
@@ -140,7 +138,11 @@ fn the_band_rules_run_on_the_vertex_ground_as_on_the_grid() {
 fn the_exhaustive_vertex_search_is_never_above_the_sampled() {
     let sampled = table1_s(2.0, 250.0);
     let mut exhaustive = sampled.clone();
-    exhaustive.run.samples_per_band = 0.0;
+    exhaustive
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .samples_per_band = 0.0;
     let (a, _) = common::run(&sampled);
     let (b, _) = common::run(&exhaustive);
     let mut same = 0;
@@ -175,7 +177,7 @@ fn a_snapshot_on_the_vertex_ground_continues_bit_for_bit() {
     assert_eq!(restored.evaluations(), sim.evaluations());
     // A case on the node grid with the vertex ground's state is refused.
     let mut other = table1_s(2.0, 250.0);
-    other.run.vertex_spacing = 0.0;
+    other.run.ground = soilcut_model::Ground::Nodes;
     let nodes = Simulation::new(&other).unwrap().snapshot();
     assert!(Simulation::from_snapshot(&nodes).is_ok());
     let corrupt = bytes.len() / 2;
@@ -240,7 +242,11 @@ fn advance_to_goes_beyond_the_travel_and_steers_the_tip() {
 fn until_they_part(which: &str) -> (usize, soilcut_model::StepRecord, soilcut_model::StepRecord) {
     let case = common::on_vertices(common::refined(which, 0.5, 250.0), 50.0);
     let mut midpoint = case.clone();
-    midpoint.run.time_scheme = TimeScheme::MidpointForce;
+    midpoint
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .time_scheme = TimeScheme::MidpointForce;
     let (mut e, mut m) = (
         Simulation::new(&case).unwrap(),
         Simulation::new(&midpoint).unwrap(),
@@ -305,7 +311,11 @@ fn merging_quiet_vertices_keeps_the_mass_and_thins_the_ground() {
     // stays exact and the force stays near the unmerged run's.
     let plain = table1_s(2.0, 250.0);
     let mut merged = plain.clone();
-    merged.run.merge_tolerance = 0.03;
+    merged
+        .run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .merge_tolerance = 0.03;
     let (ours, sim) = common::run(&merged);
     let (theirs, plain_sim) = common::run(&plain);
     mass_is_kept(&ours, sim.initial_mass());
@@ -319,20 +329,15 @@ fn merging_quiet_vertices_keeps_the_mass_and_thins_the_ground() {
     for (w, (a, b)) in a.iter().zip(&b).enumerate() {
         assert!((a - b).abs() < 0.02 * b, "window {w}: {a} vs {b}");
     }
-    // The node grid has no vertices to merge: refused by the key.
-    let mut nodes = merged.clone();
-    nodes.run.vertex_spacing = 0.0;
-    let e = Simulation::new(&nodes).expect_err("refused");
-    assert!(format!("{e}").contains("run.merge_tolerance"), "{e}");
 }
 
 /// Fig. 8b's soil (hardening only) at its defaults on the vertex ground:
 /// vertices d/25 apart, d/250, the midpoint force, one sample per band.
 fn fig8b_at_defaults(travel_depths: f64) -> soilcut_model::Case {
-    let mut case = common::refined("fig8b", travel_depths, 250.0);
-    case.run.vertex_spacing = case.blade.depth / 25.0;
-    case.run.samples_per_band = 1.0;
-    case.run.time_scheme = TimeScheme::MidpointForce;
+    let mut case = common::on_vertices(common::refined("fig8b", travel_depths, 250.0), 25.0);
+    let v = case.run.vertices_mut().expect("on the vertex ground");
+    v.samples_per_band = 1.0;
+    v.time_scheme = TimeScheme::MidpointForce;
     case
 }
 

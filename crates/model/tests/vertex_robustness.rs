@@ -86,8 +86,10 @@ fn a_band_that_stays_and_dilates_keeps_its_soil() {
     case.choices.band_angles = soilcut_model::BandAngleRule::AngleOfMeanShear;
     let mut case = defaults_on_vertices(case, 0.6390666354180224 / 0.2);
     case.run.increment = 0.0008;
-    case.run.node_spacing = 0.0008;
-    case.run.samples_per_band = 1.0;
+    case.run
+        .vertices_mut()
+        .expect("on the vertex ground")
+        .samples_per_band = 1.0;
     runs_with_its_mass(&case);
 }
 
@@ -99,8 +101,7 @@ fn a_band_that_stays_and_dilates_keeps_its_soil() {
 /// forces went negative).
 #[test]
 fn a_tip_pulled_up_at_once_keeps_the_face_at_the_tip() {
-    let mut case = common::original(5.0, 500.0);
-    case.run.samples_per_band = 8.0;
+    let case = common::original(5.0, 500.0);
     let case = common::on_vertices(case, 50.0);
     let mut sim = Simulation::new(&case).unwrap();
     let mut history = sim.advance_to(0.04, Some(0.3)).unwrap();
@@ -116,8 +117,7 @@ fn a_tip_pulled_up_at_once_keeps_the_face_at_the_tip() {
     // the face is thinner than v0: no band emerges within v0 of the face,
     // which would carry the face over its emergence point (a piece of no
     // length, and the mass NaN, before).
-    let mut case = common::original(5.0, 100.0);
-    case.run.samples_per_band = 8.0;
+    let case = common::original(5.0, 100.0);
     let mut sim = Simulation::new(&common::on_vertices(case, 50.0)).unwrap();
     let history = sim.advance_to(1.6, Some(1.0)).unwrap();
     for r in &history {
@@ -128,8 +128,7 @@ fn a_tip_pulled_up_at_once_keeps_the_face_at_the_tip() {
     // 0.4 + 0.2, the band at 0.6000000000000001: the mass went NaN): the
     // run stops with no mechanism, as the node grid does an increment
     // earlier, and keeps its soil.
-    let mut case = common::original(1.0, 100.0);
-    case.run.samples_per_band = 8.0;
+    let case = common::original(1.0, 100.0);
     let mut sim = Simulation::new(&common::on_vertices(case, 50.0)).unwrap();
     sim.advance_to(0.04, Some(1.0)).unwrap();
     let stopped = sim.advance_to(1.2, Some(0.5));

@@ -64,7 +64,7 @@ pub fn ensemble(
 ) -> PyResult<EnsembleRun> {
     let members = members_of(members, "ensemble").map_err(|e| study_error(py, e))?;
     let case = Case::extract(case)?;
-    warn_accuracy(py, &case.get().loaded.case)?;
+    warn_accuracy(py, &case.get().loaded)?;
     let study = Ensemble {
         base: case.get().base(py)?,
         members,

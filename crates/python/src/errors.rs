@@ -23,11 +23,18 @@ fn package_class<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>
     py.import("soilcut._errors")?.getattr(name)
 }
 
-/// Warns with `soilcut.AccuracyWarning` where the command line warns on
-/// stderr (`Case::accuracy_warnings`).
-pub fn warn_accuracy(py: Python<'_>, case: &soilcut_model::Case) -> PyResult<()> {
-    for message in case.accuracy_warnings() {
-        let class = package_class(py, "AccuracyWarning")?;
+/// Warns with `soilcut.CaseFormWarning` where the command line prints a
+/// notice (`LoadedCase::notices`: a key in an earlier version's form), and
+/// with `soilcut.AccuracyWarning` where it warns on stderr
+/// (`Case::accuracy_warnings`).
+pub fn warn_accuracy(py: Python<'_>, loaded: &soilcut_io::LoadedCase) -> PyResult<()> {
+    let notices = loaded
+        .notices()
+        .iter()
+        .map(|m| ("CaseFormWarning", m.clone()));
+    let accuracy = loaded.case.accuracy_warnings().into_iter();
+    for (class, message) in notices.chain(accuracy.map(|m| ("AccuracyWarning", m))) {
+        let class = package_class(py, class)?;
         let message = std::ffi::CString::new(message)?;
         PyErr::warn(py, &class, &message, 1)?;
     }

@@ -105,7 +105,7 @@ impl RunRecords {
 pub fn run(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<RunRecords> {
     let case = Case::extract(case)?;
     let loaded = &case.get().loaded;
-    crate::errors::warn_accuracy(py, &loaded.case)?;
+    crate::errors::warn_accuracy(py, loaded)?;
     let mut sim = Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
     let run = detached(py, || Ok(record_kept(loaded, &mut sim, || {})))?;
     let records = RunRecords::new(loaded.clone(), &run);

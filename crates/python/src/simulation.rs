@@ -29,7 +29,7 @@ impl Simulation {
     #[new]
     fn new(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Self> {
         let loaded = Case::extract(case)?.get().loaded.clone();
-        crate::errors::warn_accuracy(py, &loaded.case)?;
+        crate::errors::warn_accuracy(py, &loaded)?;
         let sim =
             soilcut_model::Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
         Ok(Simulation {

@@ -1,6 +1,8 @@
-//! Convergence with the resolution (docs/model.md §12): one case run with
-//! the increment v0 and the node spacing h halved level after level,
-//! together or one of them alone (`Refine`).
+//! Convergence with the resolution (docs/model.md §12): one case run on
+//! its own ground with the increment v0 and, on the vertex ground, the
+//! vertex spacing h halved level after level, together or one of them
+//! alone (`Refine`; the node grid's nodes are every v0). Level 0 is the
+//! case's own run.
 //!
 //! Sequential limit analysis of frictional wedges can be chaotic: the
 //! sequence of individual bands need not converge, while averaged
@@ -22,8 +24,9 @@ use crate::fit::interpolate;
 use crate::run::{override_of, BaseCase, RunResult};
 use crate::Progress;
 use rayon::prelude::*;
-use soilcut_io::CsvText;
+use soilcut_io::{CsvText, Override};
 use soilcut_model::summary::{band_jumps, JUMP_DEPTHS};
+use soilcut_model::{Case, Ground};
 use soilcut_plot::{draw_panels, Panel, Series};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -40,32 +43,100 @@ pub const PROFILE_POINTS: usize = 501;
 /// What a level refines.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Refine {
-    /// v0 / 2^k and h / 2^k.
+    /// v0 / 2^k and, on the vertex ground, h / 2^k.
     #[default]
     Both,
     /// v0 / 2^k at the case's h.
     Increment,
-    /// h / 2^k at the case's v0 (h must stay a whole multiple of v0).
-    NodeSpacing,
+    /// The vertex spacing h / 2^k at the case's v0 (the vertex ground only).
+    VertexSpacing,
 }
 
-impl Refine {
-    /// (v0, h) of level k from the case's (v0, h).
-    pub fn level(self, level: usize, (v0, h): (f64, f64)) -> (f64, f64) {
-        let f = 2f64.powi(level as i32);
-        match self {
-            Refine::Both => (v0 / f, h / f),
-            Refine::Increment => (v0 / f, h),
-            Refine::NodeSpacing => (v0, h / f),
+/// The resolution a level runs at: v0 and, on the vertex ground, h.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Resolution {
+    /// v0 (length).
+    pub increment: f64,
+    /// h of the vertex ground (length); `None` on the node grid, whose
+    /// nodes are every v0.
+    pub vertex_spacing: Option<f64>,
+}
+
+impl Resolution {
+    /// The resolution `case` runs at.
+    pub fn of(case: &Case) -> Self {
+        Resolution {
+            increment: case.run.increment,
+            vertex_spacing: match case.run.ground {
+                Ground::Vertices(v) => Some(v.spacing),
+                Ground::Nodes => None,
+            },
         }
     }
 
-    /// What level k runs at, in words.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Refine::Both => "increment v0/2^k and node spacing h/2^k",
-            Refine::Increment => "increment v0/2^k at the case's node spacing h",
-            Refine::NodeSpacing => "node spacing h/2^k at the case's increment v0",
+    /// The spacing of the ground's points: h, or v0 on the node grid.
+    pub fn spacing(&self) -> f64 {
+        self.vertex_spacing.unwrap_or(self.increment)
+    }
+
+    /// The `--set` overrides that run the case at this resolution.
+    pub fn overrides(&self) -> Result<Vec<Override>, StudyError> {
+        let set =
+            |key, value| override_of(key, &toml::Value::Float(value)).map_err(StudyError::Spec);
+        let mut o = vec![set("run.increment", self.increment)?];
+        if let Some(h) = self.vertex_spacing {
+            o.push(set("run.vertex_spacing", h)?);
+        }
+        Ok(o)
+    }
+
+    /// In words, for errors.
+    pub fn describe(&self) -> String {
+        match self.vertex_spacing {
+            Some(h) => format!("increment {}, vertex spacing {h}", self.increment),
+            None => format!("increment {}, node grid", self.increment),
+        }
+    }
+}
+
+impl Refine {
+    /// The resolution of level k from the case's: on the node grid only
+    /// the increment can be halved.
+    pub fn level(self, level: usize, case: Resolution) -> Result<Resolution, StudyError> {
+        let f = 2f64.powi(level as i32);
+        let (v0, h) = (case.increment, case.vertex_spacing);
+        if self == Refine::VertexSpacing && h.is_none() {
+            return Err(StudyError::Spec(
+                "--refine vertex-spacing: the case runs on the node grid (run.ground = \"nodes\"), whose nodes are every increment; refine the increment".to_string(),
+            ));
+        }
+        Ok(match self {
+            Refine::Both => Resolution {
+                increment: v0 / f,
+                vertex_spacing: h.map(|h| h / f),
+            },
+            Refine::Increment => Resolution {
+                increment: v0 / f,
+                vertex_spacing: h,
+            },
+            Refine::VertexSpacing => Resolution {
+                increment: v0,
+                vertex_spacing: h.map(|h| h / f),
+            },
+        })
+    }
+
+    /// What level k runs at on `ground`, in words.
+    pub fn describe(self, ground: &Ground) -> &'static str {
+        match (self, ground) {
+            (_, Ground::Nodes) => "increment v0/2^k on the node grid (nodes every increment)",
+            (Refine::Both, _) => "increment v0/2^k and vertex spacing h/2^k on the vertex ground",
+            (Refine::Increment, _) => {
+                "increment v0/2^k at the case's vertex spacing h on the vertex ground"
+            }
+            (Refine::VertexSpacing, _) => {
+                "vertex spacing h/2^k at the case's increment v0 on the vertex ground"
+            }
         }
     }
 }
@@ -93,8 +164,9 @@ pub struct Level {
     pub level: usize,
     /// v0 / 2^k, the case's length unit.
     pub increment: f64,
-    /// h / 2^k (or the case's h), the case's length unit.
-    pub node_spacing: f64,
+    /// The spacing of the ground's points: the vertex spacing h / 2^k
+    /// (or the case's h), or v0 on the node grid; the case's length unit.
+    pub spacing: f64,
     /// Increments run.
     pub steps: usize,
     /// Mean P/(γ0 d²) over the whole run.
@@ -202,6 +274,8 @@ pub struct ConvergeResult {
     pub tolerance: f64,
     /// What each level halved.
     pub refine: Refine,
+    /// The case's ground, on which every level runs.
+    pub ground: Ground,
     /// Coarsest first.
     pub levels: Vec<Level>,
 }
@@ -234,7 +308,7 @@ fn level_of(level: usize, run: &RunResult, depth: f64, windows: usize) -> Level 
     Level {
         level,
         increment: run.loaded.case.run.increment,
-        node_spacing: run.loaded.case.run.node_spacing,
+        spacing: Resolution::of(&run.loaded.case).spacing(),
         steps: s.steps,
         mean_force_norm: mean(&force.iter().map(|p| p.1).collect::<Vec<_>>()),
         envelope_mean: mean(&window_max),
@@ -271,7 +345,12 @@ impl Converge {
         let loaded = self.base.load(&[])?;
         let case = &loaded.case;
         let depth = case.blade.depth;
-        let grid = (case.run.increment, case.run.node_spacing);
+        let own = Resolution::of(case);
+        // Every level's resolution before any runs: a refinement the
+        // ground cannot take is refused at once.
+        let resolutions = (0..self.levels)
+            .map(|level| self.refine.level(level, own))
+            .collect::<Result<Vec<_>, _>>()?;
         let windows = unit_windows(case.run.travel, depth);
         let finished = AtomicUsize::new(0);
         progress(0, self.levels);
@@ -282,18 +361,9 @@ impl Converge {
                 .collect::<Vec<_>>()
                 .into_par_iter()
                 .map(|level| {
-                    let (increment, spacing) = self.refine.level(level, grid);
-                    let set = |key, value| {
-                        override_of(key, &toml::Value::Float(value)).map_err(StudyError::Spec)
-                    };
-                    let o = [
-                        set("run.increment", increment)?,
-                        set("run.node_spacing", spacing)?,
-                    ];
-                    let run = self.base.run(&o).map_err(|e| {
-                        StudyError::Case(format!(
-                            "level {level} (increment {increment}, node spacing {spacing}): {e}"
-                        ))
+                    let resolution = resolutions[level];
+                    let run = self.base.run(&resolution.overrides()?).map_err(|e| {
+                        StudyError::Case(format!("level {level} ({}): {e}", resolution.describe()))
                     })?;
                     let l = level_of(level, &run, depth, windows);
                     progress(finished.fetch_add(1, Ordering::Relaxed) + 1, self.levels);
@@ -318,6 +388,7 @@ impl Converge {
             depth,
             tolerance: self.tolerance,
             refine: self.refine,
+            ground: case.run.ground,
             levels,
         })
     }
@@ -330,7 +401,7 @@ impl ConvergeResult {
 
     /// `converge.csv`: one row per level, coarsest first.
     pub fn csv(&self) -> String {
-        let mut header: Vec<String> = ["level", "increment", "node_spacing", "steps", "band_jumps"]
+        let mut header: Vec<String> = ["level", "increment", "spacing", "steps", "band_jumps"]
             .iter()
             .map(|s| s.to_string())
             .collect();
@@ -346,7 +417,7 @@ impl ConvergeResult {
             let mut row = vec![
                 l.level.to_string(),
                 l.increment.to_string(),
-                l.node_spacing.to_string(),
+                l.spacing.to_string(),
                 l.steps.to_string(),
                 l.band_jumps.to_string(),
             ];
@@ -358,14 +429,14 @@ impl ConvergeResult {
         out.finish()
     }
 
-    /// `timing.csv`: `level,increment,node_spacing,wall_time_s`.
+    /// `timing.csv`: `level,increment,spacing,wall_time_s`.
     pub fn timing_csv(&self) -> String {
-        let mut out = CsvText::new("level,increment,node_spacing,wall_time_s");
+        let mut out = CsvText::new("level,increment,spacing,wall_time_s");
         for l in &self.levels {
             out.fields(&[
                 l.level.to_string(),
                 l.increment.to_string(),
-                l.node_spacing.to_string(),
+                l.spacing.to_string(),
                 l.wall_time_s.to_string(),
             ]);
         }
@@ -437,7 +508,7 @@ impl ConvergeResult {
         let _ = writeln!(
             w,
             "Level k runs at {}. Averaged quantities should converge; individual peaks need not (docs/model.md §12). Converged: relative change < {} % between the two finest levels.\n",
-            self.refine.describe(),
+            self.refine.describe(&self.ground),
             self.tolerance * 100.0
         );
         self.levels_markdown(w);
@@ -453,7 +524,7 @@ impl ConvergeResult {
         let _ = writeln!(w, "## Per level\n");
         let _ = writeln!(
             w,
-            "| level | increment | node spacing | steps | band jumps | {} |",
+            "| level | increment | spacing | steps | band jumps | {} |",
             QUANTITIES.map(|q| q.0).join(" | ")
         );
         let _ = writeln!(w, "|{}", "---|".repeat(5 + QUANTITIES.len()));
@@ -470,7 +541,7 @@ impl ConvergeResult {
                 "| {} | {} | {} | {} | {} | {} |",
                 l.level,
                 l.increment,
-                l.node_spacing,
+                l.spacing,
                 l.steps,
                 l.band_jumps,
                 values.join(" | ")
@@ -633,11 +704,11 @@ impl ConvergeResult {
     }
 }
 
-/// A level's legend label: its increment and node spacing.
+/// A level's legend label: its increment and spacing.
 fn level_label(l: &Level) -> String {
     format!(
         "level {} (v0 = {}, h = {})",
-        l.level, l.increment, l.node_spacing
+        l.level, l.increment, l.spacing
     )
 }
 

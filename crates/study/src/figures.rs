@@ -54,8 +54,8 @@ pub fn key_label(key: &str) -> String {
         (_, "cohesion" | "adhesion" | "surcharge") => "force/length²",
         (
             _,
-            "d50" | "band_width" | "depth" | "width" | "increment" | "travel" | "node_spacing"
-            | "vertex_spacing" | "length" | "peak_shear" | "residual_shear",
+            "d50" | "band_width" | "depth" | "width" | "increment" | "travel" | "vertex_spacing"
+            | "length" | "peak_shear" | "residual_shear",
         ) => "length",
         _ => "–",
     };

@@ -25,7 +25,7 @@ fn one_row_per_level_with_halved_increments() {
     let csv = result.csv();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 1 + 3);
-    assert!(lines[0].starts_with("level,increment,node_spacing,steps,band_jumps,mean_force_norm,"));
+    assert!(lines[0].starts_with("level,increment,spacing,steps,band_jumps,mean_force_norm,"));
     assert!(
         lines[0].ends_with(",window_max_0_1,window_max_1_2"),
         "{}",
@@ -33,8 +33,10 @@ fn one_row_per_level_with_halved_increments() {
     );
     let increments: Vec<f64> = result.levels.iter().map(|l| l.increment).collect();
     assert_eq!(increments, [1.0, 0.5, 0.25]);
-    let spacings: Vec<f64> = result.levels.iter().map(|l| l.node_spacing).collect();
-    assert_eq!(spacings, increments);
+    // The case's own ground, the vertex ground at its default h = d/50,
+    // halved with the increment.
+    let spacings: Vec<f64> = result.levels.iter().map(|l| l.spacing).collect();
+    assert_eq!(spacings, [0.4, 0.2, 0.1]);
     let steps: Vec<usize> = result.levels.iter().map(|l| l.steps).collect();
     assert_eq!(steps, [40, 80, 160]);
     for l in &result.levels {
@@ -79,35 +81,70 @@ fn same_table_on_any_number_of_threads() {
     assert_eq!(one.markdown(), two.markdown());
 }
 
-#[test]
-fn the_increment_or_the_node_spacing_alone() {
+/// The study of `set` on the test case, refining `refine`.
+fn study_of(set: &[&str], refine: Refine) -> Converge {
     let mut study = converge(2);
     study.base = BaseCase::new(
         REFINED.to_string(),
-        ["run.travel=40", "run.increment=0.25", "run.node_spacing=1"]
-            .iter()
-            .map(|s| s.parse().unwrap())
-            .collect(),
+        set.iter().map(|s| s.parse().unwrap()).collect(),
     )
     .unwrap();
+    study.refine = refine;
+    study
+}
+
+#[test]
+fn the_increment_or_the_vertex_spacing_alone() {
+    let set = [
+        "run.travel=40",
+        "run.increment=0.25",
+        "run.vertex_spacing=1",
+    ];
     let grid = |r: &ConvergeResult| -> Vec<(f64, f64)> {
-        r.levels
-            .iter()
-            .map(|l| (l.increment, l.node_spacing))
-            .collect()
+        r.levels.iter().map(|l| (l.increment, l.spacing)).collect()
     };
-    study.refine = Refine::NodeSpacing;
-    let r = study.run(&no_progress).unwrap();
+    let r = study_of(&set, Refine::VertexSpacing)
+        .run(&no_progress)
+        .unwrap();
     assert_eq!(grid(&r), [(0.25, 1.0), (0.25, 0.5), (0.25, 0.25)]);
     assert!(r
         .markdown()
-        .contains("node spacing h/2^k at the case's increment v0"));
-    study.refine = Refine::Increment;
-    let r = study.run(&no_progress).unwrap();
+        .contains("vertex spacing h/2^k at the case's increment v0 on the vertex ground"));
+    let r = study_of(&set, Refine::Increment).run(&no_progress).unwrap();
     assert_eq!(grid(&r), [(0.25, 1.0), (0.125, 1.0), (0.0625, 1.0)]);
-    // h / 8 is below v0: no longer a whole multiple of it.
-    study.refine = Refine::NodeSpacing;
-    study.levels = 4;
-    let e = study.run(&no_progress).unwrap_err().to_string();
-    assert!(e.contains("run.node_spacing"), "{e}");
+}
+
+#[test]
+fn the_node_grid_converges_its_increment_only() {
+    let set = ["run.travel=40", "run.increment=1", "run.ground=\"nodes\""];
+    let r = study_of(&set, Refine::Both).run(&no_progress).unwrap();
+    let spacings: Vec<f64> = r.levels.iter().map(|l| l.spacing).collect();
+    assert_eq!(spacings, [1.0, 0.5, 0.25], "nodes every increment");
+    assert!(r.markdown().contains("on the node grid"));
+    let e = study_of(&set, Refine::VertexSpacing)
+        .run(&no_progress)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("--refine vertex-spacing"), "{e}");
+}
+
+/// Level 0 is the case's own run on its own ground, bit for bit: before
+/// issue 49 it set run.node_spacing and so ran the node grid.
+#[test]
+fn level_0_is_the_run_of_the_case_itself() {
+    for set in [
+        &["run.travel=40"][..],
+        &["run.travel=40", "run.ground=\"nodes\"", "run.increment=1"],
+    ] {
+        let study = study_of(set, Refine::Both);
+        let own = study.base.run(&[]).unwrap();
+        let level = &study.run(&no_progress).unwrap().levels[0];
+        let force: Vec<(f64, f64)> = own
+            .history
+            .iter()
+            .map(|r| (r.u / 20.0, r.force_norm))
+            .collect();
+        assert_eq!(level.force, force, "{set:?}");
+        assert_eq!(level.max_force_norm, own.summary.max_force_norm);
+    }
 }

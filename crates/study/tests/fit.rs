@@ -22,7 +22,7 @@ use synthetic::{recovered, Case};
 const COARSE: [&str; 4] = [
     "run.travel=30",
     "run.increment=0.4",
-    "run.vertex_spacing=0",
+    "run.ground=\"nodes\"",
     "choices.face_friction=sign",
 ];
 

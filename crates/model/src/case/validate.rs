@@ -2,8 +2,8 @@
 //! outside it is an error naming the key and the range, never clamped.
 
 use super::{
-    BandAngleRule, BandStrengthRule, Case, CaseError, FaceFrictionRule, TimeScheme,
-    INITIAL_REACH_DEPTHS,
+    BandAngleRule, BandStrengthRule, Case, CaseError, FaceFrictionRule, Ground, TimeScheme,
+    VertexGround, INITIAL_REACH_DEPTHS,
 };
 
 /// Largest number of surface nodes a case may need at the start (memory
@@ -90,7 +90,6 @@ impl Case {
         self.validate_loads()?;
         self.validate_run()?;
         self.validate_bin()?;
-        self.validate_time_scheme()?;
         self.validate_band_strength()
     }
 
@@ -102,12 +101,12 @@ impl Case {
         if self.choices.band_strength == BandStrengthRule::Footprint {
             return Ok(());
         }
-        if self.run.vertex_spacing == 0.0 {
+        if self.run.ground == Ground::Nodes {
             return Err(CaseError::new(
                 "choices.band_strength",
                 "\"crossed-columns\" and \"crossed-columns-unfloored\" run on the vertex ground \
-                 only (run.vertex_spacing > 0), whose pieces are the columns the band crosses; \
-                 the node grid takes \"footprint\"",
+                 only (run.ground = \"vertices\"), whose pieces are the columns the band \
+                 crosses; the node grid takes \"footprint\"",
             ));
         }
         if self.choices.band_angles == BandAngleRule::AngleOfMeanShear {
@@ -121,21 +120,10 @@ impl Case {
         Ok(())
     }
 
-    /// `run.time_scheme`: the midpoint force on the vertex ground
-    /// (`run.vertex_spacing` > 0, docs/model.md §19) under the mobilised
-    /// face friction only.
-    fn validate_time_scheme(&self) -> Result<(), CaseError> {
-        if self.run.vertex_spacing == 0.0 {
-            if self.run.time_scheme == TimeScheme::MidpointForce {
-                return Err(CaseError::new(
-                    "run.time_scheme",
-                    "\"midpoint-force\" runs on the vertex ground only (run.vertex_spacing > 0); \
-                     the node grid takes \"explicit\"",
-                ));
-            }
-            return Ok(());
-        }
-        if self.run.time_scheme == TimeScheme::MidpointForce
+    /// `run.time_scheme`: the midpoint force under the mobilised face
+    /// friction only.
+    fn validate_time_scheme(&self, ground: &VertexGround) -> Result<(), CaseError> {
+        if ground.time_scheme == TimeScheme::MidpointForce
             && self.choices.face_friction == FaceFrictionRule::Sign
         {
             return Err(CaseError::new(
@@ -148,21 +136,27 @@ impl Case {
         Ok(())
     }
 
-    /// `run.merge_tolerance` in [0, `MAX_MERGE_TOLERANCE`], above 0 on the
-    /// vertex ground only.
-    fn validate_merge_tolerance(&self) -> Result<(), CaseError> {
-        let tolerance = finite("run.merge_tolerance", self.run.merge_tolerance)?;
+    /// The vertex ground's keys: its spacing in (0, blade.depth), its
+    /// samples ≥ 0, its time scheme and merge tolerance.
+    fn validate_vertex_ground(&self, ground: &VertexGround) -> Result<(), CaseError> {
+        let h = ground.spacing;
+        positive("run.vertex_spacing", h)?;
+        if h >= self.blade.depth {
+            return Err(CaseError::new(
+                "run.vertex_spacing",
+                format!(
+                    "must be in (0, blade.depth = {}) (got {h})",
+                    self.blade.depth
+                ),
+            ));
+        }
+        non_negative("run.samples_per_band", ground.samples_per_band)?;
+        self.validate_time_scheme(ground)?;
+        let tolerance = finite("run.merge_tolerance", ground.merge_tolerance)?;
         if !(0.0..=MAX_MERGE_TOLERANCE).contains(&tolerance) {
             return Err(CaseError::new(
                 "run.merge_tolerance",
                 format!("must be in [0, {MAX_MERGE_TOLERANCE}] (got {tolerance})"),
-            ));
-        }
-        if tolerance > 0.0 && self.run.vertex_spacing == 0.0 {
-            return Err(CaseError::new(
-                "run.merge_tolerance",
-                "merges vertices of the vertex ground only (run.vertex_spacing > 0); \
-                 the node grid takes 0",
             ));
         }
         Ok(())
@@ -175,11 +169,15 @@ impl Case {
         let Some(length) = self.bin.length else {
             return Ok(());
         };
-        let least = self.run.travel + 2.0 * self.run.node_spacing;
+        let least = self.run.travel + 2.0 * self.ground_spacing();
         if finite("bin.length", length)? < least {
+            let spacing = match self.run.ground {
+                Ground::Vertices(_) => "run.vertex_spacing",
+                Ground::Nodes => "run.increment",
+            };
             return Err(CaseError::new(
                 "bin.length",
-                format!("must be >= run.travel + 2 run.node_spacing = {least} (got {length})"),
+                format!("must be >= run.travel + 2 {spacing} = {least} (got {length})"),
             ));
         }
         in_magnitude("bin.length", length, false)?;
@@ -446,45 +444,19 @@ impl Case {
                 ),
             ));
         }
-        self.validate_node_spacing()?;
-        non_negative("run.samples_per_band", self.run.samples_per_band)?;
-        non_negative("run.vertex_spacing", self.run.vertex_spacing)?;
-        self.validate_merge_tolerance()?;
+        if let Ground::Vertices(ground) = &self.run.ground {
+            self.validate_vertex_ground(ground)?;
+        }
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
-            let (key, points) = if self.run.vertex_spacing > 0.0 {
-                ("run.vertex_spacing", "vertices")
-            } else {
-                ("run.node_spacing", "nodes")
+            let (key, points) = match self.run.ground {
+                Ground::Vertices(_) => ("run.vertex_spacing", "vertices"),
+                Ground::Nodes => ("run.increment", "nodes"),
             };
             return Err(CaseError::new(
                 key,
                 format!(
                     "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / {key} must be <= {MAX_NODES:e} {points} (got {nodes:.3e})"
-                ),
-            ));
-        }
-        Ok(())
-    }
-
-    fn validate_node_spacing(&self) -> Result<(), CaseError> {
-        let (h, v0) = (self.run.node_spacing, self.run.increment);
-        positive("run.node_spacing", h)?;
-        if h >= self.blade.depth {
-            return Err(CaseError::new(
-                "run.node_spacing",
-                format!(
-                    "must be in (0, blade.depth = {}) (got {h})",
-                    self.blade.depth
-                ),
-            ));
-        }
-        let ratio = h / v0;
-        if ratio < 1.0 - 1e-9 || (ratio - ratio.round()).abs() > 1e-9 * ratio {
-            return Err(CaseError::new(
-                "run.node_spacing",
-                format!(
-                    "must be a whole multiple (1, 2, 3, ...) of run.increment = {v0} (got {h}, {ratio} increments)"
                 ),
             ));
         }

@@ -9,7 +9,7 @@ use crate::band::stretch;
 /// The band of one candidate or chosen mechanism.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
-    /// The blade face: its node b and offset.
+    /// The blade face: its node b.
     pub face: FaceNode,
     /// Emergence node j of the lower boundary.
     pub emergence: usize,
@@ -85,9 +85,7 @@ impl Band {
         let nodes = height.iter().enumerate();
         for (i, &y) in nodes.take(self.emergence + 1).skip(b + 1) {
             let g1 = self.position(y, i);
-            // The face's segment is (1 − δ/Δx) Δx long.
-            let width = dx * self.face.segment(i - 1);
-            area += e * width * clipped_mean(g0, g1);
+            area += e * dx * clipped_mean(g0, g1);
             g0 = g1;
         }
         area

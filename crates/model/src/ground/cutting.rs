@@ -19,7 +19,7 @@ use super::search::{PickObserver, VertexSearch};
 use super::strength::Columns;
 use super::{Ground, Quiet};
 use crate::band::{stretch, BandMotion};
-use crate::case::{BandStrengthRule, Case, TimeScheme};
+use crate::case::{BandStrengthRule, Case, TimeScheme, VertexGround};
 use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::landscape::Candidate;
@@ -38,6 +38,8 @@ const MAX_REACH_DEPTHS: f64 = 1000.0;
 /// A cut simulated on the vertex ground.
 #[derive(Clone, Debug)]
 pub struct Cutting {
+    /// The case's `run.ground` keys.
+    keys: VertexGround,
     rake: Rake,
     ground: Ground,
     search: VertexSearch,
@@ -57,13 +59,12 @@ impl Cutting {
     /// long (where the soil that avalanches ahead of a band lands; a heap
     /// on one long piece would spread thin over all of it). The search
     /// grows it as it needs, up to the wall.
-    pub fn new(case: &Case) -> Self {
+    pub fn new(case: &Case, keys: VertexGround) -> Self {
         let d = case.blade.depth;
         let ahead = case.run.travel + 8.0 * d;
         let length = case.bin.length.map_or(ahead, |wall| wall.min(ahead));
-        let spacing = case.run.vertex_spacing;
-        let ground = Ground::flat(length, spacing, case.deepest(), case.soil.unit_weight);
-        Self::resumed(case, (ground, SideHeaps::default()), 0)
+        let ground = Ground::flat(length, keys.spacing, case.deepest(), case.soil.unit_weight);
+        Self::resumed(case, keys, (ground, SideHeaps::default()), 0)
     }
 
     /// The cut of `case` resumed on `ground` beside `side` after
@@ -71,12 +72,14 @@ impl Cutting {
     /// keeps no state from one increment to the next).
     pub(crate) fn resumed(
         case: &Case,
+        keys: VertexGround,
         (ground, side): (Ground, SideHeaps),
         evaluations: u64,
     ) -> Self {
         let mut search = VertexSearch::default();
         search.evaluations = evaluations;
         Cutting {
+            keys,
             rake: Rake::new(case.blade.rake),
             ground,
             search,
@@ -132,22 +135,23 @@ impl Cutting {
             face: at.laws.face.for_climb(climb),
             depth: tip,
             band_width,
-            sample: sample_spacing(c),
-            thins_samples: band_width > 0.0 && c.run.samples_per_band > 0.0,
-            vertex_spacing: c.run.vertex_spacing,
+            sample: sample_spacing(c, self.keys.samples_per_band),
+            thins_samples: band_width > 0.0 && self.keys.samples_per_band > 0.0,
+            vertex_spacing: self.keys.spacing,
             resolution: c.run.increment,
             advance: c.run.increment,
-            snap: 0.5 * c.run.vertex_spacing,
+            snap: 0.5 * self.keys.spacing,
             grow: GROW_DEPTHS * d,
             // The ground never grows past the end wall.
             reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
             rake: self.rake,
             crescents: {
-                let spacing = c.run.vertex_spacing;
+                let spacing = self.keys.spacing;
                 let face_node = (u / spacing).floor() as usize;
                 Crescents::of(c, side, (u, face_node, spacing))
             },
-            choose_at_midpoint: c.run.time_scheme == TimeScheme::MidpointForce && !c.soil.softens(),
+            choose_at_midpoint: self.keys.time_scheme == TimeScheme::MidpointForce
+                && !c.soil.softens(),
             // The floor's cap: θr, or 0° where the columns are unfloored.
             columns: match c.choices.band_strength {
                 BandStrengthRule::Footprint => None,
@@ -171,7 +175,7 @@ impl Cutting {
             thickness: c.soil.band_width * (1.0 + t * t).sqrt() * stretch(pick.grid_slope, t),
             width: c.soil.band_width,
             min_spacing: 0.25 * v0,
-            snap: 0.5 * c.run.vertex_spacing,
+            snap: 0.5 * self.keys.spacing,
             advance: v0,
             rise: 0.0,
             slip: 0.0,
@@ -227,7 +231,7 @@ impl Discretisation for Cutting {
                     y: g.y[k],
                     accumulated_shear: g.accumulated_shear[piece],
                     unit_weight: g.unit_weight[piece],
-                    ridge_height: self.side.height_at(g.x[k], at.case.run.vertex_spacing),
+                    ridge_height: self.side.height_at(g.x[k], self.keys.spacing),
                 }
             })
             .collect()
@@ -271,7 +275,8 @@ impl Discretisation for Cutting {
         let c = at.case;
         let scan = self.scan(at, &self.side);
         let pick = Self::search_next((&mut self.search, &mut self.ground), (at, &scan), None)?;
-        let pick = match c.run.time_scheme {
+        let keys = self.keys;
+        let pick = match keys.time_scheme {
             TimeScheme::Explicit => pick,
             // The search compared the midpoint forces already.
             TimeScheme::MidpointForce if scan.choose_at_midpoint => pick,
@@ -299,10 +304,10 @@ impl Discretisation for Cutting {
         self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
         let slopes = self.rake.repose_slopes(c.soil.repose.to_radians().tan());
         self.ground
-            .relax_after(slopes, c.run.vertex_spacing, &mut self.settled);
-        if c.run.merge_tolerance > 0.0 {
+            .relax_after(slopes, keys.spacing, &mut self.settled);
+        if keys.merge_tolerance > 0.0 {
             let quiet = Quiet {
-                tolerance: c.run.merge_tolerance,
+                tolerance: keys.merge_tolerance,
                 // ur; d where the law softens at once (ur = 0).
                 shear_scale: if c.soil.residual_shear > 0.0 {
                     c.soil.residual_shear
@@ -311,7 +316,7 @@ impl Discretisation for Cutting {
                 },
                 unit_weight: c.soil.unit_weight,
                 depth: d,
-                longest: c.run.vertex_spacing,
+                longest: keys.spacing,
             };
             self.ground.merge_quiet(1, self.ground.pieces(), &quiet);
         }
@@ -320,8 +325,7 @@ impl Discretisation for Cutting {
                 width,
                 tan_repose: c.soil.repose.to_radians().tan(),
             };
-            self.ground
-                .spill(&mut self.side, edges, c.run.vertex_spacing);
+            self.ground.spill(&mut self.side, edges, keys.spacing);
         }
         let mobilisation = face.mobilisation(pick.tan_beta, pick.angles.dilation);
         let omega = at.laws.face.angle(mobilisation);
@@ -358,8 +362,8 @@ impl Discretisation for Cutting {
 /// the slack narrowed to v0 as every search's are: the least force of
 /// every emergence point v0 apart and every vertex, and nothing the
 /// bounds do not prove to lose.
-fn sample_spacing(case: &Case) -> f64 {
-    let (band_width, samples) = (case.soil.band_width, case.run.samples_per_band);
+fn sample_spacing(case: &Case, samples: f64) -> f64 {
+    let band_width = case.soil.band_width;
     if samples == 0.0 {
         case.run.increment
     } else if band_width > 0.0 {

@@ -35,13 +35,6 @@ impl Prefix {
         ]);
     }
 
-    /// Extends the sums from blade node `b` to cover the nodes before j.
-    pub(super) fn cover(&mut self, surface: &Surface, b: usize, j: usize) {
-        while self.sums.len() <= j - b {
-            self.push(surface, b + self.sums.len() - 1);
-        }
-    }
-
     /// Mean angles (M10) over the band's footprint, nodes j − m ..= j (the
     /// sums must cover the nodes before j).
     #[inline]

@@ -47,15 +47,12 @@ pub(super) struct Block {
     kept: Vec<(Line, BandAngles)>,
     /// The band angles' prefix sums over the nodes scanned.
     pub(super) prefix: Prefix,
-    /// A sampled scan's running sums after each sampled node (`refine`).
-    pub(super) checkpoints: Vec<(usize, Lines)>,
 }
 
 impl Block {
     /// Readies the prefix sums for a scan from the blade node.
     pub(super) fn start_scan(&mut self) {
         self.prefix.start();
-        self.checkpoints.clear();
     }
 
     /// First pass over a block of up to `BLOCK` nodes from j: the running
@@ -91,17 +88,6 @@ impl Block {
             self.prefix.push(surface, j - 1);
             least.include(surface, j, input);
             let admitted = lines.advance(surface, j);
-            // A sampled scan (`refine`) weighs the other nodes into the
-            // sums only; the stopping rule, W nondecreasing, then acts at
-            // most a stride late.
-            if best.prune && input.stride > 1 {
-                if !(j - input.blade).is_multiple_of(input.stride) {
-                    self.weight.push(f64::NEG_INFINITY);
-                    j += 1;
-                    continue;
-                }
-                self.checkpoints.push((j, *lines));
-            }
             let rupture = lines.face.spacings(j) * lines.dx;
             let floor = admitted.map(|(_, weight)| input.bound_weight(weight, rupture));
             // Inadmissible lines never stop the scan.

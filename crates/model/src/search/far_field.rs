@@ -16,10 +16,9 @@ use crate::rake::Rake;
 use crate::surface::Surface;
 
 /// Candidates on undisturbed flat ground (y = 0, unit weight γ0) from
-/// n_s = j0 − b on: with the running sums S over the nodes before j0 and
-/// the face's offset δ' = δ/Δx (node b + k is k − δ' spacings ahead),
+/// n_s = j0 − b on: with the running sums S over the nodes before j0,
 /// W(n) = Δx [base + S_gh + γ0 d (n − n_s)
-///            − (d/(n − δ')) (S_gk + γ0 Σ_{k=n_s}^{n−1} (k − δ'))]   (M32).
+///            − (d/n) (S_gk + γ0 Σ_{k=n_s}^{n−1} k)]   (M32).
 pub(super) struct FarField {
     face: FaceNode,
     d: f64,
@@ -50,7 +49,7 @@ impl FarField {
     pub(super) fn weight(&self, n: usize) -> f64 {
         let s = self.start;
         let ahead = (n - s) as f64;
-        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64 - self.face.offset * ahead;
+        let triangle = ((n * (n - 1) - s * (s - 1)) / 2) as f64;
         let r = self.d / self.spacings(n);
         self.dx
             * (self.base + self.sum_gh + self.gamma * self.d * ahead
@@ -83,7 +82,7 @@ impl FarField {
         }
         let admissible = |n: usize| self.d <= r_min * self.spacings(n);
         let mut n = if r_min.is_finite() {
-            ((self.d / r_min + self.face.offset).ceil() as usize)
+            ((self.d / r_min).ceil() as usize)
                 .max(self.start)
                 .min(limit)
         } else {
@@ -182,7 +181,7 @@ pub(super) fn far_field_from(
     if j < undisturbed {
         return false;
     }
-    let dx = surface.scheme.spacing;
+    let dx = surface.spacing;
     let spacings = lines.face.spacings(j);
     // The footprint below is at least dB / (tan β Δx) + 2 with
     // 1 / tan β = Δx (x_j − x_b) / d − cot α (`Rake`): a test without

@@ -31,10 +31,6 @@ pub struct SearchInput<'a> {
     /// The side crescents of a blade of finite width (`None`: plane
     /// strain); forces compared are then the blade's per unit width.
     pub crescents: Option<Crescents<'a>>,
-    /// The scan evaluates every `stride`-th candidate from the face, then
-    /// every node within a stride of their local minima (`refine`); 1:
-    /// every node.
-    pub stride: usize,
 }
 
 impl SearchInput<'_> {

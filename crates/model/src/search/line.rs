@@ -10,10 +10,6 @@
 //!   W_j = Δx [ ½ γ_b (y_b + d) + Σ_{b<i<j} γ_i (y_i + d) − r_j Σ_{b<i<j} γ_i (i − b) ],
 //!   two running sums, so each candidate costs O(1) (M5);
 //! * P_j = W_j · (P/W)(β_j, φ_j) by Eq. (1), plus the loads (M6, M8).
-//!
-//! On a coarse grid the face lies δ ahead of node b's grid point, so node
-//! i is i − b − δ/Δx spacings from it and the face's segment is 1 − δ/Δx
-//! long (`FaceNode`, docs/model.md §9).
 
 use super::input::SearchInput;
 use crate::band::stretch;
@@ -28,11 +24,11 @@ use crate::surface::Surface;
 /// running minimum of (M3) over the nodes scanned so far.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Lines {
-    /// The face: node b and its offset δ / Δx (0 on the grid).
+    /// The face: node b.
     pub(super) face: FaceNode,
     pub(super) d: f64,
     pub(super) dx: f64,
-    /// ½ γ_b (y_b + d) (1 − δ/Δx): the face node's trapezoid share.
+    /// ½ γ_b (y_b + d): the face node's trapezoid share.
     pub(super) base: f64,
     /// Σ γ_i (y_i + d) and Σ γ_i (i − b) over the nodes between b and j.
     pub(super) sum_gh: f64,
@@ -44,12 +40,12 @@ pub(super) struct Lines {
 impl Lines {
     /// No node scanned yet, the tip at depth d below the face at node b.
     pub(super) fn new(surface: &Surface, b: usize, d: f64) -> Self {
-        let face = surface.face_at(b);
+        let face = FaceNode { node: b };
         Lines {
             face,
             d,
-            dx: surface.scheme.spacing,
-            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d) * face.segment(b),
+            dx: surface.spacing,
+            base: 0.5 * surface.unit_weight[b] * (surface.height[b] + d),
             sum_gh: 0.0,
             sum_gk: 0.0,
             r_min: f64::INFINITY,

@@ -37,15 +37,9 @@ pub type Observer<'o> = &'o mut dyn FnMut(&Choice);
 
 /// The best force of one scan and the candidates that reached it.
 pub(super) struct Best<'o> {
-    /// Best force so far, widened by the tie tolerance and by `slack`:
-    /// the bar a candidate must not exceed to be evaluated and kept.
+    /// Best force so far, widened by the tie tolerance: the bar a
+    /// candidate must not exceed to be evaluated and kept.
     pub(super) bar: f64,
-    /// Best force so far, widened by the tie tolerance: the bar of the
-    /// least (equal to `bar` without slack).
-    least: f64,
-    /// 1 + the relative slack of `bar` over `least` (a sampled scan's,
-    /// `refine`; 1 for an exhaustive one).
-    slack: f64,
     /// Whether bounds may reject candidates unevaluated.
     pub(super) prune: bool,
     /// Admissible candidates that were at or below the bar when found,
@@ -60,13 +54,10 @@ impl<'o> Best<'o> {
         mut buffer: Vec<Choice>,
         prune: bool,
         observer: Option<Observer<'o>>,
-        slack: f64,
     ) -> Self {
         buffer.clear();
         Best {
             bar: f64::INFINITY,
-            least: f64::INFINITY,
-            slack: 1.0 + slack,
             prune,
             admissible: buffer,
             observer,
@@ -80,8 +71,7 @@ impl<'o> Best<'o> {
 
     /// Lowers the bar to a force found.
     pub(super) fn improve(&mut self, force: f64) {
-        self.least = self.least.min(force * (1.0 + TIE_TOLERANCE));
-        self.bar = self.least * self.slack;
+        self.bar = self.bar.min(force * (1.0 + TIE_TOLERANCE));
     }
 
     /// No candidate from weight W on can beat the best: W f_min > P_best
@@ -121,20 +111,12 @@ impl<'o> Best<'o> {
         self.admissible.push(candidate);
     }
 
-    /// Keeps a candidate evaluated elsewhere, as `consider` would.
-    pub(super) fn keep(&mut self, candidate: Choice) {
-        if candidate.force <= self.bar {
-            self.improve(candidate.force);
-            self.admissible.push(candidate);
-        }
-    }
-
     /// The candidate of least force, P* = min_j P_j (M11), nearest the
     /// blade among near-ties.
     pub(super) fn select(&self) -> Option<Choice> {
         self.admissible
             .iter()
-            .filter(|c| c.force <= self.least)
+            .filter(|c| c.force <= self.bar)
             .min_by_key(|c| c.node)
             .copied()
     }

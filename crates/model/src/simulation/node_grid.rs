@@ -10,7 +10,7 @@ use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::face_friction::Face;
 use crate::grid::Band;
-use crate::grid::Scheme;
+use crate::grid::FaceNode;
 use crate::kinematics::{Advance, Kinematics, Update};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
@@ -36,15 +36,6 @@ pub(super) fn fresh_angles(laws: &Laws) -> (f64, f64) {
     )
 }
 
-/// The node grid of a case: h = k v0.
-pub(super) fn scheme(case: &Case) -> Scheme {
-    Scheme {
-        spacing: case.run.node_spacing,
-        increment: case.run.increment,
-        increments_per_node: case.increments_per_node(),
-    }
-}
-
 /// The nodes and what works on them.
 #[derive(Clone, Debug)]
 pub(crate) struct NodeGrid {
@@ -68,7 +59,7 @@ impl NodeGrid {
     /// Flat ground of fresh soil, as many nodes as the case starts with.
     pub(super) fn flat(case: &Case, laws: &Laws) -> Self {
         let surface = Surface::flat(
-            scheme(case),
+            case.run.increment,
             case.deepest(),
             case.soil.unit_weight,
             fresh_angles(laws),
@@ -125,7 +116,7 @@ impl NodeGrid {
     ) -> Option<Choice> {
         let c = at.case;
         let d = self.tip_depth(c);
-        let dx = self.surface.scheme.spacing;
+        let dx = self.surface.spacing;
         let node = self.surface.face.node;
         let crescents = Crescents::of(c, &self.side, (self.surface.x(node), node, dx));
         let input = SearchInput {
@@ -138,7 +129,6 @@ impl NodeGrid {
             grow_nodes: (GROW_DEPTHS * d / dx).ceil() as usize,
             loads: self.loads(c),
             crescents,
-            stride: c.search_stride(),
         };
         let reach = self.surface.face.node + (MAX_REACH_DEPTHS * d / dx).ceil() as usize;
         // The end wall: candidates need a node ahead of them before it.
@@ -180,13 +170,13 @@ impl NodeGrid {
     }
 
     /// How the face moves in the next increment, in which the tip goes
-    /// `deepening` deeper: one node every k increments, in between offset
-    /// by a whole number of increments.
-    fn advance(&self, done: usize, deepening: f64) -> Advance {
-        let scheme = &self.surface.scheme;
+    /// `deepening` deeper: one node.
+    fn advance(&self, deepening: f64) -> Advance {
         Advance {
             deepening,
-            face: scheme.face_after(done + 1, self.surface.face.node),
+            face: FaceNode {
+                node: self.surface.face.node + 1,
+            },
         }
     }
 
@@ -201,9 +191,9 @@ impl NodeGrid {
             (choice.grid_slope, choice.tan_beta),
             c.soil.band_width,
             depth,
-            self.surface.scheme.spacing,
+            self.surface.spacing,
         );
-        let advance = self.advance(at.done, c.tip_depth(u + c.run.increment) - depth);
+        let advance = self.advance(c.tip_depth(u + c.run.increment) - depth);
         let update = self.kinematics.apply(
             &mut self.surface,
             &band,

@@ -4,11 +4,11 @@
 //! case (as `advance_to` may have steered it), the surface's nodes and
 //! counters, the search's seed (the previous increment's emergence node)
 //! and evaluation count, the side heaps, the increments done and the
-//! steepest climb the laws were made for (`Body`);
-//! on the vertex ground, its vertices and evaluation count instead of the
-//! node grid's fields, which are then written empty.
-//! What the case determines (the laws, the rake's grid, the node scheme,
-//! the face's node, which follows from the increments done) is rebuilt
+//! steepest climb the laws were made for (`Body`); the ground as its own
+//! type writes it (`GroundBody`: the vertices and the evaluation count, or
+//! the node grid's fields).
+//! What the case determines (the laws, the rake's grid, the face's node,
+//! which follows from the increments done) is rebuilt
 //! from it; the search's, kinematics' and avalanche's scratch is rebuilt
 //! empty, as each increment fills it before use. So a restored simulation
 //! continues bit for bit as the original would.
@@ -25,9 +25,9 @@ mod error;
 
 pub use error::SnapshotError;
 
-use super::node_grid::{fresh_angles, scheme, NodeGrid};
+use super::node_grid::{fresh_angles, NodeGrid};
 use super::{Discretised, Simulation};
-use crate::case::Case;
+use crate::case::{Case, Ground as GroundChoice};
 use crate::discretisation::Discretisation;
 use crate::grid::FaceNode;
 use crate::ground::cutting::Cutting;
@@ -43,7 +43,7 @@ use std::borrow::Cow;
 /// The first bytes of every snapshot.
 pub const MAGIC: [u8; 8] = *b"SOILCUT\x01";
 /// The layout's version: raised whenever the body changes.
-pub const FORMAT_VERSION: u32 = 9;
+pub const FORMAT_VERSION: u32 = 10;
 /// The crate version a snapshot must come from.
 pub const CRATE_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Bytes of the CRC-32 that ends every snapshot.
@@ -67,15 +67,21 @@ struct Body<'a> {
     initial_mass: f64,
     /// The side heaps of a blade of finite width, on either ground.
     side: Cow<'a, SideHeaps>,
-    /// The node grid; empty on the vertex ground, and not read there.
-    nodes: NodeBody<'a>,
-    /// The vertex ground and its evaluations, where the case has one
-    /// (docs/model.md §19).
-    vertices: Option<(Cow<'a, Ground>, u64)>,
+    /// The ground, of the case's `run.ground`.
+    ground: GroundBody<'a>,
+}
+
+/// The ground's state in a snapshot, of the kind its case runs on.
+#[derive(Serialize, Deserialize)]
+enum GroundBody<'a> {
+    /// The vertex ground and its evaluations.
+    Vertices(Cow<'a, Ground>, u64),
+    /// The node grid.
+    Nodes(NodeBody<'a>),
 }
 
 /// The node grid's state in a snapshot.
-#[derive(Default, Serialize, Deserialize)]
+#[derive(Serialize, Deserialize)]
 struct NodeBody<'a> {
     /// The surface's floor y, where the undisturbed ground begins, and the
     /// trench's and the appended ground's weights and area.
@@ -136,14 +142,7 @@ impl Simulation {
     }
 
     fn body<'a>(&'a self, note: &'a [u8]) -> Body<'a> {
-        let (nodes, vertices, side) = match &self.ground {
-            Discretised::Nodes(grid) => (NodeBody::of(grid), None, &grid.side),
-            Discretised::Vertices(cutting) => (
-                NodeBody::default(),
-                Some((Cow::Borrowed(cutting.ground()), cutting.evaluations())),
-                cutting.side_heaps(),
-            ),
-        };
+        let (ground, side) = self.ground.body();
         Body {
             case: Cow::Borrowed(&self.case),
             note: Cow::Borrowed(note),
@@ -151,8 +150,7 @@ impl Simulation {
             steepest_climb: self.laws.steepest_climb,
             initial_mass: self.initial_mass,
             side: Cow::Borrowed(side),
-            nodes,
-            vertices,
+            ground,
         }
     }
 
@@ -163,17 +161,7 @@ impl Simulation {
         let initial_mass = finite("initial mass", b.initial_mass)?;
         let laws = laws_for(&case, b.steepest_climb)?;
         let side = side_heaps(&case, b.side.into_owned())?;
-        let ground = match resumed_vertices(&case, b.vertices)? {
-            Some(ground) => {
-                let (ground, evaluations) = ground;
-                Discretised::Vertices(Box::new(Cutting::resumed(
-                    &case,
-                    (ground, side),
-                    evaluations,
-                )))
-            }
-            None => Discretised::Nodes(Box::new(b.nodes.restore(&case, &laws, (b.done, side))?)),
-        };
+        let ground = b.ground.restore(&case, &laws, (b.done, side))?;
         Ok(Simulation {
             laws,
             case,
@@ -199,6 +187,55 @@ fn laws_for(case: &Case, climb: f64) -> Result<Laws, SnapshotError> {
         laws.climbing(case, climb);
     }
     Ok(laws)
+}
+
+impl Discretised {
+    /// The ground's state as a snapshot holds it, and its side heaps.
+    fn body(&self) -> (GroundBody<'_>, &SideHeaps) {
+        match self {
+            Discretised::Nodes(grid) => (GroundBody::Nodes(NodeBody::of(grid)), &grid.side),
+            Discretised::Vertices(cutting) => (
+                GroundBody::Vertices(Cow::Borrowed(cutting.ground()), cutting.evaluations()),
+                cutting.side_heaps(),
+            ),
+        }
+    }
+}
+
+impl GroundBody<'_> {
+    /// The ground of `case` after `done` increments beside `side`: of the
+    /// kind the case's `run.ground` says, and one that runs make.
+    fn restore(
+        self,
+        case: &Case,
+        laws: &Laws,
+        (done, side): (usize, SideHeaps),
+    ) -> Result<Discretised, SnapshotError> {
+        match (self, case.run.ground) {
+            (GroundBody::Vertices(ground, evaluations), GroundChoice::Vertices(keys)) => {
+                let ground = ground.into_owned();
+                if let Some(defect) = ground.defect() {
+                    return Err(SnapshotError::invalid("vertex ground", defect));
+                }
+                let cutting = Cutting::resumed(case, keys, (ground, side), evaluations);
+                Ok(Discretised::Vertices(Box::new(cutting)))
+            }
+            (GroundBody::Nodes(nodes), GroundChoice::Nodes) => Ok(Discretised::Nodes(Box::new(
+                nodes.restore(case, laws, (done, side))?,
+            ))),
+            (body, choice) => Err(SnapshotError::invalid(
+                "ground",
+                format!(
+                    "{} where the case's run.ground = \"{}\" says otherwise",
+                    match body {
+                        GroundBody::Vertices(..) => "vertices",
+                        GroundBody::Nodes(_) => "nodes",
+                    },
+                    choice.name()
+                ),
+            )),
+        }
+    }
 }
 
 impl<'a> NodeBody<'a> {
@@ -236,12 +273,8 @@ impl<'a> NodeBody<'a> {
         let unit_weight = column("unit weights", self.unit_weight)?;
         let friction = column("friction angles", self.friction)?;
         let dilation = column("dilation angles", self.dilation)?;
-        let k = case.increments_per_node();
-        // The face follows from the increments done (`Scheme::face_after`).
-        let face = FaceNode {
-            node: done / k,
-            offset: (done % k) as f64 / k as f64,
-        };
+        // The face follows from the increments done: one node each.
+        let face = FaceNode { node: done };
         check_state(&StateCheck {
             case,
             n: height.len(),
@@ -254,7 +287,7 @@ impl<'a> NodeBody<'a> {
             unit_weight: &unit_weight,
         })?;
         let mut s = Surface::flat(
-            scheme(case),
+            case.run.increment,
             -floor,
             case.soil.unit_weight,
             fresh_angles(laws),
@@ -288,33 +321,6 @@ fn side_heaps(case: &Case, side: SideHeaps) -> Result<SideHeaps, SnapshotError> 
     };
     check_side_heaps(case, &side)?;
     Ok(side)
-}
-
-/// The vertex ground of a restored snapshot and its evaluations: there
-/// exactly where its case asks for one, and one that runs make
-/// (`Ground::defect`).
-fn resumed_vertices(
-    case: &Case,
-    vertices: Option<(Cow<Ground>, u64)>,
-) -> Result<Option<(Ground, u64)>, SnapshotError> {
-    let wanted = case.run.vertex_spacing > 0.0;
-    match vertices {
-        None if !wanted => Ok(None),
-        Some((ground, evaluations)) if wanted => {
-            let ground = ground.into_owned();
-            if let Some(defect) = ground.defect() {
-                return Err(SnapshotError::invalid("vertex ground", defect));
-            }
-            Ok(Some((ground, evaluations)))
-        }
-        _ => Err(SnapshotError::invalid(
-            "vertex ground",
-            format!(
-                "present where run.vertex_spacing = {} says otherwise",
-                case.run.vertex_spacing
-            ),
-        )),
-    }
 }
 
 /// The body from its postcard bytes, all of them.

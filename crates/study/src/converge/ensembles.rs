@@ -2,14 +2,15 @@
 //! ensemble of perturbed runs ([`crate::ensemble`]), and each level is
 //! judged against the finest by the rule of [`crate::accuracy`].
 
-use super::Refine;
+use super::{Refine, Resolution};
 use crate::accuracy::{Agreement, Spread};
 use crate::ensemble::{accuracy_rule, Ensemble, EnsembleResult};
 use crate::error::StudyError;
 use crate::field;
-use crate::run::{override_of, BaseCase};
+use crate::run::BaseCase;
 use crate::Progress;
 use soilcut_io::CsvText;
+use soilcut_model::Ground;
 use std::fmt::Write as _;
 
 /// A convergence study of ensembles to run.
@@ -34,8 +35,9 @@ pub struct EnsembleLevel {
     pub level: usize,
     /// v0 of the level (length).
     pub increment: f64,
-    /// h of the level (length).
-    pub node_spacing: f64,
+    /// The spacing of the level's ground points: the vertex spacing, or
+    /// v0 on the node grid (length).
+    pub spacing: f64,
     /// The level's ensemble.
     pub ensemble: EnsembleResult,
 }
@@ -47,6 +49,8 @@ pub struct EnsembleConvergeResult {
     pub title: String,
     /// What each level halved.
     pub refine: Refine,
+    /// The case's ground, on which every level runs.
+    pub ground: Ground,
     /// Coarsest first.
     pub levels: Vec<EnsembleLevel>,
 }
@@ -59,17 +63,15 @@ impl EnsembleConverge {
             return Err(StudyError::Spec("--levels must be >= 1".to_string()));
         }
         let loaded = self.base.load(&[])?;
-        let grid = (loaded.case.run.increment, loaded.case.run.node_spacing);
+        let own = Resolution::of(&loaded.case);
+        let resolutions = (0..self.levels)
+            .map(|level| self.refine.level(level, own))
+            .collect::<Result<Vec<_>, _>>()?;
         let total = self.levels * self.members;
         let mut levels = Vec::with_capacity(self.levels);
         for (done, level) in (0..self.levels).rev().enumerate() {
-            let (increment, node_spacing) = self.refine.level(level, grid);
-            let set =
-                |key, value| override_of(key, &toml::Value::Float(value)).map_err(StudyError::Spec);
-            let base = self.base.with(&[
-                set("run.increment", increment)?,
-                set("run.node_spacing", node_spacing)?,
-            ]);
+            let resolution = resolutions[level];
+            let base = self.base.with(&resolution.overrides()?);
             let offset = done * self.members;
             let inner = |d: usize, _: usize| progress(offset + d, total);
             let ensemble = Ensemble {
@@ -79,14 +81,12 @@ impl EnsembleConverge {
             }
             .run(&inner)
             .map_err(|e| {
-                StudyError::Case(format!(
-                    "level {level} (increment {increment}, node spacing {node_spacing}): {e}"
-                ))
+                StudyError::Case(format!("level {level} ({}): {e}", resolution.describe()))
             })?;
             levels.push(EnsembleLevel {
                 level,
-                increment,
-                node_spacing,
+                increment: resolution.increment,
+                spacing: resolution.spacing(),
                 ensemble,
             });
         }
@@ -94,6 +94,7 @@ impl EnsembleConverge {
         Ok(EnsembleConvergeResult {
             title: loaded.case.title,
             refine: self.refine,
+            ground: loaded.case.run.ground,
             levels,
         })
     }
@@ -120,7 +121,7 @@ impl EnsembleConvergeResult {
         let mut out = CsvText::named(&[
             "level",
             "increment",
-            "node_spacing",
+            "spacing",
             "window",
             "members",
             "mean",
@@ -144,7 +145,7 @@ impl EnsembleConvergeResult {
                 out.fields(&[
                     l.level.to_string(),
                     l.increment.to_string(),
-                    l.node_spacing.to_string(),
+                    l.spacing.to_string(),
                     window,
                     s.n.to_string(),
                     field::number(s.mean),
@@ -185,7 +186,7 @@ impl EnsembleConvergeResult {
         let _ = writeln!(
             w,
             "Level k runs at {}, each an ensemble of {members} perturbed runs ({}). Judged against the finest level by the rule: {}.\n",
-            self.refine.describe(),
+            self.refine.describe(&self.ground),
             self.finest().perturbation.rule(),
             accuracy_rule()
         );
@@ -193,7 +194,7 @@ impl EnsembleConvergeResult {
         let heads: Vec<String> = (0..windows).map(|k| format!("{k}–{}", k + 1)).collect();
         let _ = writeln!(
             w,
-            "| level | increment | node spacing | {} | whole run | accurate |\n|{}",
+            "| level | increment | spacing | {} | whole run | accurate |\n|{}",
             heads.join(" | "),
             "---|".repeat(windows + 5)
         );
@@ -219,7 +220,7 @@ impl EnsembleConvergeResult {
                 "| {} | {} | {} | {} | {} | {} |",
                 l.level,
                 l.increment,
-                l.node_spacing,
+                l.spacing,
                 cells.join(" | "),
                 cell(&e.whole_run, a.whole_run.deviation, a.whole_run.tolerance),
                 if a.accurate() { "yes" } else { "no" }
