@@ -5,8 +5,7 @@
 use crate::{load, CaseOutput, Failure, Moment};
 use soilcut_bounds::{instant, Instant, InstantError, Options};
 use soilcut_io::{
-    bounds_columns, bounds_json, bounds_options, field_name, floor_name, strength_name,
-    write_output_dir_then, OutputError,
+    bounds_columns, bounds_json, bounds_options, field_name, floor_name, strength_name, OutputError,
 };
 use soilcut_model::Case;
 use soilcut_plot::{draw_bounds, draw_panels, BoundsFields, Panel, Series};
@@ -67,7 +66,7 @@ pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
     args.moment.check(case, path)?;
     let options = args.options(path)?;
     let out = target.out_or(&format!("{}-bounds", case.name));
-    soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
+    let claim = target.claim(&out)?;
     let instants = match (args.moment.at, args.moment.every) {
         (Some(at), _) => instant::at(case, at, options).map(|i| vec![i]),
         (None, every) => instant::every(case, every.unwrap_or(1.0), options),
@@ -82,26 +81,27 @@ pub fn bounds(args: BoundsArgs) -> Result<(), Failure> {
     ];
     // One instant: its fields; instants through the run: the forces and
     // ratios against u/d.
-    write_output_dir_then(&out, &files, target.force, |staged| {
-        let (file, drawn) = match instants.as_slice() {
-            [one] => {
-                let file = staged.join("bounds.png");
-                let drawn = draw_bounds(&fields(one, case), &file);
-                (file, drawn)
-            }
-            many => {
-                let file = staged.join("bounds_every.png");
-                let title = format!("{}: soilcut beside the bounds", case.title);
-                let drawn = draw_panels(&title, &through_run(many, case), 2, &file);
-                (file, drawn)
-            }
-        };
-        drawn.map_err(|e| OutputError::Io {
-            path: file,
-            source: std::io::Error::other(e.message),
+    claim
+        .write_then(&files, |staged| {
+            let (file, drawn) = match instants.as_slice() {
+                [one] => {
+                    let file = staged.join("bounds.png");
+                    let drawn = draw_bounds(&fields(one, case), &file);
+                    (file, drawn)
+                }
+                many => {
+                    let file = staged.join("bounds_every.png");
+                    let title = format!("{}: soilcut beside the bounds", case.title);
+                    let drawn = draw_panels(&title, &through_run(many, case), 2, &file);
+                    (file, drawn)
+                }
+            };
+            drawn.map_err(|e| OutputError::Io {
+                path: file,
+                source: std::io::Error::other(e.message),
+            })
         })
-    })
-    .map_err(Failure::output)?;
+        .map_err(Failure::output)?;
     if args.json {
         print!("{json}");
     } else {

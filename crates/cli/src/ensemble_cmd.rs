@@ -4,7 +4,6 @@
 
 use super::{CaseOutput, Failure};
 use crate::study_cmd::{progress, study_failure};
-use soilcut_io::check_output_dir;
 use soilcut_study::ensemble::Ensemble;
 use soilcut_study::BaseCase;
 
@@ -22,7 +21,7 @@ pub fn run_ensemble(
         .map_err(|e| Failure::argument(path, "--set", &target.set, e))?;
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
     let out = target.out_or(&case.name);
-    check_output_dir(&out, target.force).map_err(Failure::output)?;
+    let claim = target.claim(&out)?;
     super::warn_accuracy(&case, quiet);
     let ensemble = Ensemble {
         base,
@@ -32,9 +31,7 @@ pub fn run_ensemble(
     let result = ensemble
         .run(&progress(quiet, "members"))
         .map_err(|e| study_failure(path, e))?;
-    result
-        .write(&out, target.force, plots)
-        .map_err(Failure::output)?;
+    result.write_into(claim, plots).map_err(Failure::output)?;
     if !quiet {
         let w = &result.whole_run;
         println!(

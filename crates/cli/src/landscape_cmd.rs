@@ -3,9 +3,7 @@
 //! through the run.
 
 use crate::{load, CaseOutput, Failure, Moment};
-use soilcut_io::{
-    landscape_at, landscape_csv, landscape_map_csv, write_output_dir_then, LoadedCase, OutputError,
-};
+use soilcut_io::{landscape_at, landscape_csv, landscape_map_csv, LoadedCase, OutputError};
 use soilcut_model::landscape::{least_by_distance, near_minimum};
 use soilcut_model::{Candidate, Simulation};
 use soilcut_plot::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap, PlotError};
@@ -37,20 +35,21 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     let case = &loaded.case;
     args.moment.check(case, path)?;
     let out = target.out_or(&format!("{}-landscape", case.name));
-    soilcut_io::check_output_dir(&out, target.force).map_err(Failure::output)?;
+    let claim = target.claim(&out)?;
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let taken = match (args.moment.at, args.moment.every) {
         (Some(at), _) => one(&mut sim, &loaded, at, path)?,
         (None, every) => map(&mut sim, &loaded, every.unwrap_or(1.0), path)?,
     };
-    write_output_dir_then(&out, &taken.files, target.force, |staged| {
-        let file = staged.join(taken.picture.name());
-        taken.picture.draw(&file).map_err(|e| OutputError::Io {
-            path: file,
-            source: std::io::Error::other(e.message),
+    claim
+        .write_then(&taken.files, |staged| {
+            let file = staged.join(taken.picture.name());
+            taken.picture.draw(&file).map_err(|e| OutputError::Io {
+                path: file,
+                source: std::io::Error::other(e.message),
+            })
         })
-    })
-    .map_err(Failure::output)?;
+        .map_err(Failure::output)?;
     println!("{}; outputs in {}", taken.summary, out.display());
     Ok(())
 }

@@ -15,12 +15,14 @@ mod bounds_cmd;
 mod ensemble_cmd;
 mod landscape_cmd;
 mod study_cmd;
+mod sweep_cmd;
+mod sweep_folder;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    read_case, record_kept, write_run_dir, InputError, LoadedCase, OutputError, Override,
-    PictureError, RecordedRun,
+    read_case, record_kept, write_run_into, InputError, LoadedCase, OutputDir, OutputError,
+    Override, PictureError, RecordedRun,
 };
 use soilcut_model::{Case, Ground, Simulation};
 use std::io::IsTerminal;
@@ -152,8 +154,8 @@ enum Command {
     #[command(after_help = bounds_cmd::EXAMPLES)]
     Bounds(bounds_cmd::BoundsArgs),
     /// Run a case for many values of its keys (a grid or a Latin-hypercube sample), in parallel.
-    #[command(after_help = study_cmd::SWEEP_EXAMPLES)]
-    Sweep(study_cmd::SweepArgs),
+    #[command(after_help = sweep_cmd::SWEEP_EXAMPLES)]
+    Sweep(sweep_cmd::SweepArgs),
     /// Fit keys of a case to a measured force-displacement curve.
     #[command(after_help = study_cmd::FIT_EXAMPLES)]
     Fit(study_cmd::FitArgs),
@@ -186,6 +188,12 @@ impl CaseOutput {
     /// The `--set` overrides.
     fn overrides(&self) -> Result<Vec<Override>, Failure> {
         overrides(&self.set)
+    }
+
+    /// Claims `out` for the command's outputs (`OutputDir::claim`), before
+    /// it runs.
+    fn claim(&self, out: &Path) -> Result<OutputDir, Failure> {
+        OutputDir::claim(out, self.force).map_err(Failure::output)
     }
 
     /// `--out`, or out/`name`.
@@ -277,7 +285,8 @@ impl Failure {
 
     fn output(e: OutputError) -> Self {
         Failure {
-            // An occupied or unnamed folder is the user's choice; I/O is not.
+            // A folder refused before the run (occupied, unnamed, held by another
+            // command, not makeable) is the user's to choose again; I/O is not.
             code: if matches!(e, OutputError::Io { .. }) {
                 1
             } else {
@@ -301,6 +310,7 @@ impl Failure {
 }
 
 fn main() -> ExitCode {
+    stop_cleanly_on_signals();
     let result = match Cli::parse().command {
         Command::Run {
             target,
@@ -328,7 +338,7 @@ fn main() -> ExitCode {
         } => compare(&dirs, measured.as_deref(), &out),
         Command::Landscape(args) => landscape_cmd::landscape(args),
         Command::Bounds(args) => bounds_cmd::bounds(args),
-        Command::Sweep(args) => study_cmd::sweep(args),
+        Command::Sweep(args) => sweep_cmd::sweep(args),
         Command::Fit(args) => study_cmd::fit(args),
         Command::Converge(args) => study_cmd::converge(args),
         Command::Accuracy(args) => accuracy_cmd::accuracy(args),
@@ -340,6 +350,31 @@ fn main() -> ExitCode {
             ExitCode::from(f.code)
         }
     }
+}
+
+/// Ctrl-C (SIGINT), SIGTERM and SIGHUP end the command as before, but
+/// first remove its staging folders and lock files and let a folder
+/// written in place (a sweep's) mark itself as stopped
+/// (`soilcut_io::abandon_outputs`); the exit code is 128 + the signal's
+/// number, as the shell reports a process the signal ended.
+fn stop_cleanly_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    // Without the handler the signals end the process as they did.
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return;
+    };
+    std::thread::spawn(move || {
+        if let Some(signal) = signals.forever().next() {
+            let name = match signal {
+                SIGINT => "SIGINT",
+                SIGTERM => "SIGTERM",
+                _ => "SIGHUP",
+            };
+            soilcut_io::abandon_outputs(name);
+            eprintln!("error: stopped by {name}; unfinished outputs were removed");
+            std::process::exit(128 + signal);
+        }
+    });
 }
 
 /// A command-line argument as the "path" of an error: `--set KEY=VALUE`,
@@ -428,8 +463,7 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let loaded = load(path, &target.set)?;
     let case = &loaded.case;
     let out = target.out_or(&case.name);
-    let force = target.force;
-    soilcut_io::check_output_dir(&out, force).map_err(Failure::output)?;
+    let claim = target.claim(&out)?;
 
     warn_accuracy(case, quiet);
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
@@ -443,10 +477,10 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     bar.finish_and_clear();
     if let Some(e) = stopped {
         return Err(stopped_run(path, &out, summary.steps, e, || {
-            write_run_dir(&out, &files, force, plots)
+            write_run_into(claim, &files, plots).map(drop)
         }));
     }
-    write_run_dir(&out, &files, force, plots).map_err(Failure::output)?;
+    write_run_into(claim, &files, plots).map_err(Failure::output)?;
     if quiet {
         return Ok(());
     }

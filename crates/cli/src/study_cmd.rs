@@ -1,29 +1,20 @@
 //! `soilcut sweep`, `soilcut fit`, `soilcut converge`: studies made of many
-//! runs (`soilcut-study`). The outputs of a study appear together or not
-//! at all: they are written into a hidden sibling folder renamed into
-//! place when complete.
+//! runs (`soilcut-study`). The outputs of a fit or a convergence study
+//! appear together or not at all: they are written into a hidden staging
+//! folder published when complete. A sweep writes its runs into its
+//! folder as they finish (`sweep_cmd`).
 
 use super::{CaseOutput, Failure};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use soilcut_io::{check_output_dir, read_measured_curve, write_output_dir_then, OutputError};
+use soilcut_io::{read_measured_curve, OutputDir, OutputError};
 use soilcut_study::converge::ensembles::EnsembleConverge;
 use soilcut_study::converge::{Converge, Refine};
 use soilcut_study::fit::{measured_width, parse_bounds, Compare, Fit, FitResult, Method};
-use soilcut_study::sample::{Sample, Vary};
-use soilcut_study::sweep::Sweep;
 use soilcut_study::{BaseCase, StudyError};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
-
-pub const SWEEP_EXAMPLES: &str = "\
-Examples:
-  soilcut sweep cases/paper/table1-hs.toml --vary soil.friction.peak=30:45:7 --vary soil.d50=0.3,0.6
-      7 x 2 runs; writes out/table1-hs-sweep/{sweep.csv,timing.csv,sweep-<key>.png}
-  soilcut sweep cases/paper/table1-hs.toml --vary soil.friction.peak=30:45 --vary soil.peak_shear=1:3 \\
-      --sample lhs:100 --seed 1 --jobs 2 --set run.increment=0.2
-  soilcut sweep cases/paper/table1-hs.toml --vary choices.band_shear=full,by-position --keep-runs";
 
 pub const FIT_EXAMPLES: &str = "\
 Examples:
@@ -48,31 +39,13 @@ Examples:
 #[derive(Args)]
 pub struct Common {
     #[command(flatten)]
-    target: CaseOutput,
+    pub target: CaseOutput,
     /// Worker threads [default: one per core]. Results do not depend on it.
     #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
-    jobs: usize,
+    pub jobs: usize,
     /// No progress bar (it is shown only when stderr is a terminal).
     #[arg(long)]
-    quiet: bool,
-}
-
-#[derive(Args)]
-pub struct SweepArgs {
-    #[command(flatten)]
-    common: Common,
-    /// A key and its values: lo:hi:n (grid), lo:hi (sampled) or a,b,c (repeatable).
-    #[arg(long, value_name = "KEY=SPEC", required = true)]
-    vary: Vec<String>,
-    /// grid (every combination) or lhs:N (a Latin-hypercube sample of N runs).
-    #[arg(long, value_name = "grid|lhs:N", default_value = "grid")]
-    sample: String,
-    /// Seed of the Latin-hypercube sample.
-    #[arg(long, default_value_t = 0)]
-    seed: u64,
-    /// Also write each run's usual output folder, runs/run-NNNN.
-    #[arg(long)]
-    keep_runs: bool,
+    pub quiet: bool,
 }
 
 #[derive(Args)]
@@ -172,8 +145,8 @@ pub fn study_failure(path: &Path, e: StudyError) -> Failure {
 }
 
 impl Common {
-    /// The base case, the output folder (checked to be free) and the case name.
-    fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
+    /// The base case and the output folder (`--out`, or out/NAME-`study`).
+    pub fn start(&self, study: &str) -> Result<(BaseCase, PathBuf), Failure> {
         let path = &self.target.case;
         let overrides = self.target.overrides()?;
         let base = BaseCase::read(path, overrides)
@@ -183,13 +156,16 @@ impl Common {
             .map_err(|e| Failure::input(path, e))?
             .case
             .name;
-        let out = self.target.out_or(&format!("{name}-{study}"));
-        check_output_dir(&out, self.target.force).map_err(Failure::output)?;
-        Ok((base, out))
+        Ok((base, self.target.out_or(&format!("{name}-{study}"))))
+    }
+
+    /// Claims `out` (`OutputDir::claim`), before the study runs.
+    pub fn claim(&self, out: &Path) -> Result<OutputDir, Failure> {
+        self.target.claim(out)
     }
 
     /// A progress callback: a bar on stderr when it is a terminal.
-    fn progress(&self, unit: &'static str) -> impl Fn(usize, usize) + Sync {
+    pub fn progress(&self, unit: &'static str) -> impl Fn(usize, usize) + Sync {
         progress(self.quiet, unit)
     }
 }
@@ -217,16 +193,15 @@ pub fn progress(quiet: bool, unit: &'static str) -> impl Fn(usize, usize) + Sync
     }
 }
 
-/// Writes a study's outputs: `write` fills a hidden sibling folder, which
-/// then replaces `out` (with `--force`) or becomes it
-/// (`write_output_dir_then`); a failure of `write` is returned as it is.
+/// Writes a study's outputs: `write` fills the staging folder of `out`,
+/// which is then published (`OutputDir::write_then`); a failure of
+/// `write` is returned as it is.
 fn write_study(
-    out: &Path,
-    force: bool,
+    out: OutputDir,
     write: impl FnOnce(&Path) -> Result<(), StudyError>,
 ) -> Result<(), StudyError> {
     let mut failed = None;
-    let placed = write_output_dir_then(out, &[], force, |dir| {
+    let placed = out.write_then(&[], |dir| {
         write(dir).map_err(|e| {
             let source = std::io::Error::other(e.to_string());
             failed = Some(e);
@@ -238,76 +213,17 @@ fn write_study(
     });
     match failed {
         Some(e) => Err(e),
-        None => placed.map_err(StudyError::Output),
+        None => placed.map(drop).map_err(StudyError::Output),
     }
 }
 
-fn text_files<N: AsRef<str>>(dir: &Path, files: &[(N, String)]) -> Result<(), StudyError> {
+pub fn text_files<N: AsRef<str>>(dir: &Path, files: &[(N, String)]) -> Result<(), StudyError> {
     for (name, contents) in files {
         let path = dir.join(name.as_ref());
         std::fs::write(&path, contents)
             .map_err(|source| StudyError::Output(OutputError::Io { path, source }))?;
     }
     Ok(())
-}
-
-pub fn sweep(args: SweepArgs) -> Result<(), Failure> {
-    let c = &args.common;
-    let path = &c.target.case;
-    let fail = |e| study_failure(path, e);
-    let (base, out) = c.start("sweep")?;
-    let varies = args
-        .vary
-        .iter()
-        .map(|v| v.parse::<Vary>())
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(fail)?;
-    let sample = Sample::parse(&args.sample, args.seed).map_err(fail)?;
-    let mut sweep = Sweep {
-        base,
-        varies,
-        sample,
-        jobs: c.jobs,
-        keep_runs: None,
-    };
-    let runs = sweep
-        .points()
-        .map_err(|e| match e {
-            StudyError::Key(e) => Failure::argument(path, "--vary", &args.vary, e),
-            e => fail(e),
-        })?
-        .len();
-    let mut result = None;
-    write_study(&out, c.target.force, |dir| {
-        if args.keep_runs {
-            sweep.keep_runs = Some(dir.join("runs"));
-        }
-        let r = sweep.run(&c.progress("runs"))?;
-        text_files(
-            dir,
-            &[("sweep.csv", r.csv()), ("timing.csv", r.timing_csv())],
-        )?;
-        r.draw(dir)?;
-        result = Some(r);
-        Ok(())
-    })
-    .map_err(fail)?;
-    let first_error = result
-        .as_ref()
-        .and_then(|r| r.rows.iter().find_map(|row| row.outcome.clone().err()));
-    let failed = result.map_or(0, |r| r.failed());
-    println!(
-        "sweep: {runs} runs ({failed} failed), outputs in {}",
-        out.display()
-    );
-    match first_error {
-        // Nothing to study: say so by the exit code too.
-        Some(first) if failed == runs => Err(Failure::input(
-            &out,
-            format!("every run failed; the first: {first}"),
-        )),
-        _ => Ok(()),
-    }
 }
 
 /// A measured curve as a test of `base`, its forces divided by `w`.
@@ -400,7 +316,7 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         jobs: c.jobs,
     };
     let mut summary = String::new();
-    write_study(&out, c.target.force, |dir| {
+    write_study(c.claim(&out)?, |dir| {
         let r = fit.run(&c.progress("runs"))?;
         text_files(dir, &r.files(&title))?;
         r.draw(dir)?;
@@ -425,7 +341,8 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
             members,
             jobs: c.jobs,
         };
-        return converge_ensembles(&study, c, &out).map_err(fail);
+        let claim = c.claim(&out)?;
+        return converge_ensembles(&study, c, claim, &out).map_err(fail);
     }
     let study = Converge {
         base,
@@ -435,7 +352,7 @@ pub fn converge(args: ConvergeArgs) -> Result<(), Failure> {
         jobs: c.jobs,
     };
     let mut verdicts = String::new();
-    write_study(&out, c.target.force, |dir| {
+    write_study(c.claim(&out)?, |dir| {
         let r = study.run(&c.progress("levels"))?;
         converge_files(dir, r.csv(), r.markdown(), r.timing_csv())?;
         r.draw(&dir.join("converge.png"))?;
@@ -469,9 +386,14 @@ fn converge_files(
 }
 
 /// `soilcut converge --ensemble N`: the levels' ensembles and their verdicts.
-fn converge_ensembles(study: &EnsembleConverge, c: &Common, out: &Path) -> Result<(), StudyError> {
+fn converge_ensembles(
+    study: &EnsembleConverge,
+    c: &Common,
+    claim: OutputDir,
+    out: &Path,
+) -> Result<(), StudyError> {
     let mut verdicts = String::new();
-    write_study(out, c.target.force, |dir| {
+    write_study(claim, |dir| {
         let r = study.run(&c.progress("members"))?;
         converge_files(dir, r.csv(), r.markdown(), r.timing_csv())?;
         let accurate: Vec<String> = r

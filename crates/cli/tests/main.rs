@@ -6,6 +6,7 @@ mod analytic;
 mod bounds;
 mod cli;
 mod module_cycles;
+mod output_folder;
 mod plots;
 mod readme;
 mod references;

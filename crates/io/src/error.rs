@@ -69,8 +69,29 @@ impl std::error::Error for InputError {}
 pub enum OutputError {
     /// The output folder exists, is not empty, and `force` was not given.
     Exists(PathBuf),
-    /// `force` cannot replace a path without a folder name (`.`, `..`, `/`).
+    /// A path without a folder name (`.`, `..`, `/`): no output folder
+    /// can be placed there.
     Unnamed(PathBuf),
+    /// The folder's name is longer than
+    /// [`MAX_NAME_BYTES`](crate::MAX_NAME_BYTES) (its length, bytes).
+    NameTooLong(PathBuf, usize),
+    /// Another command (its process number, if known) is writing to it.
+    Busy(PathBuf, Option<u32>),
+    /// No output folder can be made there (nothing was run).
+    Unusable {
+        /// The output folder.
+        path: PathBuf,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
+    /// Something appeared at the output folder's path while the command
+    /// ran: it was left alone and the outputs were placed at `kept`.
+    Appeared {
+        /// The output folder.
+        path: PathBuf,
+        /// Where the outputs are.
+        kept: PathBuf,
+    },
     /// The path exists and is not a folder (a file): never replaced.
     NotAFolder(PathBuf),
     /// `force` was given, but the folder holds no
@@ -99,6 +120,10 @@ impl OutputError {
             | OutputError::Unnamed(path)
             | OutputError::NotAFolder(path)
             | OutputError::NotOurs(path)
+            | OutputError::NameTooLong(path, _)
+            | OutputError::Busy(path, _)
+            | OutputError::Unusable { path, .. }
+            | OutputError::Appeared { path, .. }
             | OutputError::Io { path, .. } => path,
         }
     }
@@ -113,7 +138,27 @@ impl fmt::Display for OutputError {
             ),
             OutputError::Unnamed(_) => write!(
                 f,
-                "cannot replace a folder given without a name (such as . or ..); choose another --out"
+                "a folder given without a name (such as . or ..) cannot hold soilcut's outputs; give a new folder's name, e.g. --out out/NAME"
+            ),
+            OutputError::NameTooLong(_, n) => write!(
+                f,
+                "the folder's name is {n} bytes; soilcut's output folders' names are at most {} bytes (255, the file system's limit, less what its hidden working folder beside it adds): choose a shorter --out",
+                crate::MAX_NAME_BYTES
+            ),
+            OutputError::Busy(_, pid) => write!(
+                f,
+                "another soilcut{} is writing this output folder; wait for it to end or choose another --out",
+                pid.map_or(String::new(), |p| format!(" (process {p})"))
+            ),
+            OutputError::Unusable { source, .. } => write!(
+                f,
+                "{}: soilcut cannot make its output folder here; choose another --out",
+                one_line(&source.to_string())
+            ),
+            OutputError::Appeared { kept, .. } => write!(
+                f,
+                "a folder or file appeared here while soilcut ran; it was left alone, and the outputs are in {}",
+                kept.display()
             ),
             OutputError::NotAFolder(_) => write!(
                 f,

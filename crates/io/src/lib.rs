@@ -8,7 +8,8 @@
 //! * [`Columns`]: the numbers of a CSV file before they are text, which
 //!   front ends hand out as arrays ([`RunTables`] for a run).
 //! * [`RunOutput`]: `history.csv`, `profile.csv`, `summary.json`,
-//!   `case.resolved.toml`; [`write_output_dir`] places them atomically.
+//!   `case.resolved.toml`; [`write_output_dir`] places them atomically, and
+//!   [`OutputDir`] claims a folder when a command starts (`place`).
 //! * [`landscape_csv`]: every candidate mechanism of one increment;
 //!   [`landscape_map_csv`]: landscapes through a run, binned by distance.
 //! * [`read_measured_curve`]: a measured force-displacement curve (`u,force`,
@@ -35,6 +36,7 @@ mod output;
 mod overrides;
 #[cfg(feature = "pictures")]
 mod pictures;
+mod place;
 mod record;
 
 pub use baselines::{baselines, BaselineFactors, Baselines, NarrowBaseline, NormalisedBaseline};
@@ -62,11 +64,12 @@ pub use measured::{
     parse_measured, parse_measured_bytes, parse_measured_curve, read_measured, read_measured_curve,
     MeasuredCurve,
 };
-pub use output::{
-    check_output_dir, peak_prominence_rule, profile_columns, write_output_dir,
-    write_output_dir_then, RunOutput, RunTables, OUTPUT_MARKER, PROFILE_HEADER,
-};
+pub use output::{peak_prominence_rule, profile_columns, RunOutput, RunTables, PROFILE_HEADER};
 pub use overrides::{parse_value, Override};
 #[cfg(feature = "pictures")]
-pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, PictureError};
+pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, write_run_into, PictureError};
+pub use place::{
+    abandon_outputs, check_output_dir, on_abandon, write_output_dir, write_output_dir_then,
+    OutputDir, Published, Registered, MAX_NAME_BYTES, OUTPUT_MARKER,
+};
 pub use record::{record_files, record_kept, record_run, RecordedRun, ANIMATION_FRAMES};

@@ -25,6 +25,13 @@ impl FromStr for Override {
             .split_once('=')
             .ok_or_else(|| bad("expected key.path=value"))?;
         let value = value.trim();
+        // Read as TOML, a line break would start a second key=value that
+        // is dropped: `run.travel=10\nblade.depth=5` set the travel only.
+        if value.contains(['\n', '\r']) {
+            return Err(bad(
+                "the value holds a line break: give one key=value per --set (two keys, two --set)",
+            ));
+        }
         let depth = nesting(value);
         if depth > MAX_NESTING {
             return Err(bad(&format!(
@@ -178,6 +185,13 @@ mod tests {
     #[test]
     fn malformed_overrides_are_refused() {
         assert!("run.increment".parse::<Override>().is_err());
+        for two in [
+            "run.travel=10\nblade.depth=5",
+            "run.travel=10\r\nblade.depth=5",
+        ] {
+            let e = two.parse::<Override>().unwrap_err();
+            assert!(e.to_string().contains("line break"), "{e}");
+        }
         assert!("run..increment=1".parse::<Override>().is_err());
         assert!("=1".parse::<Override>().is_err());
         let mut t: toml::Table = "[run]\nincrement = 0.04".parse().unwrap();

@@ -5,7 +5,7 @@
 use crate::columns::Columns;
 use crate::error::{OutputError, RunFilesError};
 use crate::finished::{read_finished_run, FinishedRun};
-use crate::output::write_output_dir_then;
+use crate::place::{OutputDir, Published};
 use soilcut_plot::{Frame, Increment, Measured, PlotError, RunData, SurfacePoint};
 use std::path::{Path, PathBuf};
 
@@ -48,15 +48,23 @@ pub fn draw_run_dir(dir: &Path) -> Result<Vec<PathBuf>, PictureError> {
 }
 
 /// Writes a run's output folder: `files` and, if `pictures`, the pictures
-/// drawn from them (placed together, atomically, by
-/// [`write_output_dir_then`]).
+/// drawn from them (placed together, atomically, by [`OutputDir`]).
 pub fn write_run_dir(
     out: &Path,
     files: &[(&str, String)],
     force: bool,
     pictures: bool,
 ) -> Result<(), OutputError> {
-    write_output_dir_then(out, files, force, |staged| {
+    write_run_into(OutputDir::claim(out, force)?, files, pictures).map(drop)
+}
+
+/// [`write_run_dir`] into a folder claimed before the run.
+pub fn write_run_into(
+    out: OutputDir,
+    files: &[(&str, String)],
+    pictures: bool,
+) -> Result<Published, OutputError> {
+    out.write_then(files, |staged| {
         if pictures {
             draw_run_dir(staged).map_err(|e| {
                 let message = match e {

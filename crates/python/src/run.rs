@@ -127,8 +127,10 @@ pub fn csv_columns<'py>(py: Python<'py>, name: &str, text: &str) -> PyResult<Bou
 }
 
 /// An output folder's error as Python's: `FileExistsError` for an occupied
-/// folder (or a file, or with `force` a folder soilcut did not write),
-/// `ValueError` for one without a name, `OSError` for I/O.
+/// folder (or a file, or with `force` a folder soilcut did not write, or
+/// one another process writes, or one that appeared while writing),
+/// `ValueError` for one without a name or with too long a name, `OSError`
+/// for I/O.
 pub fn output_error(e: OutputError) -> PyErr {
     let path = e.path().display();
     match e {
@@ -142,7 +144,14 @@ pub fn output_error(e: OutputError) -> PyErr {
             "{path}: the folder exists and soilcut did not write it (it holds no {} file); force=True replaces only soilcut's own output folders: choose another folder",
             soilcut_io::OUTPUT_MARKER
         )),
-        OutputError::Unnamed(_) => PyValueError::new_err(format!("{path}: {e}")),
-        OutputError::Io { .. } => PyOSError::new_err(format!("{path}: {e}")),
+        OutputError::Unnamed(_) | OutputError::NameTooLong(..) => {
+            PyValueError::new_err(format!("{path}: {e}"))
+        }
+        OutputError::Busy(..) | OutputError::Appeared { .. } => {
+            PyFileExistsError::new_err(format!("{path}: {e}"))
+        }
+        OutputError::Unusable { .. } | OutputError::Io { .. } => {
+            PyOSError::new_err(format!("{path}: {e}"))
+        }
     }
 }

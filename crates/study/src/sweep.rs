@@ -9,13 +9,16 @@ use crate::error::StudyError;
 use crate::field;
 use crate::figures::{key_label, Figures, LABELS, NAMES};
 use crate::run::{override_of, BaseCase};
-use crate::sample::{points, Sample, Vary};
+use crate::sample::{points, Sample, Values, Vary};
 use crate::Progress;
 use rayon::prelude::*;
 use soilcut_io::Columns;
 use soilcut_io::CsvText;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+mod check;
+pub use check::check_keys;
 
 /// A sweep to run.
 #[derive(Clone, Debug)]
@@ -63,10 +66,22 @@ pub fn run_folder(run: usize, total: usize) -> String {
 
 impl Sweep {
     /// The runs this sweep will make (varied values per run). A varied
-    /// key that no run could set (unknown to the case file) is an error
-    /// before any run, naming it and the nearest keys: every run would
+    /// key that no run could set (unknown to the case file, naming the
+    /// nearest keys) or a listed value of a type the key does not take
+    /// (`abc` for a number) is an error before any run: every run would
     /// fail alike.
     pub fn points(&self) -> Result<Vec<Vec<toml::Value>>, StudyError> {
+        for vary in &self.varies {
+            if let Values::List(values) = &vary.values {
+                for value in values {
+                    check_keys(
+                        &self.base,
+                        std::slice::from_ref(&vary.key),
+                        std::slice::from_ref(value),
+                    )?;
+                }
+            }
+        }
         let points = points(&self.varies, self.sample)?;
         if let Some(first) = points.first() {
             let keys: Vec<String> = self.varies.iter().map(|v| v.key.clone()).collect();
@@ -79,6 +94,18 @@ impl Sweep {
     /// row with its error; only a kept run folder that cannot be written
     /// fails the sweep (after every run has finished).
     pub fn run(&self, progress: Progress) -> Result<SweepResult, StudyError> {
+        self.run_each(progress, &|_| {})
+    }
+
+    /// [`Sweep::run`], handing each row to `each` as its run finishes
+    /// (from the worker threads, in the order they finish): a front end
+    /// writes the finished runs as they come, so that a sweep stopped
+    /// partway keeps them.
+    pub fn run_each(
+        &self,
+        progress: Progress,
+        each: &(dyn Fn(&SweepRow) + Sync),
+    ) -> Result<SweepResult, StudyError> {
         let points = self.points()?;
         let keys: Vec<String> = self.varies.iter().map(|v| v.key.clone()).collect();
         let total = points.len();
@@ -86,6 +113,9 @@ impl Sweep {
         progress(0, total);
         let one = |(index, values): (usize, Vec<toml::Value>)| {
             let row = self.run_point(&keys, index + 1, total, values);
+            if let Ok(row) = &row {
+                each(row);
+            }
             progress(finished.fetch_add(1, Ordering::Relaxed) + 1, total);
             row
         };
@@ -123,22 +153,6 @@ impl Sweep {
             wall_time_s,
         })
     }
-}
-
-/// Refuses keys that no run of `base` could set, with `values` (a run's)
-/// as the probe: a sweep given its runs directly (Python's `samples`)
-/// checks them as `Sweep::points` does.
-pub fn check_keys(
-    base: &BaseCase,
-    keys: &[String],
-    values: &[toml::Value],
-) -> Result<(), StudyError> {
-    for (key, value) in keys.iter().zip(values) {
-        if let Some(e) = base.unknown_key(key, value) {
-            return Err(StudyError::Key(e));
-        }
-    }
-    Ok(())
 }
 
 impl SweepResult {

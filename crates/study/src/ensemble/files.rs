@@ -186,12 +186,22 @@ impl EnsembleResult {
     /// and, with `pictures`, the members' pictures and
     /// `plots/envelope.{png,svg}`; all of it appears together or not at all.
     pub fn write(&self, dir: &Path, force: bool, pictures: bool) -> Result<(), OutputError> {
+        self.write_into(soilcut_io::OutputDir::claim(dir, force)?, pictures)
+            .map(drop)
+    }
+
+    /// [`EnsembleResult::write`] into a folder claimed before the members ran.
+    pub fn write_into(
+        &self,
+        dir: soilcut_io::OutputDir,
+        pictures: bool,
+    ) -> Result<soilcut_io::Published, OutputError> {
         let files = [
             ("ensemble.csv", self.ensemble_csv()),
             ("summary.json", self.summary_json()),
             ("timing.csv", self.timing_csv()),
         ];
-        soilcut_io::write_output_dir_then(dir, &files, force, |staged| {
+        dir.write_then(&files, |staged| {
             for m in &self.members {
                 write_member(staged, m, pictures)?;
             }
