@@ -203,6 +203,6 @@ fn converging_ensembles_are_judged_against_the_finest_level() {
     // converge.csv: one row per level and window, plus the whole run.
     let csv = r.csv();
     assert_eq!(csv.lines().count(), 1 + 2 * (2 + 1));
-    assert!(csv.lines().nth(3).unwrap().starts_with("0,1,1,all,3,"));
-    assert!(r.markdown().contains("| 1 | 0.5 | 0.5 |"));
+    assert!(csv.lines().nth(3).unwrap().starts_with("0,1,0.4,all,3,"));
+    assert!(r.markdown().contains("| 1 | 0.5 | 0.2 |"));
 }
