@@ -21,11 +21,11 @@ done
 cp "$out-ensemble/plots/envelope.png" docs/img/envelope.png
 # Every candidate's force at u/d = 4, and the maps through the run, at d/500
 # (set explicitly: the default increment is d/1250 since issue 28).
-"$soilcut" landscape cases/paper/table1-hs.toml --at 4 --set run.increment=0.04 --set 'run.ground="nodes"' --force \
+"$soilcut" landscape cases/paper/table1-hs.toml --at 4 --set run.increment=0.04 --set run.ground=nodes --force \
   --out "$out-landscape" >/dev/null
 cp "$out-landscape/landscape.png" docs/img/landscape.png
 for name in hs s; do
-  "$soilcut" landscape "cases/paper/table1-$name.toml" --every 0.05 --set run.increment=0.04 --set 'run.ground="nodes"' --force \
+  "$soilcut" landscape "cases/paper/table1-$name.toml" --every 0.05 --set run.increment=0.04 --set run.ground=nodes --force \
     --out "$out-map-$name" >/dev/null
   cp "$out-map-$name/landscape_map.png" "docs/img/landscape_map_$name.png"
 done

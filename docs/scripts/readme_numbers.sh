@@ -28,7 +28,7 @@ for n in 200 500 1000; do
     for at in 2 4 4.5; do
         printf '| d/%s ' "$n"
         "$soilcut" landscape cases/paper/table1-hs.toml --at "$at" \
-            --set run.increment="$increment" --set 'run.ground="nodes"' --force --out "$out/landscape" | row
+            --set run.increment="$increment" --set run.ground=nodes --force --out "$out/landscape" | row
     done
 done
 
@@ -36,7 +36,7 @@ echo
 echo "landscape maps, --every 0.05 at d/500:"
 for name in table1-hs table1-s; do
     printf '%s: ' "$name"
-    "$soilcut" landscape "cases/paper/$name.toml" --every 0.05 --set run.increment=0.04 --set 'run.ground="nodes"' \
+    "$soilcut" landscape "cases/paper/$name.toml" --every 0.05 --set run.increment=0.04 --set run.ground=nodes \
         --force --out "$out/map-$name"
 done
 

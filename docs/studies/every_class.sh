@@ -32,7 +32,7 @@ row() { # name, class, case file, extra --set arguments
   local d v
   d=$(grep -m1 '^depth' "$file" | awk '{print $3}')
   v=$(python3 -c "print(repr($d / 2000))")
-  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set 'run.ground="nodes"' \
+  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set run.ground=nodes \
     --set run.increment="$v"
   ensemble "$runs/$name/defaults" "$file" "$@"
   local ground

@@ -169,15 +169,11 @@ impl Case {
         let Some(length) = self.bin.length else {
             return Ok(());
         };
-        let least = self.run.travel + 2.0 * self.ground_spacing();
+        let least = self.run.travel + 2.0 * self.run.increment;
         if finite("bin.length", length)? < least {
-            let spacing = match self.run.ground {
-                Ground::Vertices(_) => "run.vertex_spacing",
-                Ground::Nodes => "run.increment",
-            };
             return Err(CaseError::new(
                 "bin.length",
-                format!("must be >= run.travel + 2 {spacing} = {least} (got {length})"),
+                format!("must be >= run.travel + 2 run.increment = {least} (got {length})"),
             ));
         }
         in_magnitude("bin.length", length, false)?;
