@@ -27,7 +27,7 @@ def case_seeds():
         ("travel = 20.0", "travel = -20.0"),
         ("travel = 20.0", 'travel = "far"'),
         ("increment = 0.2", "increment = 1e-300"),
-        ("increment = 0.2", "increment = 0.2\nground = \"nodes\""),
+        ("increment = 0.2", 'increment = 0.2\nground = "nodes"'),
         ("increment = 0.2", "increment = 0.2\nvertex_spacing = 0.0"),
         # More vertices than the fuzzer creates a simulation for (1e6) and
         # fewer than a case may hold (5e7): parsed and validated only.

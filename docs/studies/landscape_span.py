@@ -41,7 +41,7 @@ THRESHOLDS = [1.01, 1.05]
 def landscape(soilcut, case, v0, folder):
     if not (folder / "landscape_map.csv").exists():
         cmd = [soilcut, "landscape", str(case), "--every", str(EVERY)]
-        cmd += ["--set", f"run.increment={v0!r}", "--set", run.ground=nodes]
+        cmd += ["--set", f"run.increment={v0!r}", "--set", "run.ground=nodes"]
         cmd += ["--force", "--out", str(folder)]
         subprocess.run(cmd, check=True, capture_output=True)
     spans = defaultdict(lambda: {t: [] for t in THRESHOLDS})
@@ -59,7 +59,7 @@ def landscape(soilcut, case, v0, folder):
 def run(soilcut, case, v0, folder):
     if not (folder / "summary.json").exists():
         cmd = [soilcut, "run", str(case), "--set", f"run.increment={v0!r}"]
-        cmd += ["--set", run.ground=nodes, "--no-plots", "--quiet", "--force"]
+        cmd += ["--set", "run.ground=nodes", "--no-plots", "--quiet", "--force"]
         cmd += ["--out", str(folder)]
         subprocess.run(cmd, check=True)
     return json.loads((folder / "summary.json").read_text())
