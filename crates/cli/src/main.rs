@@ -24,7 +24,7 @@ use soilcut_io::{
     read_case, record_kept, write_run_into, InputError, LoadedCase, OutputDir, OutputError,
     Override, PictureError, RecordedRun,
 };
-use soilcut_model::{Case, Ground, Simulation};
+use soilcut_model::{Case, Simulation};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -412,40 +412,8 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
         case.model.name(),
         case.steps()
     );
-    println!("  {}", resolution(&case));
+    println!("  {}", case.run.describe(case.blade.depth));
     Ok(())
-}
-
-/// The ground, increment and time scheme a case runs at, each as a length
-/// and as a fraction of the blade depth (its defaults resolved).
-fn resolution(case: &Case) -> String {
-    let run = &case.run;
-    let of_depth = |length: f64| {
-        let short = format!("{length:.6}");
-        let short = short.trim_end_matches('0').trim_end_matches('.');
-        let n = case.blade.depth / length;
-        if (n - n.round()).abs() <= 1e-9 * n {
-            format!("{short} (d/{n:.0})")
-        } else {
-            format!("{short} (d/{n:.2})")
-        }
-    };
-    let increment = of_depth(run.increment);
-    match &run.ground {
-        Ground::Vertices(v) => format!(
-            "vertex ground, vertices every {}; increment {increment}; time scheme {}; {} per band",
-            of_depth(v.spacing),
-            v.time_scheme.name(),
-            match v.samples_per_band {
-                0.0 => "every candidate".to_string(),
-                1.0 => "1 sample".to_string(),
-                k => format!("{k} samples"),
-            }
-        ),
-        Ground::Nodes => format!(
-            "node grid (the yardstick), nodes every increment {increment}; time scheme explicit; every candidate"
-        ),
-    }
 }
 
 /// A case that runs but whose grid is known to cost accuracy.

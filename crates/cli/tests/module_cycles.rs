@@ -43,13 +43,17 @@ fn module_of(src: &Path, file: &Path) -> Module {
     parts
 }
 
-/// The `use` declarations of `text` (those that begin a line, after a
-/// visibility), whitespace removed.
-fn uses(text: &str) -> Vec<String> {
+/// The paths `text` imports: its `use` declarations (those that begin a
+/// line, after a visibility), whitespace removed, and every `crate::a::b`
+/// written inline in code, each with whether it stands in the file's
+/// inline `mod tests`, whose `super` is the file itself.
+fn uses(text: &str) -> Vec<(bool, String)> {
     let mut out = Vec::new();
     let mut open: Option<String> = None;
+    let mut in_tests = false;
     for line in text.lines() {
         let line = line.trim();
+        in_tests |= matches!(line, "mod tests {" | "pub(crate) mod tests {");
         let current = match open.take() {
             Some(started) => started + line,
             None => {
@@ -58,16 +62,35 @@ fn uses(text: &str) -> Vec<String> {
                     .find_map(|v| line.strip_prefix(v));
                 match declaration {
                     Some(rest) => rest.to_string(),
-                    None => continue,
+                    None => {
+                        out.extend(inline_paths(line).map(|p| (in_tests, p)));
+                        continue;
+                    }
                 }
             }
         };
         match current.find(';') {
-            Some(end) => out.push(current[..end].split_whitespace().collect()),
+            Some(end) => out.push((in_tests, current[..end].split_whitespace().collect())),
             None => open = Some(current),
         }
     }
     out
+}
+
+/// The `crate::a::b` paths written in a line of code (not a comment).
+fn inline_paths(line: &str) -> impl Iterator<Item = String> + '_ {
+    let code = if line.starts_with("//") { "" } else { line };
+    code.match_indices("crate::").filter_map(move |(at, _)| {
+        let before = code[..at].chars().next_back();
+        if before.is_some_and(|c| c.is_alphanumeric() || c == '_') {
+            return None;
+        }
+        let path: String = code[at..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        Some(path.trim_end_matches(':').to_string())
+    })
 }
 
 /// The full paths of a use tree: `a::{b, c::{d, e}}` is `a::b`, `a::c::d`,
@@ -140,8 +163,12 @@ fn graph(src: &Path) -> BTreeMap<Module, BTreeSet<Module>> {
     for (module, file) in &modules {
         let text = fs::read_to_string(file).expect("a source file");
         let mut to = BTreeSet::new();
-        for declaration in uses(&text) {
-            for mut target in targets(module, &declaration) {
+        for (in_tests, declaration) in uses(&text) {
+            let mut from = module.clone();
+            if in_tests {
+                from.push("tests".to_string());
+            }
+            for mut target in targets(&from, &declaration) {
                 while !target.is_empty() && !modules.contains_key(&target) {
                     target.pop();
                 }
@@ -214,7 +241,11 @@ fn a_cycle_is_seen() {
     fs::write(src.join("lib.rs"), "mod a;\nmod b;\n").unwrap();
     fs::write(src.join("a.rs"), "mod c;\nuse crate::{b::{B, f}, a::c};\n").unwrap();
     fs::write(src.join("a/c.rs"), "use super::super::b::B;\n").unwrap();
-    fs::write(src.join("b.rs"), "use crate::a::c::C;\n").unwrap();
+    fs::write(
+        src.join("b.rs"),
+        "fn f() { crate::a::c::g() }\n#[cfg(test)]\nmod tests {\n    use super::*;\n}\n",
+    )
+    .unwrap();
     let edges = graph(&src);
     let a = vec!["a".to_string()];
     let b = vec!["b".to_string()];

@@ -308,7 +308,7 @@ fn the_checker_catches_missing_and_outside_names() {
     assert_eq!(check("crates/io/tests/golden.rs", &from_crate).len(), 1);
     // What exists passes; outputs and wildcards are not flagged.
     let fine = [
-        "`docs/model.md` §2, crates/model/src/search.rs, cases/tools/, ",
+        "`docs/model.md` §2, crates/model/src/node_grid/node_search.rs, cases/tools/, ",
         "docs/img/model_*.png, cases/paper/{}.toml, out/<name>/history.csv, ",
         "out/original/plots/force.png, [the model](model.md#2), README.md, ",
         "[up](",

@@ -633,8 +633,7 @@ fn read_like_c(text: &CStr, sets: &[CString]) -> Result<LoadedCase, String> {
 
 /// Within the stepping budget of the other targets.
 fn steppable(case: &Case) -> bool {
-    case.initial_nodes() <= RUN_NODES
-        && case.deepest() / case.ground_spacing() <= RUN_NODES_PER_DEPTH
+    case.initial_nodes() <= RUN_NODES && case.deepest() / case.run.spacing() <= RUN_NODES_PER_DEPTH
 }
 
 /// The calling thread's (sim NULL) or the handle's last message.

@@ -190,7 +190,7 @@ pub fn check_accepted(loaded: &LoadedCase) -> Outcome {
         initial.is_finite() && initial > 0.0,
         "initial mass {initial}"
     );
-    if nodes > RUN_NODES || case.deepest() / case.ground_spacing() > RUN_NODES_PER_DEPTH {
+    if nodes > RUN_NODES || case.deepest() / case.run.spacing() > RUN_NODES_PER_DEPTH {
         return Outcome::Created;
     }
     // The paper's unit weight node by node drifts the mass by design

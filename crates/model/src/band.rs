@@ -8,7 +8,7 @@
 //! (a slip line). Here: how the band moves the block (M18, M35, M36), the
 //! raked blade's stretch of its thickness (M16), and the dilation under
 //! the block (M26). The node grid's band of nodes is `grid::Band`, the
-//! vertex ground's motion `ground::motion`.
+//! vertex ground's motion `vertices::motion`.
 
 use crate::rake::Rake;
 
@@ -27,7 +27,7 @@ pub(crate) fn stretch(grid_slope: f64, tan_beta: f64) -> f64 {
 /// The motion of the band's block: rise v0 tan(β + ψ) on the grid, slip
 /// Δut = λ cos ψ with λ = v0 sin α / sin(α + β + ψ) (`Rake`); `None` where
 /// β + ψ ≥ 90°.
-/// The node grid's update and the vertex ground's (`ground::motion`) both
+/// The node grid's update and the vertex ground's (`vertices::motion`) both
 /// move the soil by it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct BandMotion {

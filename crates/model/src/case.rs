@@ -190,6 +190,54 @@ impl Run {
         }
     }
 
+    /// The spacing of the ground's points: `run.vertex_spacing` on the
+    /// vertex ground, the increment on the node grid (length).
+    pub fn spacing(&self) -> f64 {
+        match &self.ground {
+            Ground::Vertices(v) => v.spacing,
+            Ground::Nodes => self.increment,
+        }
+    }
+
+    /// The key that sets `spacing`, and what its points are called.
+    pub fn spacing_key(&self) -> (&'static str, &'static str) {
+        match &self.ground {
+            Ground::Vertices(_) => ("run.vertex_spacing", "vertices"),
+            Ground::Nodes => ("run.increment", "nodes"),
+        }
+    }
+
+    /// The ground, increment and time scheme, in words, each as a length
+    /// and as a fraction of the blade depth `depth` (`soilcut check`).
+    pub fn describe(&self, depth: f64) -> String {
+        let of_depth = |length: f64| {
+            let short = format!("{length:.6}");
+            let short = short.trim_end_matches('0').trim_end_matches('.');
+            let n = depth / length;
+            if (n - n.round()).abs() <= 1e-9 * n {
+                format!("{short} (d/{n:.0})")
+            } else {
+                format!("{short} (d/{n:.2})")
+            }
+        };
+        let increment = of_depth(self.increment);
+        match &self.ground {
+            Ground::Vertices(v) => format!(
+                "vertex ground, vertices every {}; increment {increment}; time scheme {}; {} per band",
+                of_depth(v.spacing),
+                v.time_scheme.name(),
+                match v.samples_per_band {
+                    0.0 => "every candidate".to_string(),
+                    1.0 => "1 sample".to_string(),
+                    k => format!("{k} samples"),
+                }
+            ),
+            Ground::Nodes => format!(
+                "node grid (the yardstick), nodes every increment {increment}; time scheme explicit; every candidate"
+            ),
+        }
+    }
+
     /// The vertex ground's keys to change, `None` on the node grid.
     pub fn vertices_mut(&mut self) -> Option<&mut VertexGround> {
         match &mut self.ground {
@@ -380,17 +428,8 @@ impl Case {
         Some((length / spacing * (1.0 + 1e-12)).floor() as usize)
     }
 
-    /// The spacing of the ground's points: `run.vertex_spacing` on the
-    /// vertex ground, the increment on the node grid.
-    pub fn ground_spacing(&self) -> f64 {
-        match &self.run.ground {
-            Ground::Vertices(v) => v.spacing,
-            Ground::Nodes => self.run.increment,
-        }
-    }
-
     /// Points of the ground at the start (nodes, or vertices on the vertex
-    /// ground, `ground_spacing` apart): the travel plus
+    /// ground, `Run::spacing` apart): the travel plus
     /// `INITIAL_REACH_DEPTHS`, N0 = ceil((travel + 8 d_max) / Δx) + 2 (M30).
     /// With an end wall, no more than the points up to it.
     pub fn initial_nodes(&self) -> f64 {
@@ -400,7 +439,7 @@ impl Case {
     /// `initial_nodes` with the tip no deeper than `deepest` (an upper
     /// bound of the case's own, which the count grows with).
     pub(crate) fn nodes_to_depth(&self, deepest: f64) -> f64 {
-        let spacing = self.ground_spacing();
+        let spacing = self.run.spacing();
         let reach = self.run.travel + INITIAL_REACH_DEPTHS * deepest;
         let nodes = (reach / spacing).ceil() + 2.0;
         self.wall_point(spacing)

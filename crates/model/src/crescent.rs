@@ -21,7 +21,7 @@
 //! ground is McKyes' d (cot α + cot β) (F7). On flat ground this is the
 //! crescent part of McKyes & Ali's factors, Nγ (2/3) x, Nc x and Nq x with
 //! x = (r / w) sin ρ (docs/model.md §16.1); adhesion acts on the face only.
-//! W_ridge is the weight of the side heaps (`spill`) lying on the fans:
+//! W_ridge is the weight of the side heaps (`side_heaps`) lying on the fans:
 //!
 //! ```text
 //! W_ridge = 2 ∫₀^ρ cos θ ∫₀^r γs g(x_O + s cos θ, s sin θ) s ds dθ      (M43)
@@ -35,7 +35,7 @@
 
 use crate::case::Case;
 use crate::mechanism::{ForceFactor, Loads};
-use crate::spill::SideHeaps;
+use crate::side_heaps::SideHeaps;
 
 /// The narrowest blade, as a fraction of the tip depth, for which the
 /// crescents describe the failure: below a critical depth of about 6 w a

@@ -10,6 +10,11 @@
 //! §12 describes, and the reason an exact search must evaluate them
 //! all (docs/performance.md).
 
+/// Relative force difference below which two candidates count as equal:
+/// among them the node grid's search takes the one nearest the blade
+/// (M11), so round-off cannot flip its choice.
+pub const TIE_TOLERANCE: f64 = 1e-10;
+
 /// One candidate mechanism: the band whose lower boundary runs from the
 /// blade tip to the surface node at (`x_emergence`, `y_emergence`).
 #[derive(Clone, Copy, Debug, PartialEq)]

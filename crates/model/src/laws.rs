@@ -9,7 +9,6 @@ use crate::face_friction::{Face, FaceFriction};
 use crate::material::Material;
 use crate::mechanism::{FactorTable, ForceFactor};
 use crate::stopping::least_force_factor;
-use crate::surface::Surface;
 use crate::trig;
 
 /// The band angles a candidate takes from its footprint (radians).
@@ -117,15 +116,6 @@ impl Laws {
                 dilation: self.material.dilation.at(means.shear),
                 ..means
             },
-        }
-    }
-
-    /// Recomputes φ(ut) and ψ(ut) of the nodes in `range`.
-    pub(crate) fn refresh_angles(&self, surface: &mut Surface, range: std::ops::Range<usize>) {
-        for i in range {
-            let ut = surface.accumulated_shear[i];
-            surface.friction[i] = self.material.friction.at(ut);
-            surface.dilation[i] = self.material.dilation.at(ut);
         }
     }
 }

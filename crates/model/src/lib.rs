@@ -18,32 +18,28 @@ mod common;
 
 pub mod accuracy;
 pub mod analytic;
-pub mod avalanche;
 pub mod band;
 pub mod case;
 pub mod crescent;
 mod discretisation;
 pub mod face_friction;
 mod force_bounds;
-pub mod grid;
-pub mod ground;
-pub mod kinematics;
 pub mod landscape;
 mod laws;
 pub mod mass;
 pub mod material;
 pub mod mechanism;
+pub mod node_grid;
 pub mod peaks;
 pub mod rake;
 mod repose;
-pub mod search;
+pub mod side_heaps;
 pub mod simulation;
-pub mod spill;
 pub mod step;
 mod stopping;
 pub mod summary;
-pub mod surface;
 pub mod trig;
+pub mod vertices;
 
 pub use case::{
     AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade, Case, CaseError, Choices,

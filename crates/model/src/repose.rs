@@ -5,7 +5,7 @@
 //! restored by the pool-adjacent-violators algorithm, every pooled run
 //! replaced by a line at exactly the angle of repose holding the same
 //! weighted area. Both grounds pool (the node grid's `avalanche`, the
-//! vertex ground's `ground::avalanche`); what a pool is, and when a slope
+//! vertex ground's `vertices::avalanche`); what a pool is, and when a slope
 //! is only round-off, is here.
 
 /// Violations smaller than this fraction of s are round-off, not slopes.

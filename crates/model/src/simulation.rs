@@ -2,21 +2,21 @@
 //!
 //! Each `step()` finds the minimum-effort mechanism on the current ground,
 //! records its force, moves the soil by it and relaxes the slopes, on the
-//! vertex ground (`ground::cutting`) or the node grid (`node_grid`), as
+//! vertex ground (`vertices::cutting`) or the node grid (`node_grid`), as
 //! the case's `run.ground` says: which one is decided once, when the simulation is set up (`Discretised`). The
 //! caller owns the loop, so the model can sit inside a robot simulator or
 //! a notebook; `run_to_end` is the whole case.
 
 use crate::case::{Case, CaseError, Ground};
 use crate::discretisation::{Context, Discretisation};
-use crate::ground::cutting::Cutting;
 use crate::landscape::Candidate;
 use crate::laws::Laws;
-use crate::surface::Surface;
-use node_grid::NodeGrid;
+use crate::node_grid::NodeGrid;
+use crate::vertices::cutting::Cutting;
 
 mod advance;
-mod node_grid;
+#[cfg(test)]
+mod node_grid_area;
 pub mod snapshot;
 
 pub use crate::step::{ProfilePoint, StepError, StepRecord};
@@ -125,17 +125,6 @@ impl Simulation {
     /// Blade displacement u (the face is at x = u).
     pub fn blade_position(&self) -> f64 {
         self.ground.get().blade_position()
-    }
-
-    /// The nodes as the model holds them, on the node grid (`None` on the
-    /// vertex ground, whose vertices `profile` gives): on the grid, whose
-    /// x is the physical x only for a vertical blade (`Rake`; `profile`
-    /// converts).
-    pub fn surface(&self) -> Option<&Surface> {
-        match &self.ground {
-            Discretised::Nodes(nodes) => Some(&nodes.surface),
-            Discretised::Vertices(_) => None,
-        }
     }
 
     /// Current weight of soil ahead of the blade (ground that existed at

@@ -146,12 +146,12 @@ pub fn least_force_excess(case: &Case, every: usize) -> (usize, usize, f64) {
         let Some(least) = least else { continue };
         let e = record.force / least - 1.0;
         assert!(
-            e >= -soilcut_model::search::TIE_TOLERANCE,
+            e >= -soilcut_model::landscape::TIE_TOLERANCE,
             "step {}: {e:e} below the least",
             record.step
         );
         checked += 1;
-        above += usize::from(e > soilcut_model::search::TIE_TOLERANCE);
+        above += usize::from(e > soilcut_model::landscape::TIE_TOLERANCE);
         largest = largest.max(e);
     }
     (checked, above, largest)

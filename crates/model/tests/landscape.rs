@@ -4,7 +4,7 @@
 use crate::common;
 
 use soilcut_model::landscape::near_minimum;
-use soilcut_model::search::TIE_TOLERANCE;
+use soilcut_model::landscape::TIE_TOLERANCE;
 use soilcut_model::Simulation;
 
 /// On flat ground the block above the slip line at β is the triangle of

@@ -12,7 +12,7 @@ use crate::common;
 use proptest::collection::vec;
 use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner};
 use soilcut_model::accuracy::{agreement, Spread};
-use soilcut_model::search::TIE_TOLERANCE;
+use soilcut_model::landscape::TIE_TOLERANCE;
 use soilcut_model::{
     AngleLaw, Case, Class, FaceFrictionRule, Ground, Model, Run, RunKeys, Simulation, TimeScheme,
 };

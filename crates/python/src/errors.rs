@@ -84,16 +84,16 @@ fn step_error_after(py: Python<'_>, e: StepError, records: Vec<StepRecord>) -> P
 }
 
 /// `soilcut.StepError` of a run that stopped partway, with `steps` and
-/// `_records`, the files of the increments made (`soilcut.run` makes them
-/// its `result`, marked as stopped).
+/// `_records`, the files of the increments made (a `RunRecords`, which
+/// `soilcut.run` makes its `result`, marked as stopped).
 pub fn stopped_error(
     py: Python<'_>,
     e: StepError,
     records: Vec<StepRecord>,
-    run: crate::run::RunRecords,
+    run: Py<PyAny>,
 ) -> PyErr {
     let err = step_error_after(py, e, records);
-    let kept = Py::new(py, run).and_then(|run| err.value(py).setattr("_records", run));
+    let kept = err.value(py).setattr("_records", run);
     match kept {
         Ok(()) => err,
         Err(e) => e,

@@ -112,7 +112,12 @@ pub fn run(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<RunRecords> {
     match run.stopped {
         None => Ok(records),
         Some(e) if run.history.is_empty() => Err(step_error(py, e)),
-        Some(e) => Err(stopped_error(py, e, run.history, records)),
+        Some(e) => Err(stopped_error(
+            py,
+            e,
+            run.history,
+            Py::new(py, records)?.into_any(),
+        )),
     }
 }
 

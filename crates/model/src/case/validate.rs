@@ -445,10 +445,7 @@ impl Case {
         }
         let nodes = self.initial_nodes();
         if nodes > MAX_NODES {
-            let (key, points) = match self.run.ground {
-                Ground::Vertices(_) => ("run.vertex_spacing", "vertices"),
-                Ground::Nodes => ("run.increment", "nodes"),
-            };
+            let (key, points) = self.run.spacing_key();
             return Err(CaseError::new(
                 key,
                 format!(

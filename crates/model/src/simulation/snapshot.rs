@@ -21,21 +21,21 @@
 //! versions, so a state from one is no state of the other.
 
 mod check;
-mod error;
+mod snapshot_error;
 
-pub use error::SnapshotError;
+pub use snapshot_error::SnapshotError;
 
-use super::node_grid::{fresh_angles, NodeGrid};
 use super::{Discretised, Simulation};
-use crate::case::{Case, Ground as GroundChoice};
+use crate::case::{Case, Ground};
 use crate::discretisation::Discretisation;
-use crate::grid::FaceNode;
-use crate::ground::cutting::Cutting;
-use crate::ground::Ground;
 use crate::laws::Laws;
-use crate::search::Search;
-use crate::spill::SideHeaps;
-use crate::surface::Surface;
+use crate::node_grid::face_node::FaceNode;
+use crate::node_grid::node_search::Search;
+use crate::node_grid::surface::Surface;
+use crate::node_grid::{fresh_angles, NodeGrid};
+use crate::side_heaps::SideHeaps;
+use crate::vertices::cutting::Cutting;
+use crate::vertices::Vertices;
 use check::{check_side_heaps, check_state, finite, finite_all, StateCheck};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -75,7 +75,7 @@ struct Body<'a> {
 #[derive(Serialize, Deserialize)]
 enum GroundBody<'a> {
     /// The vertex ground and its evaluations.
-    Vertices(Cow<'a, Ground>, u64),
+    Vertices(Cow<'a, Vertices>, u64),
     /// The node grid.
     Nodes(NodeBody<'a>),
 }
@@ -212,7 +212,7 @@ impl GroundBody<'_> {
         (done, side): (usize, SideHeaps),
     ) -> Result<Discretised, SnapshotError> {
         match (self, case.run.ground) {
-            (GroundBody::Vertices(ground, evaluations), GroundChoice::Vertices(keys)) => {
+            (GroundBody::Vertices(ground, evaluations), Ground::Vertices(keys)) => {
                 let ground = ground.into_owned();
                 if let Some(defect) = ground.defect() {
                     return Err(SnapshotError::invalid("vertex ground", defect));
@@ -220,7 +220,7 @@ impl GroundBody<'_> {
                 let cutting = Cutting::resumed(case, keys, (ground, side), evaluations);
                 Ok(Discretised::Vertices(Box::new(cutting)))
             }
-            (GroundBody::Nodes(nodes), GroundChoice::Nodes) => Ok(Discretised::Nodes(Box::new(
+            (GroundBody::Nodes(nodes), Ground::Nodes) => Ok(Discretised::Nodes(Box::new(
                 nodes.restore(case, laws, (done, side))?,
             ))),
             (body, choice) => Err(SnapshotError::invalid(

@@ -4,7 +4,7 @@
 
 use super::SnapshotError;
 use crate::case::Case;
-use crate::spill::SideHeaps;
+use crate::side_heaps::SideHeaps;
 
 pub(super) fn finite(what: &'static str, v: f64) -> Result<f64, SnapshotError> {
     if v.is_finite() {

@@ -16,7 +16,7 @@ use super::line::{Line, Lines, Slope};
 use super::select::Best;
 use crate::force_bounds::may_win;
 use crate::laws::BandAngles;
-use crate::surface::Surface;
+use crate::node_grid::surface::Surface;
 
 /// Nodes scanned per block.
 const BLOCK: usize = 128;

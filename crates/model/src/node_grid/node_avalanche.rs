@@ -15,8 +15,8 @@
 //! unit weight and accumulated shear become the mass-weighted mean of their
 //! column and the deposit. Mass is therefore conserved exactly as well.
 
+use crate::node_grid::surface::Surface;
 use crate::repose::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
-use crate::surface::Surface;
 use std::ops::Range;
 
 /// Reusable scratch for avalanching (no allocation per step).

@@ -6,10 +6,8 @@
 
 use super::input::SearchInput;
 use super::line::{Line, Lines};
+use crate::landscape::TIE_TOLERANCE;
 use crate::laws::BandAngles;
-
-/// Relative force difference below which two candidates are equal.
-pub const TIE_TOLERANCE: f64 = 1e-10;
 
 /// The chosen mechanism of one increment.
 #[derive(Clone, Copy, Debug, PartialEq)]

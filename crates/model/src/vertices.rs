@@ -19,8 +19,9 @@
 //! exact for a polyline (the trapezoid rule integrates a linear surface
 //! exactly).
 //!
-//! The simulation's ground where a case sets `run.vertex_spacing`
-//! (`cutting`); else the node grid of `surface`.
+//! The default ground, `run.ground = "vertices"` (`cutting`, one
+//! increment); the node grid (`node_grid`) is the yardstick it is judged
+//! against.
 
 use crate::mass::compensated_sum;
 use serde::{Deserialize, Serialize};
@@ -40,7 +41,7 @@ pub use merge::Quiet;
 /// The free surface as vertices that move with the soil, with the state
 /// of the soil held per piece between them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Ground {
+pub struct Vertices {
     /// x_k: abscissae of the vertices, strictly increasing; x_0 is the
     /// blade face (length).
     pub x: Vec<f64>,
@@ -61,7 +62,7 @@ pub struct Ground {
     pub appended_mass: f64,
 }
 
-impl Ground {
+impl Vertices {
     /// Flat ground y = 0 of fresh soil (ut = 0, γ `unit_weight`) from
     /// x = 0 to `length`, with vertices every `spacing` (the last piece
     /// ends at `length` exactly), above the floor at −`depth`.
@@ -69,7 +70,7 @@ impl Ground {
         let pieces = (length / spacing).ceil().max(1.0) as usize;
         let mut x: Vec<f64> = (0..pieces).map(|k| k as f64 * spacing).collect();
         x.push(length);
-        Ground {
+        Vertices {
             y: vec![0.0; x.len()],
             x,
             accumulated_shear: vec![0.0; pieces],
@@ -260,7 +261,7 @@ mod tests {
 
     #[test]
     fn splitting_keeps_the_surface_and_the_mass() {
-        let mut g = Ground::flat(10.0, 0.3, 2.0, 1.5);
+        let mut g = Vertices::flat(10.0, 0.3, 2.0, 1.5);
         g.y[5] = 0.4;
         g.unit_weight[4] = 1.2;
         g.accumulated_shear[4] = 0.7;
@@ -277,21 +278,21 @@ mod tests {
 
     #[test]
     fn a_ground_no_run_makes_is_a_defect() {
-        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        let mut g = Vertices::flat(10.0, 0.5, 2.0, 1.5);
         assert_eq!(g.defect(), None);
         g.x.swap(3, 4);
         assert!(g.defect().unwrap().contains("increase"));
-        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        let mut g = Vertices::flat(10.0, 0.5, 2.0, 1.5);
         g.unit_weight.pop();
         assert!(g.defect().unwrap().contains("lengths"));
-        let mut g = Ground::flat(10.0, 0.5, 2.0, 1.5);
+        let mut g = Vertices::flat(10.0, 0.5, 2.0, 1.5);
         g.y[2] = f64::NAN;
         assert!(g.defect().unwrap().contains("finite"));
     }
 
     #[test]
     fn flat_ground_holds_its_columns() {
-        let g = Ground::flat(10.0, 0.3, 2.0, 1.5);
+        let g = Vertices::flat(10.0, 0.3, 2.0, 1.5);
         assert_eq!(*g.x.last().unwrap(), 10.0);
         assert!((g.mass() - 1.5 * 2.0 * 10.0).abs() < 1e-12);
         assert_eq!(g.piece_at(10.0), g.pieces() - 1);

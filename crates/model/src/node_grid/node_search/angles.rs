@@ -7,9 +7,9 @@
 //!
 //! from prefix sums along the scan, so each candidate costs O(1).
 
-use crate::grid::Band;
 use crate::laws::BandAngles;
-use crate::surface::Surface;
+use crate::node_grid::node_band::Band;
+use crate::node_grid::surface::Surface;
 
 /// Prefix sums of φ, ψ and ut from the blade node, one entry per node
 /// scanned (reused from step to step).

@@ -2,11 +2,11 @@
 //! on the vertex ground (M45, docs/model.md §16.5): the side heaps are a
 //! field at fixed x (`SideHeaps`), the vertices move with the soil.
 
-use super::Ground;
+use super::Vertices;
 use crate::mass::compensated_sum;
-use crate::spill::{Column, Edges, SideHeaps};
+use crate::side_heaps::{Column, Edges, SideHeaps};
 
-impl Ground {
+impl Vertices {
     /// Spills the strip at every vertex above the original ground into
     /// `side`, a field of nodes `spacing` apart (M45); returns the weight
     /// spilled per unit width. Vertex k stands for half of each piece

@@ -6,7 +6,7 @@ use super::angles::footprint_angles;
 use super::input::SearchInput;
 use super::line::{Line, Lines};
 use crate::laws::BandAngles;
-use crate::surface::Surface;
+use crate::node_grid::surface::Surface;
 
 /// Candidate j computed on its own (its force an upper bound for the
 /// scan), if it is admissible: its line, band angles and the running sums

@@ -36,9 +36,9 @@ mod select;
 
 pub use crate::laws::BandAngles;
 pub use input::SearchInput;
-pub use select::{Choice, Observer, TIE_TOLERANCE};
+pub use select::{Choice, Observer};
 
-use crate::surface::Surface;
+use crate::node_grid::surface::Surface;
 use block::{Block, BlockEnd};
 use bounds::LeastFriction;
 use far_field::FarField;

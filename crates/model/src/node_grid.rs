@@ -1,26 +1,38 @@
-//! The cut on the node grid (docs/model.md §1–§9): each increment finds
-//! the minimum-effort mechanism on the current surface (`search`), records
-//! its force, updates the surface (`kinematics`) and relaxes it
-//! (`avalanche`), and a blade of finite width spills around its edges
-//! (`spill`).
+//! The node grid: the yardstick the vertex ground's defaults are judged
+//! against (docs/model.md §9). Nodes every increment, h = v0, so the block
+//! translates by exactly one node, and the exhaustive search over every
+//! node (the stopping rule (M31) and the bounds prune only candidates that
+//! cannot win). Each increment finds the minimum-effort mechanism on the
+//! current surface (`node_search`), records its force, updates the surface
+//! (`kinematics`) and relaxes it (`node_avalanche`), and a blade of finite
+//! width spills around its edges into the side heaps (`side_heaps`).
+//! Nothing outside this folder asks for it but the simulation's choice of
+//! ground (`run.ground = "nodes"`) and the snapshot of its state.
 
-use crate::avalanche::Avalanche;
+pub mod face_node;
+pub mod kinematics;
+pub mod node_avalanche;
+pub mod node_band;
+pub mod node_search;
+pub mod surface;
+
 use crate::case::Case;
 use crate::crescent::Crescents;
 use crate::discretisation::{Context, Discretisation};
 use crate::face_friction::Face;
-use crate::grid::Band;
-use crate::grid::FaceNode;
-use crate::kinematics::{Advance, Kinematics, Update};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
 use crate::mass::compensated_sum;
 use crate::mechanism::Loads;
+use crate::node_grid::face_node::FaceNode;
+use crate::node_grid::kinematics::{Advance, Kinematics, Update};
+use crate::node_grid::node_avalanche::Avalanche;
+use crate::node_grid::node_band::Band;
+use crate::node_grid::node_search::{Choice, Observer, Search, SearchInput};
+use crate::node_grid::surface::Surface;
 use crate::rake::Rake;
-use crate::search::{Choice, Observer, Search, SearchInput};
-use crate::spill::{Column, Edges, SideHeaps};
+use crate::side_heaps::{Column, Edges, SideHeaps};
 use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
-use crate::surface::Surface;
 use std::ops::Range;
 
 /// Depths the domain grows by when the search reaches its end.
@@ -29,7 +41,7 @@ const GROW_DEPTHS: f64 = 4.0;
 const MAX_REACH_DEPTHS: f64 = 1000.0;
 
 /// φ and ψ of fresh soil (ut = 0), radians.
-pub(super) fn fresh_angles(laws: &Laws) -> (f64, f64) {
+pub(crate) fn fresh_angles(laws: &Laws) -> (f64, f64) {
     (
         laws.material.friction.at(0.0),
         laws.material.dilation.at(0.0),
@@ -39,12 +51,12 @@ pub(super) fn fresh_angles(laws: &Laws) -> (f64, f64) {
 /// The nodes and what works on them.
 #[derive(Clone, Debug)]
 pub(crate) struct NodeGrid {
-    pub(super) surface: Surface,
-    pub(super) search: Search,
+    pub(crate) surface: Surface,
+    pub(crate) search: Search,
     kinematics: Kinematics,
     avalanche: Avalanche,
     /// Soil spilled around the edges of a blade of finite width.
-    pub(super) side: SideHeaps,
+    pub(crate) side: SideHeaps,
     /// The strip's losses of one spill, summed compensated.
     lost: Vec<f64>,
     /// The grid's shear for a raked blade (identity for 90°).
@@ -57,7 +69,7 @@ pub(crate) struct NodeGrid {
 
 impl NodeGrid {
     /// Flat ground of fresh soil, as many nodes as the case starts with.
-    pub(super) fn flat(case: &Case, laws: &Laws) -> Self {
+    pub(crate) fn flat(case: &Case, laws: &Laws) -> Self {
         let surface = Surface::flat(
             case.run.increment,
             case.deepest(),
@@ -70,7 +82,7 @@ impl NodeGrid {
 
     /// The grid of a validated case on `surface`, before its next
     /// increment: what the case determines is derived here, once.
-    pub(super) fn on(case: &Case, surface: Surface) -> Self {
+    pub(crate) fn on(case: &Case, surface: Surface) -> Self {
         let rake = Rake::new(case.blade.rake);
         // The repose slopes on the grid (M29), per unit of x'.
         let tan_repose = case.soil.repose.to_radians().tan();
@@ -203,8 +215,8 @@ impl NodeGrid {
             advance,
         );
         self.surface.trench_mass += update.trench_mass;
-        at.laws
-            .refresh_angles(&mut self.surface, update.state_from..j + 1);
+        self.surface
+            .refresh_angles(&at.laws.material, update.state_from..j + 1);
         self.surface.disturb(j + 1);
         update
     }
@@ -223,7 +235,7 @@ impl NodeGrid {
             &[at_face, band_nodes],
         );
         self.surface.disturb(moved.end);
-        at.laws.refresh_angles(&mut self.surface, moved);
+        self.surface.refresh_angles(&at.laws.material, moved);
         if let Some(width) = at.case.blade.width {
             let tan_repose = at.case.soil.repose.to_radians().tan();
             let ahead = first..self.surface.pristine_from.min(self.surface.len());

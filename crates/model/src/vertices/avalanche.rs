@@ -17,7 +17,7 @@
 //! become the mass-weighted mean of their soil and the deposit: mass is
 //! conserved exactly.
 
-use super::Ground;
+use super::Vertices;
 use crate::repose::{Pool, MAX_PASSES, SLOPE_TOLERANCE};
 
 /// The ground as the last relax left it, every vertex pair unpooled by
@@ -38,7 +38,7 @@ impl Settled {
     /// The first vertex of `ground` from which on its vertices are the
     /// settled ground's last ones, bit for bit, under the same `slopes`
     /// (the number of vertices if none is).
-    fn common_suffix(&self, ground: &Ground, slopes: (f64, f64)) -> usize {
+    fn common_suffix(&self, ground: &Vertices, slopes: (f64, f64)) -> usize {
         let n = ground.x.len();
         let same_slopes = self.slopes.0.to_bits() == slopes.0.to_bits()
             && self.slopes.1.to_bits() == slopes.1.to_bits();
@@ -56,7 +56,7 @@ impl Settled {
         n - equal
     }
 
-    fn keep(&mut self, ground: &Ground, slopes: (f64, f64)) {
+    fn keep(&mut self, ground: &Vertices, slopes: (f64, f64)) {
         self.x.clone_from(&ground.x);
         self.y.clone_from(&ground.y);
         self.slopes = slopes;
@@ -73,7 +73,7 @@ impl Settled {
 /// round-off).
 const BALANCE: f64 = 1e-9;
 
-impl Ground {
+impl Vertices {
     /// Relaxes every piece steeper than the angle of repose (M28, M50):
     /// `slopes` are the steepest slopes downhill and uphill in +x, both
     /// s = tan θr for a vertical blade, on a raked blade's sheared
@@ -347,7 +347,7 @@ fn run_end(change: &[f64], start: usize) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::{run_end, Ground, Settled};
+    use super::{run_end, Settled, Vertices};
 
     #[test]
     fn cutting_pieces_in_one_pass_is_splitting_them_one_by_one() {
@@ -355,7 +355,7 @@ mod tests {
         // ground and of each piece: the same vertices, heights and states.
         let mut draw = super::super::test_draws(3);
         for case in 0..100 {
-            let mut g = Ground::flat(10.0, 0.2 + draw(), 1.0, 1.0);
+            let mut g = Vertices::flat(10.0, 0.2 + draw(), 1.0, 1.0);
             for k in 0..g.x.len() {
                 g.y[k] = draw();
             }
@@ -384,7 +384,7 @@ mod tests {
         // into vertices: the cached relax pools only what changed and
         // ends on the same ground, state and all, as pooling every vertex.
         let mut draw = super::super::test_draws(7);
-        let mut cached = Ground::flat(20.0, 0.1, 1.0, 1.0);
+        let mut cached = Vertices::flat(20.0, 0.1, 1.0, 1.0);
         let mut settled = Settled::default();
         let slopes = (0.7, 0.7);
         let mut pooled = 0;

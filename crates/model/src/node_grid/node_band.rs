@@ -3,7 +3,7 @@
 //! node j, its nodes' relative positions, its area below the surface and
 //! its footprint in nodes.
 
-use super::FaceNode;
+use super::face_node::FaceNode;
 use crate::band::stretch;
 
 /// The band of one candidate or chosen mechanism.

@@ -17,7 +17,7 @@ use super::motion::Cut;
 use super::scan::{Pick, Scan};
 use super::search::{PickObserver, VertexSearch};
 use super::strength::Columns;
-use super::{Ground, Quiet};
+use super::{Quiet, Vertices};
 use crate::band::{stretch, BandMotion};
 use crate::case::{BandStrengthRule, Case, TimeScheme, VertexGround};
 use crate::crescent::Crescents;
@@ -25,7 +25,7 @@ use crate::discretisation::{Context, Discretisation};
 use crate::landscape::Candidate;
 use crate::mechanism::Loads;
 use crate::rake::Rake;
-use crate::spill::{Edges, SideHeaps};
+use crate::side_heaps::{Edges, SideHeaps};
 use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
 
 /// Flat fresh ground appended when the search reaches the end, in d.
@@ -41,7 +41,7 @@ pub struct Cutting {
     /// The case's `run.ground` keys.
     keys: VertexGround,
     rake: Rake,
-    ground: Ground,
+    ground: Vertices,
     search: VertexSearch,
     /// The ground as the last avalanche left it (`Settled`, a cache).
     settled: Settled,
@@ -63,7 +63,7 @@ impl Cutting {
         let d = case.blade.depth;
         let ahead = case.run.travel + 8.0 * d;
         let length = case.bin.length.map_or(ahead, |wall| wall.min(ahead));
-        let ground = Ground::flat(length, keys.spacing, case.deepest(), case.soil.unit_weight);
+        let ground = Vertices::flat(length, keys.spacing, case.deepest(), case.soil.unit_weight);
         Self::resumed(case, keys, (ground, SideHeaps::default()), 0)
     }
 
@@ -73,7 +73,7 @@ impl Cutting {
     pub(crate) fn resumed(
         case: &Case,
         keys: VertexGround,
-        (ground, side): (Ground, SideHeaps),
+        (ground, side): (Vertices, SideHeaps),
         evaluations: u64,
     ) -> Self {
         let mut search = VertexSearch::default();
@@ -90,7 +90,7 @@ impl Cutting {
     }
 
     /// The ground now.
-    pub fn ground(&self) -> &Ground {
+    pub fn ground(&self) -> &Vertices {
         &self.ground
     }
 
@@ -103,7 +103,7 @@ impl Cutting {
     /// under `scan` (`Cutting::scan`), every first-stage candidate handed
     /// to `observer` if there is one.
     fn search_next(
-        (search, ground): (&mut VertexSearch, &mut Ground),
+        (search, ground): (&mut VertexSearch, &mut Vertices),
         (at, scan): (&Context, &Scan),
         observer: Option<PickObserver>,
     ) -> Result<Pick, StepError> {

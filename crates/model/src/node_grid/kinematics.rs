@@ -31,11 +31,11 @@
 
 use crate::band::{dilation_gap, BandMotion};
 use crate::case::{BandShearRule, Choices, UnitWeightRule};
-use crate::grid::Band;
-use crate::grid::FaceNode;
+use crate::node_grid::face_node::FaceNode;
+use crate::node_grid::node_band::Band;
+use crate::node_grid::node_search::Choice;
+use crate::node_grid::surface::Surface;
 use crate::rake::Rake;
-use crate::search::Choice;
-use crate::surface::Surface;
 use std::ops::Range;
 
 /// How the face moves in an increment (by v0 = h): how much deeper the tip

@@ -27,7 +27,7 @@
 
 use super::scan::{Pick, Scan};
 use super::strength::Columns;
-use super::Ground;
+use super::Vertices;
 use crate::band::BandMotion;
 use crate::laws::BandAngles;
 
@@ -44,7 +44,7 @@ pub(crate) fn half_slip(scan: &Scan, pick: &Pick) -> f64 {
 /// (M51),
 /// every piece of which shears by `half_slip` = ½ Δut; `pick` itself if its
 /// footprint is fresh, or if Eq. (1) has no solution there.
-pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip: f64) -> Pick {
+pub(crate) fn midpoint_force(ground: &Vertices, scan: &Scan, pick: Pick, half_slip: f64) -> Pick {
     if pick.angles.fresh {
         return pick;
     }
@@ -73,7 +73,7 @@ pub(crate) fn midpoint_force(ground: &Ground, scan: &Scan, pick: Pick, half_slip
 /// sheared by the increment and keep their state. A slip line's footprint
 /// is a point: its means are the start's.
 fn crossed_means(
-    ground: &Ground,
+    ground: &Vertices,
     (scan, columns): (&Scan, &Columns),
     pick: &Pick,
     half_slip: f64,
@@ -111,7 +111,7 @@ fn crossed_means(
 /// integral of piecewise constant state, piece by piece, since φ(ut + s)
 /// is not a shift of the prefix sums. A slip line's, whose footprint is a
 /// point, are the emergence piece's.
-fn footprint_means(ground: &Ground, scan: &Scan, pick: &Pick, half_slip: f64) -> BandAngles {
+fn footprint_means(ground: &Vertices, scan: &Scan, pick: &Pick, half_slip: f64) -> BandAngles {
     let material = &scan.laws.material;
     let at = |k: usize| {
         let ut = ground.accumulated_shear[k] + half_slip;

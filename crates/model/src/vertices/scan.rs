@@ -48,7 +48,7 @@ pub(crate) struct Scan<'a> {
     /// strain); forces compared are then the blade's per unit width.
     pub(crate) crescents: Option<Crescents<'a>>,
     /// Whether the search compares the bands by their midpoint force
-    /// (M51, `ground::midpoint`) rather than the start's: the midpoint
+    /// (M51, `vertices::midpoint`) rather than the start's: the midpoint
     /// force where the soil never softens.
     pub(crate) choose_at_midpoint: bool,
     /// The band's strength from the columns it crosses (M53,

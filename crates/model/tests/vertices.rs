@@ -4,8 +4,8 @@
 //! a non-dilating band), conservation of mass and area over many
 //! increments, and state that travels with the block untouched.
 
-use soilcut_model::ground::motion::Cut;
-use soilcut_model::ground::Ground;
+use soilcut_model::vertices::motion::Cut;
+use soilcut_model::vertices::Vertices;
 
 const DEPTH: f64 = 1.0;
 const FLOOR: f64 = 2.0;
@@ -14,7 +14,7 @@ const REPOSE: f64 = 33.0;
 /// The cut of a band of width `band_width` at angle β (degrees) with
 /// dilation ψ (degrees) through the ground, emerging where its lower
 /// boundary from the tip meets the surface.
-fn cut(ground: &Ground, beta: f64, psi: f64, band_width: f64, v0: f64) -> Cut {
+fn cut(ground: &Vertices, beta: f64, psi: f64, band_width: f64, v0: f64) -> Cut {
     let (beta, psi) = (beta.to_radians(), psi.to_radians());
     let t = beta.tan();
     let x0 = ground.x[0];
@@ -53,7 +53,7 @@ fn assert_close(a: f64, b: f64, tolerance: f64, what: &str) {
 
 #[test]
 fn a_band_through_flat_ground_dilates_by_its_closed_form() {
-    let mut ground = Ground::flat(6.0, 0.05, FLOOR, 1.0);
+    let mut ground = Vertices::flat(6.0, 0.05, FLOOR, 1.0);
     let c = cut(&ground, 30.0, 10.0, 0.1, 0.01);
     let (mass, area) = (ground.mass(), ground.area());
     let moved = ground.apply(&c).expect("a band through flat ground");
@@ -71,7 +71,7 @@ fn a_band_through_flat_ground_dilates_by_its_closed_form() {
 
 #[test]
 fn without_dilation_the_band_moves_by_the_exact_affine_map() {
-    let mut ground = Ground::flat(6.0, 0.05, FLOOR, 1.0);
+    let mut ground = Vertices::flat(6.0, 0.05, FLOOR, 1.0);
     let c = cut(&ground, 25.0, 0.0, 0.12, 0.01);
     let before = ground.clone();
     let t = 25f64.to_radians().tan();
@@ -98,7 +98,7 @@ fn without_dilation_the_band_moves_by_the_exact_affine_map() {
 
 #[test]
 fn the_block_carries_its_state_untouched() {
-    let mut ground = Ground::flat(6.0, 0.05, FLOOR, 1.0);
+    let mut ground = Vertices::flat(6.0, 0.05, FLOOR, 1.0);
     ground.accumulated_shear[3] = 0.375;
     let (x3, y3) = (ground.x[3], ground.y[3]);
     let c = cut(&ground, 30.0, 5.0, 0.1, 0.01);
@@ -110,7 +110,7 @@ fn the_block_carries_its_state_untouched() {
 
 #[test]
 fn a_slip_line_slides_the_block_and_shears_its_surface() {
-    let mut ground = Ground::flat(6.0, 0.05, FLOOR, 1.0);
+    let mut ground = Vertices::flat(6.0, 0.05, FLOOR, 1.0);
     let c = cut(&ground, 30.0, 0.0, 0.0, 0.01);
     let mass = ground.mass();
     let moved = ground.apply(&c).unwrap();
@@ -123,7 +123,7 @@ fn a_slip_line_slides_the_block_and_shears_its_surface() {
 #[test]
 fn many_increments_keep_mass_and_an_ordered_ground() {
     for (band_width, psi) in [(0.1, 10.0), (0.1, -5.0), (0.0, 0.0)] {
-        let mut ground = Ground::flat(12.0, 0.04, FLOOR, 1.0);
+        let mut ground = Vertices::flat(12.0, 0.04, FLOOR, 1.0);
         let mass = ground.mass();
         for step in 0..300 {
             // The band steepens and flattens as it would over a cut.

@@ -4,10 +4,6 @@
 //! the nodes from the face weighs the face's node by ½. The surface, the
 //! band, the search and the update take both from here.
 
-mod band;
-
-pub use band::Band;
-
 /// The face's node b.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FaceNode {

@@ -13,7 +13,7 @@
 //! state moves with it. Nothing is resampled.
 //!
 //! A slip line (e = 0) moves every vertex up to x_e with the block: the
-//! emergence point is the block's corner. Ground vertices the corner passes
+//! emergence point is the block's corner. Vertices vertices the corner passes
 //! over are buried under it, and the piece from the corner to the ground
 //! ahead is the slip surface, which accumulates Δut (M15).
 //!
@@ -25,7 +25,7 @@
 //! it now stands on (M26), and the band takes the one unit weight that
 //! keeps the weight of soil unchanged (M27).
 
-use super::Ground;
+use super::Vertices;
 use crate::band::dilation_gap;
 use crate::case::{BandShearRule, UnitWeightRule};
 use crate::mass::{compensated_sum, CompensatedSum};
@@ -86,7 +86,7 @@ pub struct Moved {
     pub band: std::ops::Range<usize>,
 }
 
-impl Ground {
+impl Vertices {
     /// Moves the soil by `cut` (M48) and keeps its weight exact; `None` (nothing
     /// changed) where the face lies in the band or the band's image folds
     /// over, which a band narrower than the vertices resolve does.
@@ -457,7 +457,7 @@ struct LowerBoundary {
 }
 
 impl LowerBoundary {
-    fn through(ground: &Ground, depth: f64, emergence: usize) -> Self {
+    fn through(ground: &Vertices, depth: f64, emergence: usize) -> Self {
         let x0 = ground.x[0];
         LowerBoundary {
             x0,
@@ -472,13 +472,13 @@ impl LowerBoundary {
     }
 
     /// g of vertex k: its height above the lower boundary in thicknesses e.
-    fn position(&self, ground: &Ground, k: usize, e: f64) -> f64 {
+    fn position(&self, ground: &Vertices, k: usize, e: f64) -> f64 {
         (ground.y[k] - self.lower(ground.x[k])) / e
     }
 
     /// A0: the band's area below the surface from the face to the emergence
     /// vertex, ∫ min(g, 1) e dx, exact once no piece crosses g = 1.
-    fn band_area(&self, ground: &Ground, e: f64, emergence: usize) -> f64 {
+    fn band_area(&self, ground: &Vertices, e: f64, emergence: usize) -> f64 {
         let g = |k: usize| self.position(ground, k, e).clamp(0.0, 1.0);
         (0..emergence)
             .map(|k| 0.5 * (ground.x[k + 1] - ground.x[k]) * e * (g(k) + g(k + 1)))
@@ -496,7 +496,7 @@ struct PiecesBefore {
 
 impl PiecesBefore {
     /// The pieces before vertex `end`.
-    fn of(ground: &Ground, end: usize) -> Self {
+    fn of(ground: &Vertices, end: usize) -> Self {
         PiecesBefore {
             x: ground.x[..=end].to_vec(),
             unit_weight: ground.unit_weight[..end].to_vec(),

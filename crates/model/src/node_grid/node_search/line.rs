@@ -14,11 +14,11 @@
 use super::input::SearchInput;
 use crate::band::stretch;
 use crate::crescent::{blade_force, Fan};
-use crate::grid::Band;
-use crate::grid::FaceNode;
 use crate::laws::BandAngles;
+use crate::node_grid::face_node::FaceNode;
+use crate::node_grid::node_band::Band;
+use crate::node_grid::surface::Surface;
 use crate::rake::Rake;
-use crate::surface::Surface;
 
 /// The lines of one scan: the face, and the running sums of (M5) and the
 /// running minimum of (M3) over the nodes scanned so far.

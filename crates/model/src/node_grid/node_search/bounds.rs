@@ -5,7 +5,7 @@
 
 use super::input::SearchInput;
 use crate::force_bounds::Lower;
-use crate::surface::Surface;
+use crate::node_grid::surface::Surface;
 
 /// φ_lo, the least friction angle of the nodes scanned so far, and Eq. (1)
 /// at it: the bound before the footprint.

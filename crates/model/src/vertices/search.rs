@@ -28,7 +28,7 @@
 
 use super::midpoint::{half_slip, midpoint_force};
 use super::scan::{Pick, Scan};
-use super::Ground;
+use super::Vertices;
 use crate::band::stretch;
 use crate::force_bounds::{may_win, Lower};
 use crate::laws::BandAngles;
@@ -97,7 +97,7 @@ pub(crate) struct VertexSearch {
     /// φ is no less, so W (P/W)(β, φ_least) bounds its force (as on the
     /// node grid, `Lower::can_beat`).
     least: Option<(f64, Lower)>,
-    /// The pieces of the last footprint's two ends (`Ground::piece_near`).
+    /// The pieces of the last footprint's two ends (`Vertices::piece_near`).
     hints: [usize; 2],
     /// Eq. (1) evaluations so far.
     pub(crate) evaluations: u64,
@@ -115,7 +115,7 @@ pub(crate) struct VertexSearch {
 /// height above the line (g_0 < 0 at the face, g_end ≥ 0 at the piece's
 /// end by (M3), or 0 at the emergence point on piece 0). 0 where the face
 /// vertex is at or above the tip, as every cut that does not steer keeps it.
-fn air_at_face(ground: &Ground, (k, x, y): (usize, f64, f64), (d, grid): (f64, f64)) -> f64 {
+fn air_at_face(ground: &Vertices, (k, x, y): (usize, f64, f64), (d, grid): (f64, f64)) -> f64 {
     let g0 = ground.y[0] + d;
     if g0 >= 0.0 {
         return 0.0;
@@ -146,7 +146,7 @@ fn far_spacing(scan: &Scan, (k, t): (usize, f64)) -> Option<f64> {
 }
 
 /// Is handed every candidate the first stage evaluates, which then prunes
-/// none (a landscape, as the node grid's `search::Observer`).
+/// none (a landscape, as the node grid's `node_search::Observer`).
 pub(crate) type PickObserver<'o> = &'o mut dyn FnMut(&Pick);
 
 impl VertexSearch {
@@ -155,7 +155,7 @@ impl VertexSearch {
     /// candidate it evaluates.
     pub(crate) fn run(
         &mut self,
-        ground: &mut Ground,
+        ground: &mut Vertices,
         scan: &Scan,
         mut observer: Option<PickObserver>,
     ) -> Option<Pick> {
@@ -189,7 +189,7 @@ impl VertexSearch {
     /// emergence point, if one is within `SNAP_SLACK` of its force (a
     /// vertex's piece may hold other soil, which a band there would shear
     /// instead); else the least itself, whose point becomes a vertex.
-    fn snap(&mut self, ground: &Ground, scan: &Scan, best: Pick) -> Pick {
+    fn snap(&mut self, ground: &Vertices, scan: &Scan, best: Pick) -> Pick {
         let k = ground.piece_at(best.x);
         let mut snapped: Option<Pick> = None;
         for v in [k, k + 1] {
@@ -223,7 +223,7 @@ impl VertexSearch {
     }
 
     /// Adds piece k to the prefix sums (row k + 1).
-    fn push_row(&mut self, ground: &Ground, scan: &Scan, k: usize) {
+    fn push_row(&mut self, ground: &Vertices, scan: &Scan, k: usize) {
         let material = &scan.laws.material;
         let ut = ground.accumulated_shear[k];
         // Most of the ground ahead is fresh: its angles are known.
@@ -259,7 +259,7 @@ impl VertexSearch {
 
     /// The stopping rule (M31): the weight of the block to x_k bounds that
     /// of every candidate beyond, times the least P/W.
-    fn beyond_reach(&self, ground: &Ground, scan: &Scan, k: usize, best: Option<&Pick>) -> bool {
+    fn beyond_reach(&self, ground: &Vertices, scan: &Scan, k: usize, best: Option<&Pick>) -> bool {
         let Some(best) = best else { return false };
         if k == 0 {
             return false;
@@ -280,7 +280,7 @@ impl VertexSearch {
     /// there is one.
     fn sample_piece(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (k, stride): (usize, usize),
         best: &mut Option<Pick>,
@@ -326,7 +326,7 @@ impl VertexSearch {
     /// the lead's (every `stride`-th), else left for `fill_samples`.
     fn push_sample(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (k, x, stride): (usize, f64, usize),
         best: &mut Option<Pick>,
@@ -345,7 +345,7 @@ impl VertexSearch {
     /// the samples short of the least are mostly pruned, where scanning
     /// from the face made each of them the best so far in turn. Samples
     /// beyond the stopping rule (M31) under the best found are dropped.
-    fn fill_samples(&mut self, ground: &Ground, scan: &Scan, best: &mut Option<Pick>) {
+    fn fill_samples(&mut self, ground: &Vertices, scan: &Scan, best: &mut Option<Pick>) {
         let mut samples = std::mem::take(&mut self.samples);
         let mut piece = usize::MAX;
         for i in 0..samples.len() {
@@ -368,7 +368,7 @@ impl VertexSearch {
     /// pruned), taken as the best if it is, and handed to `observer`.
     fn sample(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (k, x): (usize, f64),
         best: &mut Option<Pick>,
@@ -394,7 +394,7 @@ impl VertexSearch {
     /// reach row k + 1), if admissible and able to come under `bar`.
     fn evaluate(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (k, x): (usize, f64),
         bar: f64,
@@ -473,7 +473,7 @@ impl VertexSearch {
     /// piece k, weighted by the band's length in each (M53): the prefix
     /// integrals over [x_0, x]. Fresh where every one of them is
     /// unsheared and stands no steeper than its φ(ut).
-    fn crossed_means(&self, ground: &Ground, scan: &Scan, (k, x): (usize, f64)) -> BandAngles {
+    fn crossed_means(&self, ground: &Vertices, scan: &Scan, (k, x): (usize, f64)) -> BandAngles {
         let run = x - ground.x[0];
         let hi = self.integral(ground, k, x);
         let law = scan.laws.material.friction.at(ground.accumulated_shear[k]);
@@ -494,7 +494,7 @@ impl VertexSearch {
     /// length of the ground's x.
     fn footprint_angles(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (k, x, y): (usize, f64, f64),
         (grid, t): (f64, f64),
@@ -536,7 +536,7 @@ impl VertexSearch {
     }
 
     /// ∫ φ, ψ, ut from the face to x on piece k.
-    fn integral(&self, ground: &Ground, k: usize, x: f64) -> [f64; 3] {
+    fn integral(&self, ground: &Vertices, k: usize, x: f64) -> [f64; 3] {
         let row = self.rows[k];
         let part = x - ground.x[k];
         let (phi, psi) = self.angles[k];
@@ -551,7 +551,7 @@ impl VertexSearch {
     /// The second stage (M49): every local minimum of the samples within
     /// `SLACK` of the least, narrowed by golden-section search to
     /// `scan.resolution`; returns the least found.
-    fn narrow(&mut self, ground: &Ground, scan: &Scan, mut best: Pick) -> Pick {
+    fn narrow(&mut self, ground: &Vertices, scan: &Scan, mut best: Pick) -> Pick {
         let bar = best.force * (1.0 + SLACK);
         let samples = std::mem::take(&mut self.samples);
         for i in 0..samples.len() {
@@ -580,7 +580,7 @@ impl VertexSearch {
     /// Golden-section search for the least force on [lo, hi].
     fn golden(
         &mut self,
-        ground: &Ground,
+        ground: &Vertices,
         scan: &Scan,
         (mut lo, mut hi): (f64, f64),
         bar: f64,

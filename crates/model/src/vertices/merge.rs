@@ -7,9 +7,9 @@
 //! their mass-weighted ut, so the mass is exact and the state is averaged,
 //! never interpolated.
 
-use super::Ground;
+use super::Vertices;
 
-/// When a vertex carries no information (`Ground::merge_quiet`): the
+/// When a vertex carries no information (`Vertices::merge_quiet`): the
 /// pieces either side of it differ in ut by at most `tolerance` times
 /// `shear_scale` and in γ by at most `tolerance` times `unit_weight`, it
 /// lies within `tolerance` times `depth` of the chord of its neighbours
@@ -28,7 +28,7 @@ pub struct Quiet {
     pub longest: f64,
 }
 
-impl Ground {
+impl Vertices {
     /// Removes the vertices that end a piece shorter than `min_spacing`
     /// among vertices `from..to` (never the face's), joining the two pieces
     /// it bounded: the joined piece holds their weight (its γ the weight
@@ -56,7 +56,7 @@ impl Ground {
         &mut self,
         from: usize,
         to: usize,
-        goes: impl Fn(&Ground, usize) -> bool,
+        goes: impl Fn(&Vertices, usize) -> bool,
     ) -> usize {
         let len = self.x.len();
         let (mut w, mut removed) = (from.max(1), 0);
@@ -141,11 +141,11 @@ impl Ground {
 
 #[cfg(test)]
 mod tests {
-    use super::Ground;
+    use super::Vertices;
 
     /// Vertex k removed by shifting everything behind it, as the pass did
     /// before it moved each vertex once: the yardstick of the pass.
-    fn remove_one(g: &mut Ground, k: usize) {
+    fn remove_one(g: &mut Vertices, k: usize) {
         let (a, b) = (g.piece_area(k - 1), g.piece_area(k));
         let (ga, gb) = (g.unit_weight[k - 1], g.unit_weight[k]);
         let weight = ga * a + gb * b;
@@ -162,7 +162,7 @@ mod tests {
     fn one_pass_removes_what_one_at_a_time_removed_bit_for_bit() {
         let mut draw = super::super::test_draws(11);
         for case in 0..200 {
-            let mut g = Ground::flat(10.0, 0.05 + 0.3 * draw(), 1.0, 1.0);
+            let mut g = Vertices::flat(10.0, 0.05 + 0.3 * draw(), 1.0, 1.0);
             for k in 1..g.x.len() - 1 {
                 g.x[k] += 0.4 * (draw() - 0.5) * (g.x[k + 1] - g.x[k]).min(g.x[k] - g.x[k - 1]);
                 g.y[k] = 0.3 * draw();

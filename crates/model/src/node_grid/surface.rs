@@ -10,8 +10,10 @@
 //! blade: the weight of soil is M = h Σ w_i γ_i (y_i + d), w_i = 1 inside,
 //! ½ at the face and at the far end (`FaceNode`).
 
-use crate::grid::FaceNode;
 use crate::mass::compensated_sum;
+use crate::material::Material;
+use crate::node_grid::face_node::FaceNode;
+use std::ops::Range;
 
 /// Nodes of the free surface.
 #[derive(Clone, Debug)]
@@ -165,6 +167,16 @@ impl Surface {
         let column = self.ground_unit_weight * (0.0 - self.floor) * self.spacing;
         let pristine = column * (whole - 0.5 * halves.min(whole));
         compensated_sum(disturbed.chain([pristine, self.trench_mass, -self.appended_mass]))
+    }
+
+    /// Recomputes φ(ut) and ψ(ut) of the nodes in `range` from the soil's
+    /// laws (Fig. 2).
+    pub(crate) fn refresh_angles(&mut self, material: &Material, range: Range<usize>) {
+        for i in range {
+            let ut = self.accumulated_shear[i];
+            self.friction[i] = material.friction.at(ut);
+            self.dilation[i] = material.dilation.at(ut);
+        }
     }
 }
 

@@ -10,10 +10,10 @@ use super::line::{Line, Lines, Slope};
 use super::select::Best;
 use crate::band::stretch;
 use crate::force_bounds::Lower;
-use crate::grid::FaceNode;
 use crate::mechanism::ForceFactor;
+use crate::node_grid::face_node::FaceNode;
+use crate::node_grid::surface::Surface;
 use crate::rake::Rake;
-use crate::surface::Surface;
 
 /// Candidates on undisturbed flat ground (y = 0, unit weight γ0) from
 /// n_s = j0 − b on: with the running sums S over the nodes before j0,

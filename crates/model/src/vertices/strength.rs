@@ -25,7 +25,7 @@
 //! slope's. These are the prefix integrals of the search (M49) with φ̂
 //! for φ: no cost beyond the footprint's.
 
-use super::Ground;
+use super::Vertices;
 use crate::rake::Rake;
 
 /// The floor of a column's friction angle (M53).
@@ -49,7 +49,7 @@ impl Columns {
 
     /// θ_k: the angle piece k's surface stands at in the blade's plane
     /// (radians), at most θr (M53).
-    pub(crate) fn standing(&self, ground: &Ground, k: usize) -> f64 {
+    pub(crate) fn standing(&self, ground: &Vertices, k: usize) -> f64 {
         let grid = (ground.y[k + 1] - ground.y[k]) / (ground.x[k + 1] - ground.x[k]);
         let run = 1.0 - grid * self.rake.cot;
         if run <= 0.0 {
@@ -59,7 +59,7 @@ impl Columns {
     }
 
     /// φ̂_k = max(φ(ut_k), min(θ_k, θr)) (M53), `phi` = φ(ut_k) of piece k.
-    pub(crate) fn friction(&self, ground: &Ground, k: usize, phi: f64) -> f64 {
+    pub(crate) fn friction(&self, ground: &Vertices, k: usize, phi: f64) -> f64 {
         phi.max(self.standing(ground, k))
     }
 }
