@@ -194,6 +194,38 @@ impl Cutting {
             ..line
         }
     }
+
+    /// After the motion (M49, M50): the slopes avalanche, the quiet
+    /// vertices merge (with `run.merge_tolerance` above 0) and a blade of
+    /// finite width spills around its edges.
+    fn settle(&mut self, c: &Case) {
+        let d = c.blade.depth;
+        let slopes = self.rake.repose_slopes(c.soil.repose.to_radians().tan());
+        self.ground
+            .relax_after(slopes, self.keys.spacing, &mut self.settled);
+        if self.keys.merge_tolerance > 0.0 {
+            let quiet = Quiet {
+                tolerance: self.keys.merge_tolerance,
+                // ur; d where the law softens at once (ur = 0).
+                shear_scale: if c.soil.residual_shear > 0.0 {
+                    c.soil.residual_shear
+                } else {
+                    d
+                },
+                unit_weight: c.soil.unit_weight,
+                depth: d,
+                longest: self.keys.spacing,
+            };
+            self.ground.merge_quiet(1, self.ground.pieces(), &quiet);
+        }
+        if let Some(width) = c.blade.width {
+            let edges = Edges {
+                width,
+                tan_repose: c.soil.repose.to_radians().tan(),
+            };
+            self.ground.spill(&mut self.side, edges, self.keys.spacing);
+        }
+    }
 }
 
 impl Discretisation for Cutting {
@@ -302,31 +334,7 @@ impl Discretisation for Cutting {
         // The face at exactly n v0 after n increments, as on the node grid,
         // not a sum of n increments' rounding.
         self.ground.x[0] = (at.done + 1) as f64 * c.run.increment;
-        let slopes = self.rake.repose_slopes(c.soil.repose.to_radians().tan());
-        self.ground
-            .relax_after(slopes, keys.spacing, &mut self.settled);
-        if keys.merge_tolerance > 0.0 {
-            let quiet = Quiet {
-                tolerance: keys.merge_tolerance,
-                // ur; d where the law softens at once (ur = 0).
-                shear_scale: if c.soil.residual_shear > 0.0 {
-                    c.soil.residual_shear
-                } else {
-                    d
-                },
-                unit_weight: c.soil.unit_weight,
-                depth: d,
-                longest: keys.spacing,
-            };
-            self.ground.merge_quiet(1, self.ground.pieces(), &quiet);
-        }
-        if let Some(width) = c.blade.width {
-            let edges = Edges {
-                width,
-                tan_repose: c.soil.repose.to_radians().tan(),
-            };
-            self.ground.spill(&mut self.side, edges, keys.spacing);
-        }
+        self.settle(c);
         let mobilisation = face.mobilisation(pick.tan_beta, pick.angles.dilation);
         let omega = at.laws.face.angle(mobilisation);
         let force = pick.force * self.per_blade;

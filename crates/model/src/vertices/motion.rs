@@ -29,6 +29,7 @@ use super::Vertices;
 use crate::band::dilation_gap;
 use crate::case::{BandShearRule, UnitWeightRule};
 use crate::mass::{compensated_sum, CompensatedSum};
+use std::ops::Range;
 
 /// The mechanism an increment moves the soil by.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,24 +109,7 @@ impl Vertices {
             0.0
         };
         let before = PiecesBefore::of(self, (emergence + 1).min(self.pieces()));
-        // Nothing beyond the second vertex after the emergence point moves,
-        // unless the tip rises faster than the ground near the face can
-        // give (`path_reach`): then the sums that keep area and mass exact
-        // take the whole ground (an increment 15 vertices long rising 80,
-        // from fuzzing `--set`: the mass drifted 1.4e-3 with the sums
-        // stopping at the emergence point).
-        // The block moves v0 along x, so its far end lands up to v0 past
-        // the emergence vertex: where that is beyond the second vertex on,
-        // the sums reach the first vertex past it (a slip line pushed 5 in
-        // one increment over vertices 0.4 apart, from fuzzing `--set`: the
-        // mass drifted 6e-5 with the sums stopping two vertices on).
-        let last = if self.rises_fast(cut) {
-            self.pieces()
-        } else {
-            let landing = self.x[emergence] + cut.advance;
-            let past = self.x.partition_point(|&x| x <= landing);
-            (emergence + 2).max(past).min(self.pieces())
-        };
+        let last = self.sums_end(cut, emergence);
         let end = self.x[last];
         let (mass_before, area_before) = self.region(end);
         // The soil below the tip's path, from depth d to d + Δd, stays
@@ -138,6 +122,58 @@ impl Vertices {
         } else {
             (self.slide_over(cut, emergence), Vec::new())
         };
+        self.lift(cut, corner..band.end, end, target_area);
+        // The band's dilation under the block (0 for a slip line), in the
+        // ground's coordinates (M16's stretch on a raked blade's).
+        let t = cut.rake.physical(line.tan_beta).unwrap_or(line.tan_beta);
+        let gap = dilation_gap(cut.slip, cut.tan_psi, (line.tan_beta, t));
+        self.mix_block_pieces(&before, &line, band.start, gap);
+        if banded {
+            self.keep_band_state(&before, band.clone());
+        }
+        self.accumulate_shear(band.clone(), &shares, cut);
+        self.trench_mass += trench_mass;
+        self.weigh_moved(
+            cut,
+            band.clone(),
+            dilation_area,
+            mass_before - trench_mass,
+            end,
+        );
+        let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
+        let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
+        Some(Moved {
+            dilation_area,
+            trench_mass,
+            band,
+        })
+    }
+
+    /// The last vertex the sums that keep area and mass exact take.
+    fn sums_end(&self, cut: &Cut, emergence: usize) -> usize {
+        // Nothing beyond the second vertex after the emergence point moves,
+        // unless the tip rises faster than the ground near the face can
+        // give (`path_reach`): then the sums that keep area and mass exact
+        // take the whole ground (an increment 15 vertices long rising 80,
+        // from fuzzing `--set`: the mass drifted 1.4e-3 with the sums
+        // stopping at the emergence point).
+        // The block moves v0 along x, so its far end lands up to v0 past
+        // the emergence vertex: where that is beyond the second vertex on,
+        // the sums reach the first vertex past it (a slip line pushed 5 in
+        // one increment over vertices 0.4 apart, from fuzzing `--set`: the
+        // mass drifted 6e-5 with the sums stopping two vertices on).
+        if self.rises_fast(cut) {
+            self.pieces()
+        } else {
+            let landing = self.x[emergence] + cut.advance;
+            let past = self.x.partition_point(|&x| x <= landing);
+            (emergence + 2).max(past).min(self.pieces())
+        }
+    }
+
+    /// Lifts the face's piece by the swept soil and the band's pieces
+    /// `band` to the area `target_area` of the ground up to `end`.
+    fn lift(&mut self, cut: &Cut, band: Range<usize>, end: f64, target_area: f64) {
         // The swept soil, ½ v0 (e + rise), on the face's piece (M20), and
         // the tip's path's share, ½ v0 Δd (M38), over the ground within v0
         // of the face (the node grid's face node): on the face's piece
@@ -150,39 +186,33 @@ impl Vertices {
             let reach = self.path_reach(cut, end);
             self.lift_band(0..reach, cut.path_strip());
         }
-        if banded {
-            self.lift_band(corner..band.end, target_area - self.region(end).1);
+        if cut.thickness > 0.0 {
+            self.lift_band(band, target_area - self.region(end).1);
         }
-        // The band's dilation under the block (0 for a slip line), in the
-        // ground's coordinates (M16's stretch on a raked blade's).
-        let t = cut.rake.physical(line.tan_beta).unwrap_or(line.tan_beta);
-        let gap = dilation_gap(cut.slip, cut.tan_psi, (line.tan_beta, t));
-        self.mix_block_pieces(&before, &line, band.start, gap);
-        if banded {
-            self.keep_band_state(&before, band.clone());
-        }
-        self.accumulate_shear(band.clone(), &shares, cut);
-        self.trench_mass += trench_mass;
+    }
+
+    /// The band's unit weight after the motion (M25, M27): the band as a
+    /// whole holds `mass` of the ground up to `end`, or the paper's formula
+    /// piece by piece.
+    fn weigh_moved(
+        &mut self,
+        cut: &Cut,
+        band: Range<usize>,
+        dilation_area: f64,
+        mass: f64,
+        end: f64,
+    ) {
         match cut.unit_weight {
-            UnitWeightRule::BandUniform => {
-                self.weigh_band(band.clone(), mass_before - trench_mass, end)
-            }
-            UnitWeightRule::PerNodeFormula if banded && dilation_area != 0.0 => {
+            UnitWeightRule::BandUniform => self.weigh_band(band, mass, end),
+            UnitWeightRule::PerNodeFormula if cut.thickness > 0.0 && dilation_area != 0.0 => {
                 // The paper's A_new = A0 (1 + Δut tan ψ / dB) on each piece.
                 let strain = cut.slip * cut.tan_psi / cut.width;
-                for g in &mut self.unit_weight[band.clone()] {
+                for g in &mut self.unit_weight[band] {
                     *g /= 1.0 + strain;
                 }
             }
             UnitWeightRule::PerNodeFormula => {}
         }
-        let merged = self.merge_close(1, band.end + 2, cut.min_spacing);
-        let band = band.start..band.end.saturating_sub(merged).max(band.start + 1);
-        Some(Moved {
-            dilation_area,
-            trench_mass,
-            band,
-        })
     }
 
     /// Makes a vertex wherever a piece between the face and the emergence
