@@ -17,7 +17,7 @@ use crate::problem::InputError;
 use crate::problem::{Domain, Face, Ground, Problem, Soil, MIN_RAKE};
 use crate::strength::{Field, Strength};
 use soilcut_model::material::Material;
-use soilcut_model::{Case, CaseError, ProfilePoint, Simulation, StepError, StepRecord};
+use soilcut_model::{Case, CaseError, ProfilePoint, Simulation, StepError, StepRecord, Until};
 
 /// What lies below the tip level.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -101,20 +101,6 @@ impl std::fmt::Display for InstantError {
 }
 
 impl std::error::Error for InstantError {}
-
-/// Steps `sim` to the first increment evaluated at u ≥ `at`·d (d the case's
-/// `blade.depth`; the last increment if `at` lies beyond it), as `soilcut
-/// landscape --at` does.
-pub fn advance_to(sim: &mut Simulation, at: f64) -> Result<(), StepError> {
-    let case = sim.case();
-    let before = case
-        .increments_to(at * case.blade.depth)
-        .min(case.steps() - 1);
-    while sim.steps_done() < before {
-        sim.step()?;
-    }
-    Ok(())
-}
 
 /// The ground of `sim` as it stands, as a bound problem: each column's
 /// strength by `strength` (from its φ(ut), ψ(ut)), then `field`.
@@ -201,7 +187,8 @@ fn check(case: &Case) -> Result<(), InstantError> {
 pub fn at(case: &Case, at: f64, options: Options) -> Result<Instant, InstantError> {
     check(case)?;
     let mut sim = Simulation::new(case).map_err(InstantError::Case)?;
-    advance_to(&mut sim, at).map_err(InstantError::Step)?;
+    sim.drive(Until::Instant(at), &mut ())
+        .map_err(InstantError::Step)?;
     instant(&mut sim, options)
 }
 
@@ -210,14 +197,11 @@ pub fn at(case: &Case, at: f64, options: Options) -> Result<Instant, InstantErro
 pub fn every(case: &Case, every: f64, options: Options) -> Result<Vec<Instant>, InstantError> {
     check(case)?;
     let mut sim = Simulation::new(case).map_err(InstantError::Case)?;
-    let d = case.blade.depth;
     let mut out: Vec<Instant> = Vec::new();
-    while !sim.is_done() {
-        if sim.blade_position() / d >= out.len() as f64 * every - 1e-9 {
-            out.push(instant(&mut sim, options)?);
-        } else {
-            sim.step().map_err(InstantError::Step)?;
-        }
+    for at in sim.samples_every(every, case.steps().saturating_sub(1)) {
+        sim.drive(Until::Increments(at), &mut ())
+            .map_err(InstantError::Step)?;
+        out.push(instant(&mut sim, options)?);
     }
     Ok(out)
 }

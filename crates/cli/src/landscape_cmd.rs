@@ -5,7 +5,7 @@
 use crate::{load, CaseOutput, Failure, Moment};
 use soilcut_io::{landscape_at, landscape_csv, landscape_map_csv, LoadedCase, OutputError};
 use soilcut_model::landscape::{least_by_distance, near_minimum};
-use soilcut_model::{Candidate, Simulation};
+use soilcut_model::{Candidate, Simulation, Until};
 use soilcut_plot::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap, PlotError};
 use std::path::Path;
 
@@ -118,17 +118,13 @@ fn map(
     let case = &loaded.case;
     let d = case.blade.depth;
     let mut columns: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
-    loop {
+    for at in sim.samples_every(every, case.steps()) {
+        sim.drive(Until::Increments(at), &mut ())
+            .map_err(|e| Failure::input(path, e))?;
         let u = sim.blade_position();
-        if u / d >= columns.len() as f64 * every - 1e-9 {
-            let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
-            let bins = least_by_distance(&candidates, u, MAP_BIN * d);
-            columns.push((u / d, bins.iter().map(|&(s, r)| (s / d, r)).collect()));
-        }
-        if sim.is_done() {
-            break;
-        }
-        sim.step().map_err(|e| Failure::input(path, e))?;
+        let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
+        let bins = least_by_distance(&candidates, u, MAP_BIN * d);
+        columns.push((u / d, bins.iter().map(|&(s, r)| (s / d, r)).collect()));
     }
     let far_ties = columns.iter().filter(|c| has_far_tie(&c.1)).count();
     let summary = format!(

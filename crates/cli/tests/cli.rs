@@ -7,7 +7,7 @@ use tempfile::TempDir;
 
 /// Short cases (100 increments) shared with soilcut-io's unit tests.
 const BASE: &str = include_str!("../../io/testdata/original.toml");
-const REFINED: &str = include_str!("../../io/testdata/refined.toml");
+pub(crate) const REFINED: &str = include_str!("../../io/testdata/refined.toml");
 
 const SHORT: [&str; 4] = ["--set", "run.travel=20", "--set", "run.increment=0.2"];
 
@@ -35,7 +35,7 @@ impl Sandbox {
         self.dir.path().join(rel)
     }
 
-    fn soilcut(&self, args: &[&str]) -> Output {
+    pub(crate) fn soilcut(&self, args: &[&str]) -> Output {
         Command::new(env!("CARGO_BIN_EXE_soilcut"))
             .args(args)
             .current_dir(self.dir.path())
@@ -58,7 +58,7 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-fn stdout(o: &Output) -> String {
+pub(crate) fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 

@@ -5,6 +5,7 @@
 mod analytic;
 mod bounds;
 mod cli;
+mod driver;
 mod module_cycles;
 mod output_folder;
 mod plots;

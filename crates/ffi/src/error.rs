@@ -71,11 +71,7 @@ impl Failure {
 
     /// A panic's payload as a failure.
     pub fn panicked(payload: &(dyn Any + Send)) -> Self {
-        let text = payload
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| payload.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unknown panic".to_string());
+        let text = soilcut_io::panic_message(payload);
         Failure::new(
             SOILCUT_ERR_PANIC,
             format!("soilcut panicked (a bug of soilcut): {text}"),

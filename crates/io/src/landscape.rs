@@ -2,7 +2,7 @@
 
 use crate::columns::Columns;
 use crate::csv_text::CsvText;
-use soilcut_model::{Candidate, Case, Simulation, StepError};
+use soilcut_model::{Candidate, Case, Simulation, StepError, Until};
 
 /// Columns of `landscape.csv`, in order.
 pub const LANDSCAPE_HEADER: &str = "x_emergence,distance_over_d,y_emergence,beta_deg,force,force_norm,force_over_least,friction_deg,dilation_deg";
@@ -40,14 +40,7 @@ fn check_moment(name: &str, value: f64, range: &str, last: f64, ok: bool) -> Res
 /// v0; the last increment if `at` lies beyond it) and returns every
 /// candidate mechanism there: the landscape of `soilcut landscape --at`.
 pub fn landscape_at(sim: &mut Simulation, at: f64) -> Result<Vec<Candidate>, StepError> {
-    let case = sim.case();
-    let before = ((at * case.blade.depth / case.run.increment) - 1e-9)
-        .ceil()
-        .max(0.0) as usize;
-    let before = before.min(case.steps() - 1);
-    while sim.steps_done() < before {
-        sim.step()?;
-    }
+    sim.drive(Until::Instant(at), &mut ())?;
     sim.landscape()
 }
 

@@ -34,6 +34,7 @@ mod landscape;
 mod measured;
 mod output;
 mod overrides;
+mod panic;
 #[cfg(feature = "pictures")]
 mod pictures;
 mod place;
@@ -66,6 +67,7 @@ pub use measured::{
 };
 pub use output::{peak_prominence_rule, profile_columns, RunOutput, RunTables, PROFILE_HEADER};
 pub use overrides::{parse_value, Override};
+pub use panic::panic_message;
 #[cfg(feature = "pictures")]
 pub use pictures::{compare, draw_run_dir, run_data, write_run_dir, write_run_into, PictureError};
 pub use place::{

@@ -4,7 +4,7 @@
 use crate::case_file::LoadedCase;
 use crate::finished::{frames_columns, SurfaceFrame};
 use crate::output::{RunOutput, RunTables};
-use soilcut_model::{Simulation, StepError, StepRecord, Summary};
+use soilcut_model::{Simulation, StepError, StepRecord, Summary, Until};
 use std::time::Instant;
 
 /// Surfaces captured during a run for the animation (evenly spaced).
@@ -44,22 +44,22 @@ fn record_until_stopped(
     let mut frames = vec![snapshot(sim)];
     let mut history = Vec::with_capacity(total);
     let mut next = at.iter().skip(1).peekable();
-    while !sim.is_done() {
-        match sim.step() {
-            Ok(record) => history.push(record),
-            Err(e) => {
-                if frames.last().is_some_and(|f| f.step != sim.steps_done()) {
-                    frames.push(snapshot(sim));
-                }
-                return (history, frames, Some(e));
-            }
-        }
+    let driven = sim.drive(Until::End, &mut |sim: &Simulation, record: &StepRecord| {
+        history.push(*record);
         if next.next_if_eq(&&sim.steps_done()).is_some() {
             frames.push(snapshot(sim));
         }
         on_step();
+    });
+    match driven {
+        Ok(_) => (history, frames, None),
+        Err(e) => {
+            if frames.last().is_some_and(|f| f.step != sim.steps_done()) {
+                frames.push(snapshot(sim));
+            }
+            (history, frames, Some(e))
+        }
     }
-    (history, frames, None)
 }
 
 /// A run's files and summary: a finished run's, or one that stopped

@@ -51,6 +51,6 @@ pub use case::{
 };
 pub use landscape::Candidate;
 pub use simulation::{
-    AdvanceError, ProfilePoint, Simulation, SnapshotError, StepError, StepRecord,
+    AdvanceError, Observer, ProfilePoint, Simulation, SnapshotError, StepError, StepRecord, Until,
 };
 pub use summary::{Peak, Summary};

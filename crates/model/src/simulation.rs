@@ -15,6 +15,7 @@ use crate::node_grid::NodeGrid;
 use crate::vertices::cutting::Cutting;
 
 mod advance;
+mod driver;
 #[cfg(test)]
 mod node_grid_area;
 pub mod snapshot;
@@ -22,6 +23,7 @@ pub mod snapshot;
 pub use crate::step::{ProfilePoint, StepError, StepRecord};
 
 pub use advance::AdvanceError;
+pub use driver::{Observer, Until};
 pub use snapshot::SnapshotError;
 
 /// The ground a simulation runs on, chosen from its case once.
@@ -182,18 +184,17 @@ impl Simulation {
         Ok(record)
     }
 
-    /// Runs the remaining increments of the case, calling `observer` after
-    /// each one.
+    /// Runs the remaining increments of the case (`drive` to its end),
+    /// calling `observer` after each one, and returns their records.
     pub fn run_to_end(
         &mut self,
         mut observer: impl FnMut(&StepRecord),
     ) -> Result<Vec<StepRecord>, StepError> {
         let mut history = Vec::with_capacity(self.case.steps().saturating_sub(self.done));
-        while !self.is_done() {
-            let record = self.step()?;
-            observer(&record);
-            history.push(record);
-        }
+        self.drive(Until::End, &mut |_: &Simulation, record: &StepRecord| {
+            observer(record);
+            history.push(*record);
+        })?;
         Ok(history)
     }
 }

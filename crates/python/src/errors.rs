@@ -4,6 +4,7 @@
 use crate::step::Step;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
+use soilcut_io::panic_message;
 use soilcut_io::InputError;
 use soilcut_model::{AdvanceError, StepError, StepRecord};
 use std::any::Any;
@@ -127,11 +128,7 @@ pub fn advance_error(py: Python<'_>, e: AdvanceError) -> PyErr {
 /// A panic of the model (a bug) as a `RuntimeError`, so that it never
 /// reaches Python as a `PanicException` (which escapes `except Exception`).
 fn panic_error(panic: Box<dyn Any + Send>) -> PyErr {
-    let text = panic
-        .downcast_ref::<&str>()
-        .map(|s| s.to_string())
-        .or_else(|| panic.downcast_ref::<String>().cloned())
-        .unwrap_or_else(|| "unknown panic".to_string());
+    let text = panic_message(panic.as_ref());
     PyRuntimeError::new_err(format!("the model panicked (a bug of soilcut): {text}"))
 }
 

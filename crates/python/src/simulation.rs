@@ -10,6 +10,7 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyTuple};
 use soilcut_io::{case_from_note, profile_columns, LoadedCase};
+use soilcut_model::Until;
 
 /// A running simulation of one case.
 #[pyclass(module = "soilcut._soilcut")]
@@ -110,12 +111,8 @@ impl Simulation {
         let n = count_argument("advance", "n", n)?;
         let sim = &mut self.sim;
         detached(py, || {
-            let mut made = 0;
-            while made < n && !sim.is_done() {
-                sim.step()?;
-                made += 1;
-            }
-            Ok(made)
+            let until = Until::Increments(sim.steps_done().saturating_add(n));
+            sim.drive(until, &mut ())
         })
     }
 

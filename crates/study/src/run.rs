@@ -128,14 +128,10 @@ pub fn run_recorded(loaded: &LoadedCase) -> Result<RecordedRun, String> {
 fn caught<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(result) => result,
-        Err(panic) => {
-            let text = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".to_string());
-            Err(format!("the model panicked: {text}"))
-        }
+        Err(panic) => Err(format!(
+            "the model panicked: {}",
+            soilcut_io::panic_message(panic.as_ref())
+        )),
     }
 }
 

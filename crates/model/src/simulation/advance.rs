@@ -7,7 +7,7 @@
 //! `Case::increments_to`, the rule of `run.travel`. The blade stops at most
 //! one increment past x and the results stay those of the case.
 
-use super::{Simulation, StepRecord};
+use super::{Simulation, StepRecord, Until};
 use crate::case::{climb, CaseError};
 use crate::simulation::StepError;
 use std::fmt;
@@ -91,17 +91,11 @@ impl Simulation {
     ) -> Result<usize, AdvanceError> {
         let target = self.target(x)?;
         self.steer(x, depth, target - self.done)?;
-        let start = self.done;
-        while self.done < target {
-            match self.step() {
-                Ok(record) => on_step(self, &record),
-                Err(error) => {
-                    let records = Vec::new();
-                    return Err(AdvanceError::Step { records, error });
-                }
-            }
-        }
-        Ok(target - start)
+        self.drive(Until::Increments(target), &mut on_step)
+            .map_err(|error| AdvanceError::Step {
+                records: Vec::new(),
+                error,
+            })
     }
 
     /// The increments done once the blade is at x.
