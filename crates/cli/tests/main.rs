@@ -5,6 +5,7 @@
 mod analytic;
 mod bounds;
 mod cli;
+mod finite_runs;
 mod module_cycles;
 mod output_folder;
 mod plots;
