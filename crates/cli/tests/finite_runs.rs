@@ -116,7 +116,7 @@ fn a_case_beyond_the_memory_bounds_is_refused() {
     let fine = ["run.vertex_spacing=1e-4"];
     refused(fig5, &fine, "run.vertex_spacing", "run.increment / 4");
     let vertices = ["run.vertex_spacing=4e-5", "run.increment=1e-4"];
-    refused(fig5, &vertices, "run.vertex_spacing", "5e6 vertices");
+    refused(fig5, &vertices, "run.vertex_spacing", "1e6 vertices");
     let steps = ["run.increment=1e-5", "run.vertex_spacing=1"];
     refused(fig5, &steps, "run.increment", "1e6 increments");
 }
