@@ -11,7 +11,8 @@ const BASE: &str = include_str!("../../io/testdata/original.toml");
 /// Constant friction: the ground at u = 0 is flat, φ = 35°, φw = 10°.
 const CONSTANT: [&str; 2] = ["--set", "soil.friction={ peak = 35, residual = 35 }"];
 
-fn soilcut(dir: &Path, args: &[&str]) -> Output {
+/// `soilcut ARGS…` in `dir`.
+pub(crate) fn soilcut(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_soilcut"))
         .args(args)
         .current_dir(dir)

@@ -6,6 +6,7 @@ mod analytic;
 mod bounds;
 mod cli;
 mod driver;
+mod finite_runs;
 mod module_cycles;
 mod output_folder;
 mod plots;

@@ -50,8 +50,10 @@
 #define SOILCUT_ERR_STATE -5
 
 /**
- * The increment has no admissible mechanism (the model's step error; the
- * message says why). The simulation is unchanged.
+ * The increment has no admissible mechanism, or made a number that is not
+ * finite (the model's step errors; the message says which and why). The
+ * simulation is unchanged by the first; after the second every step
+ * gives it again.
  */
 #define SOILCUT_ERR_STEP -6
 
@@ -340,8 +342,8 @@ int soilcut_warnings(const struct SoilcutSimulation *sim, char *buf, size_t len,
  *
  * Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `record`
  * misaligned), `SOILCUT_ERR_TRAVEL` (the case's travel has been reached),
- * `SOILCUT_ERR_STEP` (no admissible mechanism; the simulation is
- * unchanged) or `SOILCUT_ERR_PANIC`.
+ * `SOILCUT_ERR_STEP` (no admissible mechanism, the simulation
+ * unchanged; or a number not finite) or `SOILCUT_ERR_PANIC`.
  *
  * # Safety
  * `sim` is NULL or a live handle; `record` is NULL or valid for a write.

@@ -27,8 +27,10 @@ pub const SOILCUT_ERR_ARGUMENT: c_int = -4;
 /// `soilcut_advance_to` callback (other than `soilcut_state`,
 /// `soilcut_last_step`, `soilcut_last_error`).
 pub const SOILCUT_ERR_STATE: c_int = -5;
-/// The increment has no admissible mechanism (the model's step error; the
-/// message says why). The simulation is unchanged.
+/// The increment has no admissible mechanism, or made a number that is not
+/// finite (the model's step errors; the message says which and why). The
+/// simulation is unchanged by the first; after the second every step
+/// gives it again.
 pub const SOILCUT_ERR_STEP: c_int = -6;
 /// soilcut panicked (a bug of soilcut): the panic was caught at the
 /// boundary. A handle whose call panicked is unusable afterwards; every

@@ -487,8 +487,8 @@ pub unsafe extern "C" fn soilcut_warnings(
 ///
 /// Returns `SOILCUT_OK`, `SOILCUT_ERR_NULL` (`sim` NULL, `record`
 /// misaligned), `SOILCUT_ERR_TRAVEL` (the case's travel has been reached),
-/// `SOILCUT_ERR_STEP` (no admissible mechanism; the simulation is
-/// unchanged) or `SOILCUT_ERR_PANIC`.
+/// `SOILCUT_ERR_STEP` (no admissible mechanism, the simulation
+/// unchanged; or a number not finite) or `SOILCUT_ERR_PANIC`.
 ///
 /// # Safety
 /// `sim` is NULL or a live handle; `record` is NULL or valid for a write.

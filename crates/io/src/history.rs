@@ -1,37 +1,16 @@
-//! `history.csv`'s columns, named once: the file is written from this
-//! list, and the C ABI's record and Python's `Step` take their fields from
-//! it. A field of the model's `StepRecord` becomes a column by one line
-//! here.
+//! `history.csv`'s columns, named once in the model's
+//! `StepRecord::COLUMNS`: the file is written from this list, and the C
+//! ABI's record and Python's `Step` take their fields from it.
 
 use crate::columns::Columns;
 use soilcut_model::StepRecord;
 
 /// A column of `history.csv`: its name and a record's value in it.
-pub type HistoryColumn = (&'static str, fn(&StepRecord) -> f64);
+pub type HistoryColumn = soilcut_model::step::Column;
 
-/// The columns of `history.csv`, in order.
-pub const HISTORY: [HistoryColumn; 20] = [
-    ("step", |r| r.step as f64),
-    ("u", |r| r.u),
-    ("u_over_d", |r| r.u_over_d),
-    ("force", |r| r.force),
-    ("force_norm", |r| r.force_norm),
-    ("force_h", |r| r.force_h),
-    ("force_v", |r| r.force_v),
-    ("beta_deg", |r| r.beta_deg),
-    ("x_emergence", |r| r.x_emergence),
-    ("mass", |r| r.mass),
-    ("y_emergence", |r| r.y_emergence),
-    ("friction_deg", |r| r.friction_deg),
-    ("slip", |r| r.slip),
-    ("dilation_deg", |r| r.dilation_deg),
-    ("dilation_area", |r| r.dilation_area),
-    ("depth", |r| r.depth),
-    ("mass_spilled", |r| r.mass_spilled),
-    ("weight", |r| r.weight),
-    ("force_factor", |r| r.force_factor),
-    ("face_friction_deg", |r| r.face_friction_deg),
-];
+/// The columns of `history.csv`, in order (the model's
+/// `StepRecord::COLUMNS`, which its finiteness check reads too).
+pub const HISTORY: [HistoryColumn; 20] = StepRecord::COLUMNS;
 
 /// Columns of `history.csv`, in order: the names of [`HISTORY`] joined by
 /// commas (at compile time).

@@ -233,7 +233,8 @@ impl StoppedJson {
     fn new(e: &StepError, depth: f64) -> Self {
         let (increment, u) = match *e {
             StepError::NoAdmissibleMechanism { step, u }
-            | StepError::NoMechanismBeforeWall { step, u, .. } => (step, u),
+            | StepError::NoMechanismBeforeWall { step, u, .. }
+            | StepError::NotFinite { step, u, .. } => (step, u),
             StepError::TravelReached { steps } => (steps + 1, f64::NAN),
         };
         StoppedJson {

@@ -18,7 +18,10 @@ pub use defaults::{
     VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
-pub use validate::{MAGNITUDE, MAX_MERGE_TOLERANCE, MAX_NODES, THINNEST_WIDTH};
+pub use validate::{
+    MAGNITUDE, MAX_MERGE_TOLERANCE, MAX_NODES, MAX_SAMPLES_PER_BAND, MAX_SAMPLES_PER_DEPTH,
+    MAX_STEPS, MAX_VERTICES, ROUND_OFF, THINNEST_WIDTH,
+};
 
 use serde::{Deserialize, Serialize};
 
@@ -196,14 +199,6 @@ impl Run {
         match &self.ground {
             Ground::Vertices(v) => v.spacing,
             Ground::Nodes => self.increment,
-        }
-    }
-
-    /// The key that sets `spacing`, and what its points are called.
-    pub fn spacing_key(&self) -> (&'static str, &'static str) {
-        match &self.ground {
-            Ground::Vertices(_) => ("run.vertex_spacing", "vertices"),
-            Ground::Nodes => ("run.increment", "nodes"),
         }
     }
 

@@ -17,6 +17,8 @@ use crate::vertices::cutting::Cutting;
 mod advance;
 mod driver;
 #[cfg(test)]
+mod finite;
+#[cfg(test)]
 mod node_grid_area;
 pub mod snapshot;
 
@@ -71,6 +73,10 @@ pub struct Simulation {
     done: usize,
     /// Weight of soil at the start, per blade for a blade of finite width.
     initial_mass: f64,
+    /// The error of an increment that left a number not finite
+    /// (`StepError::NotFinite`): its ground moved, so every later step and
+    /// landscape gives it again rather than go on from that state.
+    failed: Option<StepError>,
 }
 
 impl Simulation {
@@ -87,6 +93,7 @@ impl Simulation {
             ground,
             done: 0,
             initial_mass,
+            failed: None,
         })
     }
 
@@ -168,18 +175,31 @@ impl Simulation {
     /// the first stage's samples, `Cutting`). Fails as `step` would if no
     /// candidate is admissible.
     pub fn landscape(&mut self) -> Result<Vec<Candidate>, StepError> {
+        if let Some(e) = &self.failed {
+            return Err(e.clone());
+        }
         let (ground, at) = self.parts();
         ground.landscape(&at)
     }
 
     /// Advances the blade by one increment; after the case's travel,
-    /// `StepError::TravelReached`.
+    /// `StepError::TravelReached`. An increment whose record (and with it
+    /// the mass, the sum over the whole ground) holds a number that is not
+    /// finite is `StepError::NotFinite`, which every later step gives too:
+    /// no record with NaN or ∞ leaves the model (issue 50).
     pub fn step(&mut self) -> Result<StepRecord, StepError> {
+        if let Some(e) = &self.failed {
+            return Err(e.clone());
+        }
         if self.is_done() {
             return Err(StepError::TravelReached { steps: self.done });
         }
         let (ground, at) = self.parts();
         let record = ground.step(&at)?;
+        if let Some(e) = StepError::not_finite(&record) {
+            self.failed = Some(e.clone());
+            return Err(e);
+        }
         self.done += 1;
         Ok(record)
     }

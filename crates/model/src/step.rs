@@ -6,7 +6,7 @@ use std::fmt;
 
 /// What one increment produced. Forces and masses are per unit width, or
 /// per blade for a blade of finite width (`blade.width`). The fields are
-/// the columns of `history.csv`, in its order (soilcut-io's `HISTORY`
+/// the columns of `history.csv`, in its order (`StepRecord::COLUMNS`
 /// names them once for the files and the front ends).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepRecord {
@@ -63,6 +63,46 @@ pub struct StepRecord {
     pub face_friction_deg: f64,
 }
 
+/// A column of `history.csv`: its name and a record's value in it.
+pub type Column = (&'static str, fn(&StepRecord) -> f64);
+
+impl StepRecord {
+    /// The columns of `history.csv`, in order, named once (soilcut-io's
+    /// `HISTORY`, the C ABI's record and Python's `Step` take them from
+    /// here, and so does the finiteness check of `Simulation::step`; a
+    /// field becomes a column by one line here).
+    pub const COLUMNS: [Column; 20] = [
+        ("step", |r| r.step as f64),
+        ("u", |r| r.u),
+        ("u_over_d", |r| r.u_over_d),
+        ("force", |r| r.force),
+        ("force_norm", |r| r.force_norm),
+        ("force_h", |r| r.force_h),
+        ("force_v", |r| r.force_v),
+        ("beta_deg", |r| r.beta_deg),
+        ("x_emergence", |r| r.x_emergence),
+        ("mass", |r| r.mass),
+        ("y_emergence", |r| r.y_emergence),
+        ("friction_deg", |r| r.friction_deg),
+        ("slip", |r| r.slip),
+        ("dilation_deg", |r| r.dilation_deg),
+        ("dilation_area", |r| r.dilation_area),
+        ("depth", |r| r.depth),
+        ("mass_spilled", |r| r.mass_spilled),
+        ("weight", |r| r.weight),
+        ("force_factor", |r| r.force_factor),
+        ("face_friction_deg", |r| r.face_friction_deg),
+    ];
+
+    /// The first column whose value is not finite, and the value.
+    pub fn not_finite(&self) -> Option<(&'static str, f64)> {
+        Self::COLUMNS
+            .iter()
+            .map(|&(name, value)| (name, value(self)))
+            .find(|(_, v)| !v.is_finite())
+    }
+}
+
 /// P / W for the record, 0 where the block weighs nothing (a band through
 /// air at the face of a tip pulled up, or ground thinner than round-off):
 /// there is no weight for Eq. (1) to multiply, and a record holds no NaN.
@@ -93,6 +133,20 @@ pub enum StepError {
         /// `bin.length`, the wall's distance from the blade's start.
         length: f64,
     },
+    /// The increment left a number of its record not finite (NaN or
+    /// infinite): the run cannot go on from it. The record's mass sums
+    /// every piece's (or node's) weight, so a height, abscissa or unit
+    /// weight of the ground that stops being finite shows there.
+    NotFinite {
+        /// The increment, from 1.
+        step: usize,
+        /// Blade displacement at its start.
+        u: f64,
+        /// The column of `history.csv` that is not finite (the first).
+        quantity: &'static str,
+        /// Its value: NaN or ±∞.
+        value: f64,
+    },
     /// A step asked for after the case's travel has been reached: the
     /// caller's mistake, not the soil's (`advance_to` goes further).
     TravelReached {
@@ -111,6 +165,18 @@ impl StepError {
             None => StepError::NoAdmissibleMechanism { step, u },
         }
     }
+
+    /// The error of an increment whose `record` holds a number that is not
+    /// finite, if it does.
+    pub(crate) fn not_finite(record: &StepRecord) -> Option<Self> {
+        let (quantity, value) = record.not_finite()?;
+        Some(StepError::NotFinite {
+            step: record.step,
+            u: record.u,
+            quantity,
+            value,
+        })
+    }
 }
 
 impl fmt::Display for StepError {
@@ -123,6 +189,15 @@ impl fmt::Display for StepError {
             StepError::NoMechanismBeforeWall { step, u, length } => write!(
                 f,
                 "no admissible mechanism at increment {step} (u = {u}) emerges before the end wall at bin.length = {length}: shorten run.travel or lengthen the bin"
+            ),
+            StepError::NotFinite {
+                step,
+                u,
+                quantity,
+                value,
+            } => write!(
+                f,
+                "increment {step} (u = {u}) made {quantity} = {value}, not a finite number: the run stops there, keeping the increments before it (a defect of soilcut, not of the case: please report it with the case)"
             ),
             StepError::TravelReached { steps } => write!(
                 f,

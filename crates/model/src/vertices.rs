@@ -65,11 +65,20 @@ pub struct Vertices {
 impl Vertices {
     /// Flat ground y = 0 of fresh soil (ut = 0, γ `unit_weight`) from
     /// x = 0 to `length`, with vertices every `spacing` (the last piece
-    /// ends at `length` exactly), above the floor at −`depth`.
+    /// ends at `length` exactly), above the floor at −`depth`. No piece
+    /// has length 0: where `length` is a whole number of spacings to
+    /// round-off, length / spacing rounds above it (10 d over d/50 is
+    /// 500.00000000000006 at d = 5.549742791184853) and the last k h
+    /// lands on `length`; a piece of length 0 there, once the search grew
+    /// the ground past it, gave a band 0 / 0 for its unit weight (issue 50).
     pub fn flat(length: f64, spacing: f64, depth: f64, unit_weight: f64) -> Self {
         let pieces = (length / spacing).ceil().max(1.0) as usize;
-        let mut x: Vec<f64> = (0..pieces).map(|k| k as f64 * spacing).collect();
+        let mut x: Vec<f64> = (0..pieces)
+            .map(|k| k as f64 * spacing)
+            .take_while(|&x| x < length)
+            .collect();
         x.push(length);
+        let pieces = x.len() - 1;
         Vertices {
             y: vec![0.0; x.len()],
             x,
@@ -288,6 +297,26 @@ mod tests {
         let mut g = Vertices::flat(10.0, 0.5, 2.0, 1.5);
         g.y[2] = f64::NAN;
         assert!(g.defect().unwrap().contains("finite"));
+    }
+
+    #[test]
+    fn flat_ground_has_no_piece_of_length_zero() {
+        // Issue 50's case: 10 d over d/50, d = 5.549742791184853.
+        let d = 5.549742791184853;
+        let g = Vertices::flat(2.0 * d + 8.0 * d, d / 50.0, d, 1.0);
+        assert_eq!(g.pieces(), 500);
+        assert_eq!(g.defect(), None);
+        let mut draw = test_draws(50);
+        for _ in 0..2000 {
+            let spacing = 10f64.powf(4.0 * draw() - 2.0);
+            let length = (1.0 + (600.0 * draw()).floor()) * spacing;
+            let g = Vertices::flat(length, spacing, 1.0, 1.0);
+            assert!(
+                g.defect().is_none(),
+                "{length} over {spacing}: {:?}",
+                g.defect()
+            );
+        }
     }
 
     #[test]

@@ -6,7 +6,7 @@
 use crate::common;
 
 use common::original;
-use soilcut_model::case::MAX_NODES;
+use soilcut_model::case::MAX_VERTICES;
 use soilcut_model::{Case, Simulation, MAGNITUDE};
 
 const LEAST: f64 = MAGNITUDE[0];
@@ -124,23 +124,27 @@ fn a_ground_of_more_points_than_the_bound_is_refused_naming_its_spacing() {
         assert_eq!(e.key, key, "{e}");
         assert!(e.message.contains("too fine"), "{e}");
     };
+    // At an increment of the spacing: vertices closer than a quarter of
+    // it are refused on their own (`run.vertex_spacing`'s range).
     let mut vertices = crate::common::on_vertices(original(1.0, 250.0), 50.0);
-    vertices
-        .run
-        .vertices_mut()
-        .expect("on the vertex ground")
-        .spacing = 1e-12;
-    too_fine(&vertices, "run.vertex_spacing");
+    let reach = vertices.run.travel + 8.0 * vertices.blade.depth;
+    let mut at_spacing = |h: f64| {
+        vertices.run.increment = h;
+        vertices
+            .run
+            .vertices_mut()
+            .expect("on the vertex ground")
+            .spacing = h;
+        vertices.clone()
+    };
+    too_fine(
+        &at_spacing(reach / (2.0 * MAX_VERTICES)),
+        "run.vertex_spacing",
+    );
+    // Just inside the bound, the vertex ground is taken.
+    assert!(at_spacing(reach / (0.9 * MAX_VERTICES)).validate().is_ok());
     let mut nodes = original(1.0, 250.0);
     nodes.run.ground = soilcut_model::Ground::Nodes;
-    nodes.run.increment = 1e-7;
+    nodes.run.increment = 2e-6;
     too_fine(&nodes, "run.increment");
-    // Just inside the bound, the vertex ground is taken.
-    let reach = vertices.run.travel + 8.0 * vertices.blade.depth;
-    vertices
-        .run
-        .vertices_mut()
-        .expect("on the vertex ground")
-        .spacing = reach / (0.9 * MAX_NODES);
-    assert!(vertices.validate().is_ok());
 }

@@ -135,3 +135,30 @@ fn a_tip_pulled_up_at_once_keeps_the_face_at_the_tip() {
     assert!(stopped.is_err(), "{stopped:?}");
     assert!((sim.mass() / sim.initial_mass() - 1.0).abs() < 1e-12);
 }
+
+/// Issue 50's case: Fig. 5 with every length × 0.2775 (d = 5.5497…) over
+/// 2 d at the vertex ground's defaults. Its ground, 10 d over d/50, ended
+/// in a piece of length 0 (10 d / (d/50) rounds to 500.00000000000006);
+/// the search grew the ground past it, and at increment 64 a band emerging
+/// beyond it gave that piece 0 / 0 for its unit weight: the mass NaN and
+/// every force 0 from there, behind a run that finished.
+#[test]
+fn fig5_scaled_down_keeps_every_number_finite() {
+    let mut case = common::refined("fig5", 2.0, 350.0);
+    let d = 5.549742791184853;
+    let scale = d / case.blade.depth;
+    case.blade.depth = d;
+    case.soil.peak_shear *= scale;
+    case.soil.residual_shear = 1.1099485582369706;
+    case.soil.band_width = 15.0 * 0.1664922837355456;
+    let case = defaults_on_vertices(case, 2.0);
+    assert_eq!(case.run.travel, 11.099485582369706);
+    let mut sim = Simulation::new(&case).expect("a valid case");
+    let history = sim.run_to_end(|_| {}).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(history.len(), 700);
+    for r in &history {
+        assert_eq!(r.not_finite(), None, "{r:?}");
+        let drift = r.mass / sim.initial_mass() - 1.0;
+        assert!(drift.abs() < 1e-11, "step {}: drift {drift:e}", r.step);
+    }
+}

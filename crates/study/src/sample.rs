@@ -185,6 +185,23 @@ impl Sample {
     }
 }
 
+/// The most runs a sweep takes: each run's point and row are held until
+/// the sweep ends (a few hundred bytes a run, and a run takes at least a
+/// millisecond), so 1e5 runs are a day's work on one core; 1e8 (issue 50)
+/// took more memory than the machine had before the first run.
+pub const MAX_RUNS: usize = 100_000;
+
+/// The runs a sweep's `what` gives, if no more than [`MAX_RUNS`].
+fn within_runs(runs: usize, what: &str) -> Result<(), StudyError> {
+    if runs <= MAX_RUNS {
+        return Ok(());
+    }
+    Err(StudyError::Spec(format!(
+        "{what}: {runs} runs; a sweep takes at most {MAX_RUNS} (1e5 runs): split it or sample \
+         it (--sample lhs:N with N <= {MAX_RUNS})"
+    )))
+}
+
 /// The value of `lo:hi:n` number `i` (from 0): lo and hi exactly at the ends.
 fn grid_value(lo: f64, hi: f64, n: usize, i: usize) -> f64 {
     if n == 1 || i == 0 {
@@ -223,6 +240,18 @@ pub fn points(varies: &[Vary], sample: Sample) -> Result<Vec<Vec<toml::Value>>, 
 }
 
 fn grid(varies: &[Vary]) -> Result<Vec<Vec<toml::Value>>, StudyError> {
+    // Counted before any axis is made: an axis of 1e8 values alone took
+    // gigabytes.
+    let mut runs = 1usize;
+    for v in varies {
+        let n = match &v.values {
+            Values::Grid { n, .. } => *n,
+            Values::List(items) => items.len(),
+            Values::Range { .. } => 1,
+        };
+        runs = runs.saturating_mul(n);
+        within_runs(runs, &format!("--vary {}", v.key))?;
+    }
     let mut axes = Vec::with_capacity(varies.len());
     for v in varies {
         axes.push(match &v.values {
@@ -255,6 +284,7 @@ fn grid(varies: &[Vary]) -> Result<Vec<Vec<toml::Value>>, StudyError> {
 }
 
 fn lhs(varies: &[Vary], runs: usize, seed: u64) -> Result<Vec<Vec<toml::Value>>, StudyError> {
+    within_runs(runs, &format!("--sample lhs:{runs}"))?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut points = vec![Vec::with_capacity(varies.len()); runs];
     for v in varies {

@@ -10,6 +10,32 @@ use super::{
 /// guard: five f64 per node).
 pub const MAX_NODES: f64 = 5.0e7;
 
+/// Largest number of vertices the vertex ground may have at the start
+/// (memory guard: the model holds about 0.2 kB a vertex, `soilcut run`
+/// 40 bytes more a vertex for each of its up to 120 frames; measured on
+/// Fig. 5, 16 MB at 1e4 vertices, 83 MB at 1e5, 814 MB at 1e6 over 16
+/// increments, docs/guide/case-keys.md, "Limits").
+pub const MAX_VERTICES: f64 = 1.0e6;
+
+/// Most increments a run may take (memory guard: `history.csv` holds a
+/// record of 20 numbers, 160 bytes, an increment).
+pub const MAX_STEPS: f64 = 1.0e6;
+
+/// Most first-stage samples the vertex ground's search may take per
+/// length `blade.depth` of ground (memory guard: it scans at most 1000
+/// depths ahead of the face, 24 bytes a sample, so at most 240 MB).
+pub const MAX_SAMPLES_PER_DEPTH: f64 = 1.0e4;
+
+/// Most samples per band width, `run.samples_per_band` (8 by default).
+pub const MAX_SAMPLES_PER_BAND: f64 = 1000.0;
+
+/// The least increment, as a fraction of the ground's length at the start
+/// (run.travel + 8 deepest depths): a finer one is below the round-off of
+/// the ground's abscissae, where the face's advance and the search's
+/// narrowing to the increment lose their digits (at 1e-15 of 160 the
+/// golden-section search never ended, issue 50).
+pub const ROUND_OFF: f64 = 1e-9;
+
 /// The range of magnitudes of every length, unit weight and stress a case
 /// gives (a value that may be 0 is 0 or in this range), in the case's own
 /// units. Wide enough for any consistent units (nanometres to kilometres,
@@ -150,13 +176,62 @@ impl Case {
                 ),
             ));
         }
-        non_negative("run.samples_per_band", ground.samples_per_band)?;
+        let least = 0.25 * self.run.increment;
+        if h < least {
+            // Pieces shorter than v0/4 are joined by every increment
+            // (`Ground::merge_close`), and a face piece that short took
+            // the swept soil as a spike that avalanched over the whole
+            // ground ahead: vertices and memory grew with every increment.
+            return Err(CaseError::new(
+                "run.vertex_spacing",
+                format!(
+                    "must be >= run.increment / 4 = {least}: pieces shorter are joined by every increment (got {h})"
+                ),
+            ));
+        }
+        let samples = ground.samples_per_band;
+        non_negative("run.samples_per_band", samples)?;
+        if samples > MAX_SAMPLES_PER_BAND {
+            return Err(CaseError::new(
+                "run.samples_per_band",
+                format!("must be in [0, {MAX_SAMPLES_PER_BAND}] (got {samples})"),
+            ));
+        }
+        self.validate_samples_per_depth(samples)?;
         self.validate_time_scheme(ground)?;
         let tolerance = finite("run.merge_tolerance", ground.merge_tolerance)?;
         if !(0.0..=MAX_MERGE_TOLERANCE).contains(&tolerance) {
             return Err(CaseError::new(
                 "run.merge_tolerance",
                 format!("must be in [0, {MAX_MERGE_TOLERANCE}] (got {tolerance})"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The vertex ground's first-stage samples per length d of ground, at
+    /// most [`MAX_SAMPLES_PER_DEPTH`]: K d / dB for a band (K samples per
+    /// band width), d / v0 for the exhaustive search (K = 0, a sample
+    /// every increment), 64 for a slip line.
+    fn validate_samples_per_depth(&self, samples: f64) -> Result<(), CaseError> {
+        let (d, band, v0) = (self.blade.depth, self.soil.band_width, self.run.increment);
+        let most = MAX_SAMPLES_PER_DEPTH;
+        if samples == 0.0 && d / v0 > most {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "must be >= blade.depth / {most:e} = {} where run.samples_per_band = 0 samples the search every increment: at most {most:e} samples per depth (got {v0})",
+                    d / most
+                ),
+            ));
+        }
+        if samples > 0.0 && band > 0.0 && samples * d / band > most {
+            return Err(CaseError::new(
+                "soil.band_width",
+                format!(
+                    "must be >= run.samples_per_band x blade.depth / {most:e} = {}: the search takes at most {most:e} samples per depth, K d / dB (got {band}; or fewer run.samples_per_band)",
+                    samples * d / most
+                ),
             ));
         }
         Ok(())
@@ -367,7 +442,7 @@ impl Case {
         positive("run.travel", self.run.travel)?;
         // In `validate`'s order, so that a travel that breaks two rules
         // is refused by the same one.
-        if self.nodes_to_depth(deepest) > MAX_NODES {
+        if self.validate_extent(deepest).is_err() {
             return self.validate();
         }
         self.validate_bin()
@@ -443,13 +518,44 @@ impl Case {
         if let Ground::Vertices(ground) = &self.run.ground {
             self.validate_vertex_ground(ground)?;
         }
-        let nodes = self.initial_nodes();
-        if nodes > MAX_NODES {
-            let (key, points) = self.run.spacing_key();
+        self.validate_extent(self.deepest())
+    }
+
+    /// The rules of the ground's extent with the tip no deeper than
+    /// `deepest`, which a longer `run.travel` can break: the increment
+    /// above the round-off of the ground's abscissae ([`ROUND_OFF`]), the
+    /// points of the ground at the start ([`MAX_NODES`] nodes,
+    /// [`MAX_VERTICES`] vertices) and the increments ([`MAX_STEPS`]).
+    fn validate_extent(&self, deepest: f64) -> Result<(), CaseError> {
+        let (travel, v0) = (self.run.travel, self.run.increment);
+        let least = ROUND_OFF * (travel + INITIAL_REACH_DEPTHS * deepest);
+        if v0 < least {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "must be >= {ROUND_OFF:e} x (run.travel + {INITIAL_REACH_DEPTHS} x the deepest tip depth) = {least:e}, the round-off of the ground's abscissae (got {v0:e})"
+                ),
+            ));
+        }
+        let nodes = self.nodes_to_depth(deepest);
+        let (key, points, most) = match self.run.ground {
+            Ground::Vertices(_) => ("run.vertex_spacing", "vertices", MAX_VERTICES),
+            Ground::Nodes => ("run.increment", "nodes", MAX_NODES),
+        };
+        if nodes > most {
             return Err(CaseError::new(
                 key,
                 format!(
-                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / {key} must be <= {MAX_NODES:e} {points} (got {nodes:.3e})"
+                    "too fine: (run.travel + {INITIAL_REACH_DEPTHS} blade.depth) / {key} must be <= {most:e} {points} (got {nodes:.3e})"
+                ),
+            ));
+        }
+        let steps = travel / v0;
+        if steps > MAX_STEPS {
+            return Err(CaseError::new(
+                "run.increment",
+                format!(
+                    "too fine: run.travel / run.increment must be <= {MAX_STEPS:e} increments (got {steps:.3e}); a coarser increment or a shorter run.travel"
                 ),
             ));
         }

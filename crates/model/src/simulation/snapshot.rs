@@ -168,6 +168,7 @@ impl Simulation {
             ground,
             done: b.done,
             initial_mass,
+            failed: None,
         })
     }
 }

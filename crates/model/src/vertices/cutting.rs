@@ -129,6 +129,7 @@ impl Cutting {
         let u = self.ground.x[0];
         let band_width = c.soil.band_width;
         let (tip, climb) = self.tip(c);
+        let far = u + MAX_REACH_DEPTHS * d;
         Scan {
             laws: at.laws,
             loads: Loads::at_face(c, &self.rake, self.ground.y[0] + tip),
@@ -142,8 +143,11 @@ impl Cutting {
             advance: c.run.increment,
             snap: 0.5 * self.keys.spacing,
             grow: GROW_DEPTHS * d,
-            // The ground never grows past the end wall.
-            reach: c.bin.length.unwrap_or(u + MAX_REACH_DEPTHS * d),
+            // The ground never grows past the end wall, nor past
+            // MAX_REACH_DEPTHS ahead of the face: the search's loop over
+            // the pieces ends (a bin of 1e20 before a blade of 1 grew
+            // pieces of 4 d without end where no band was admissible).
+            reach: c.bin.length.map_or(far, |wall| wall.min(far)),
             rake: self.rake,
             crescents: {
                 let spacing = self.keys.spacing;

@@ -163,15 +163,17 @@ impl VertexSearch {
         let stride = if observer.is_some() { 1 } else { LEAD };
         let mut best: Option<Pick> = None;
         let mut k = 0;
-        loop {
-            // Every piece is scanned, the last one's too where the ground
-            // ends at `scan.reach` (the end wall): a band emerges before it.
-            if k == ground.pieces() {
-                break;
-            }
+        // Every piece is scanned, the last one's too where the ground ends
+        // at `scan.reach` (the end wall): a band emerges before it. The
+        // ground grows by `scan.grow` up to `scan.reach`, so the pieces
+        // scanned are bounded: the ground's and (reach − end) / grow more.
+        while k < ground.pieces() {
             let end = ground.x[ground.pieces()];
-            if k + 1 == ground.pieces() && end < scan.reach {
-                ground.extend_flat(scan.grow.min(scan.reach - end));
+            // A piece of no length to round-off (reach within an ulp of
+            // the end) is not appended: its band gave 0 / 0.
+            let grow = scan.grow.min(scan.reach - end);
+            if k + 1 == ground.pieces() && end + grow > end {
+                ground.extend_flat(grow);
             }
             self.push_row(ground, scan, k);
             if self.beyond_reach(ground, scan, k, best.as_ref()) {
@@ -289,7 +291,14 @@ impl VertexSearch {
         let (xa, xb) = (ground.x[k], ground.x[k + 1]);
         if let Some(spacing) = far_spacing(scan, (k, self.rows[k].slope)) {
             let mut x = self.next_sample.max(xa);
-            while x < xb {
+            // Bounded by the samples the piece holds, two over for the
+            // sums' round-off: a spacing below the round-off of x (which
+            // validation refuses) would not advance it.
+            let most = ((xb - x) / spacing).ceil() as usize + 2;
+            for _ in 0..most {
+                if x >= xb {
+                    break;
+                }
                 self.push_sample(ground, scan, (k, x, stride), best, observer);
                 x += spacing;
             }
@@ -593,7 +602,16 @@ impl VertexSearch {
         let mut a = hi - INVERSE_PHI * (hi - lo);
         let mut b = lo + INVERSE_PHI * (hi - lo);
         let (mut pa, mut pb) = (at(a), at(b));
-        while hi - lo > scan.resolution {
+        // The bracket shrinks by 1/φ a step: n = log_φ(width / resolution)
+        // steps narrow it to the resolution, four over for round-off;
+        // where the resolution is below the round-off of x the bracket
+        // stops shrinking, and the search ends there (it hung, issue 50).
+        let steps = ((hi - lo) / scan.resolution).ln() / INVERSE_PHI.recip().ln();
+        let most = steps.ceil().max(0.0) as usize + 4;
+        for _ in 0..most {
+            if hi - lo <= scan.resolution {
+                break;
+            }
             if force(&pa) <= force(&pb) {
                 (hi, b, pb) = (b, a, pa);
                 a = hi - INVERSE_PHI * (hi - lo);
