@@ -87,6 +87,23 @@ struct Row {
 }
 
 /// The search's reusable scratch.
+/// The line of a candidate band from the tip to its emergence point.
+#[derive(Clone, Copy, Debug)]
+struct Emergence {
+    /// y of the emergence point.
+    y: f64,
+    /// x − x_0: the emergence point's distance from the face.
+    run: f64,
+    /// tan β in the ground's coordinates (sheared on a raked blade).
+    grid: f64,
+    /// tan β physical.
+    t: f64,
+    /// The slip line's length.
+    length: f64,
+    /// The block's weight per unit width (≥ 0).
+    weight: f64,
+}
+
 #[derive(Clone, Debug, Default)]
 pub(crate) struct VertexSearch {
     rows: Vec<Row>,
@@ -399,15 +416,9 @@ impl VertexSearch {
         pick.force
     }
 
-    /// The candidate emerging at x on piece k (M49; the prefix sums must
-    /// reach row k + 1), if admissible and able to come under `bar`.
-    fn evaluate(
-        &mut self,
-        ground: &Vertices,
-        scan: &Scan,
-        (k, x): (usize, f64),
-        bar: f64,
-    ) -> Option<Pick> {
+    /// The band's line from the tip to x on piece k, if admissible (M3,
+    /// M34): its geometry and the block's weight from the prefix sums.
+    fn emergence(&self, ground: &Vertices, scan: &Scan, (k, x): (usize, f64)) -> Option<Emergence> {
         let (x0, d) = (ground.x[0], scan.depth);
         let row = self.rows[k];
         let (xa, ya) = (ground.x[k], ground.y[k]);
@@ -440,6 +451,33 @@ impl VertexSearch {
         // ≥ 0: a band through air at the face (`air_at_face`) weighs 0, not
         // its round-off.
         let weight = (sum_a - grid * sum_b + air_at_face(ground, (k, x, y), (d, grid))).max(0.0);
+        Some(Emergence {
+            y,
+            run,
+            grid,
+            t,
+            length,
+            weight,
+        })
+    }
+
+    /// The candidate emerging at x on piece k (M49; the prefix sums must
+    /// reach row k + 1), if admissible and able to come under `bar`.
+    fn evaluate(
+        &mut self,
+        ground: &Vertices,
+        scan: &Scan,
+        (k, x): (usize, f64),
+        bar: f64,
+    ) -> Option<Pick> {
+        let Emergence {
+            y,
+            run,
+            grid,
+            t,
+            length,
+            weight,
+        } = self.emergence(ground, scan, (k, x))?;
         // No band here can come within the slack of the best: P ≥ W f_min.
         let (_, lower) = self.least.expect("a piece scanned");
         let bound = scan.bound_weight(weight, run);
