@@ -27,7 +27,18 @@ from ._case import Case
 from ._errors import AccuracyWarning, CaseError, CaseFormWarning, SnapshotError, StepError
 from ._run import Ensemble, Frame, RunResult, run
 from ._soilcut import Simulation, Step, __version__
-from ._study import Bounds, FitResult, Landscape, analytic, bounds, fit, landscape, sweep
+from ._study import (
+    Bounds,
+    FitResult,
+    Landscape,
+    LandscapeMap,
+    analytic,
+    bounds,
+    fit,
+    landscape,
+    landscape_map,
+    sweep,
+)
 
 __all__ = [
     "AccuracyWarning",
@@ -49,6 +60,8 @@ __all__ = [
     "bounds",
     "fit",
     "landscape",
+    "LandscapeMap",
+    "landscape_map",
     "run",
     "sweep",
 ]

@@ -7,7 +7,6 @@ from collections.abc import Iterable, Mapping
 from typing import Any, Union
 
 from . import _soilcut
-from ._errors import CaseError
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -62,12 +61,7 @@ class Case:
             raise TypeError(
                 f"Case.from_file takes a path (str or os.PathLike), not {type(path).__name__}"
             )
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
-        try:
-            return cls(text)
-        except CaseError as e:
-            raise CaseError(f"{os.fspath(path)}: {e}", e.key) from None
+        return cls._from_native(_soilcut.NativeCase.from_file(path))
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any]) -> Case:

@@ -16,6 +16,10 @@ from ._case import Case
 
 __version__: str
 FIT_EVALUATIONS: int
+BOUNDS_MESH: int
+BOUNDS_FLOOR: str
+BOUNDS_STRENGTH: str
+BOUNDS_FIELD: str
 """Default runs of a fit's global search (``soilcut fit --evaluations``)."""
 FIT_POLISH_ITERATIONS: int
 """Default Nelder-Mead iterations of a fit's polish (``--polish``)."""
@@ -211,6 +215,8 @@ class NativeCase:
     @staticmethod
     def from_toml(text: str) -> NativeCase: ...
     @staticmethod
+    def from_file(path: str | os.PathLike[str]) -> NativeCase: ...
+    @staticmethod
     def from_dict(d: dict[str, Any]) -> NativeCase: ...
     @staticmethod
     def of(case: CaseLike) -> NativeCase: ...
@@ -276,11 +282,13 @@ def fit(
     jobs: int,
 ) -> dict[str, Any]: ...
 def landscape(case: CaseLike, at: float) -> tuple[float, dict[str, np.ndarray]]: ...
+def perturbation(case: CaseLike, k: float) -> tuple[str, float]: ...
+def landscape_map(case: CaseLike, every: float) -> tuple[dict[str, np.ndarray], int]: ...
 def bounds(
     case: CaseLike,
     at: float,
-    mesh: int = 8,
-    floor: str = "rigid",
-    strength: str = "associated",
-    field: str = "columns",
+    mesh: int = ...,
+    floor: str = ...,
+    strength: str = ...,
+    field: str = ...,
 ) -> tuple[dict[str, np.ndarray], str, str]: ...

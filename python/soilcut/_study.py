@@ -272,6 +272,29 @@ def landscape(case: Case, at: float) -> Landscape:
     return Landscape(u, candidates)
 
 
+class LandscapeMap(NamedTuple):
+    """Landscapes through the run, binned by distance ahead of the tip
+    (``soilcut landscape --every``)."""
+
+    columns: dict[str, np.ndarray]
+    """The columns of ``landscape_map.csv``, one row per landscape and
+    distance bin of 0.05 d: ``u_over_d`` of the landscape,
+    ``distance_over_d`` (the bin's start ahead of the tip) and
+    ``force_over_least`` (the least P / P* of the bin's candidates)."""
+    far_ties: int
+    """How many landscapes hold a band more than 1 d from the least whose
+    force comes within 1 % of it (the band jumps of docs/model.md §12)."""
+
+
+def landscape_map(case: Case, every: float) -> LandscapeMap:
+    """The landscape at u/d = 0, ``every``, 2 ``every``, … (above 0, at most
+    run.travel / blade.depth; each at the first increment at or beyond),
+    each binned by distance ahead of the tip, as ``soilcut landscape
+    --every`` takes them."""
+    columns, far = _soilcut.landscape_map(native_of(case), float(every))
+    return LandscapeMap(columns, far)
+
+
 class Bounds(NamedTuple):
     """Rigorous limit-analysis bounds on the ground as it stands at one
     instant, beside soilcut's force there (``soilcut bounds --at``)."""
@@ -301,10 +324,10 @@ def bounds(
     case: Case,
     at: float,
     *,
-    mesh: int = 8,
-    floor: str = "rigid",
-    strength: str = "associated",
-    field: str = "columns",
+    mesh: int = _soilcut.BOUNDS_MESH,
+    floor: str = _soilcut.BOUNDS_FLOOR,
+    strength: str = _soilcut.BOUNDS_STRENGTH,
+    field: str = _soilcut.BOUNDS_FIELD,
 ) -> Bounds:
     """Lower and upper bounds (finite-element limit analysis) on the
     horizontal force the ground as it stands before the increment at u/d =

@@ -27,7 +27,8 @@ except ImportError as error:  # the package stays usable without it
         "soilcut.gym needs gymnasium, an optional dependency: pip install gymnasium"
     ) from error
 
-from ._case import Case, PathLike, case_of
+from . import _soilcut
+from ._case import Case, PathLike, case_of, native_of
 from ._errors import StepError
 from ._soilcut import Simulation, Step
 
@@ -213,7 +214,6 @@ class CuttingEnv(gymnasium.Env):
         self.overload_penalty = overload_penalty
         self.failure_penalty = failure_penalty
         self.offsets = np.asarray(offsets, dtype=float)
-        self._perturbation = _perturbation(resolved)
 
         self.action_space = spaces.Box(-max_rate, max_rate, shape=(1,), dtype=np.float32)
         n = len(self.offsets)
@@ -242,7 +242,7 @@ class CuttingEnv(gymnasium.Env):
         # steer the tip from there.
         changes: dict[str, Any] = {"run.travel": self.travel, "blade.depth_path": [[0.0, depth]]}
         if options.get("perturb", True):
-            key, value = self._perturbation(k)
+            key, value = _soilcut.perturbation(native_of(self.case), float(k))
             changes[key] = value
         self.sim = Simulation(self.case.update(changes))
         self._last = None
@@ -323,18 +323,6 @@ class CuttingEnv(gymnasium.Env):
         obs = np.concatenate([values, heights]).astype(np.float32)
         # float32 rounding may put a value on a bound a hair outside it.
         return np.clip(obs, self.observation_space.low, self.observation_space.high)
-
-
-def _perturbation(resolved: Case):
-    """The ensembles' perturbation of ``resolved`` (docs/model.md §12.1) as
-    a function of k: (key, value)."""
-    if resolved.model == "original":
-        base = float(resolved["blade.wall_friction"])
-        return lambda k: ("blade.wall_friction", base + 0.01 * k)
-    soil = resolved.to_dict()["soil"]
-    key = "soil.d50" if "band_width_d50" in soil else "soil.band_width"
-    base = float(resolved[key])
-    return lambda k: (key, base * (1.0 + 0.001 * k))
 
 
 gymnasium.register(id=ENV_ID, entry_point=CuttingEnv)

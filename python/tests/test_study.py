@@ -277,6 +277,23 @@ def test_landscape_is_the_cli_landscape(cli, tmp_path, refined):
         soilcut.landscape(refined, 2.0)
 
 
+def test_landscape_map_is_the_cli_map(cli, tmp_path, refined):
+    taken = soilcut.landscape_map(refined, 0.25)
+    out = tmp_path / "map"
+    run_cli(cli, "landscape", str(REFINED), "--every", "0.25", "--out", str(out))
+    theirs = soilcut._soilcut.csv_columns(
+        "landscape_map.csv", (out / "landscape_map.csv").read_text()
+    )
+    assert list(taken.columns) == list(theirs)
+    for name, column in theirs.items():
+        assert taken.columns[name].tolist() == column.tolist(), name
+    # u/d = 0, 0.25, 0.5, 0.75 and 1 (the end of the travel).
+    assert sorted(set(taken.columns["u_over_d"].tolist())) == [0.0, 0.25, 0.5, 0.75, 1.0]
+    assert 0 <= taken.far_ties <= 5
+    with pytest.raises(ValueError, match="every must be"):
+        soilcut.landscape_map(refined, 0.0)
+
+
 def test_bounds_are_the_cli_bounds(cli, tmp_path, refined):
     taken = soilcut.bounds(refined, 0, mesh=3)
     out = tmp_path / "b"

@@ -43,6 +43,33 @@ pub struct Options {
     pub field: Field,
 }
 
+/// The mesh parameter N the bounds take unless told (`soilcut bounds
+/// --mesh`, Python's `mesh`).
+pub const DEFAULT_MESH: usize = 8;
+
+/// The options every front end starts from: mesh N = [`DEFAULT_MESH`],
+/// soilcut's rigid floor, the associated strength, each column its own φ.
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            mesh: DEFAULT_MESH,
+            floor: Floor::default(),
+            strength: Strength::default(),
+            field: Field::default(),
+        }
+    }
+}
+
+impl Floor {
+    /// The option's word (`--floor`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Floor::Rigid => "rigid",
+            Floor::Soil => "soil",
+        }
+    }
+}
+
 /// The bracket at one instant and soilcut's force there.
 #[derive(Clone, Debug)]
 pub struct Instant {

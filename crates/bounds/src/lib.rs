@@ -45,7 +45,7 @@ pub mod upper;
 
 pub use bracket::{bracket, Bracket, MAX_MESH};
 pub use conic::SolveError;
-pub use instant::{Floor, Instant, InstantError, Options};
+pub use instant::{Floor, Instant, InstantError, Options, DEFAULT_MESH};
 pub use lower::LowerBound;
 pub use mesh::{Mesh, Side};
 pub use problem::{Domain, Face, Ground, InputError, Problem, Soil, Steep};

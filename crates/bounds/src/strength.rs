@@ -25,6 +25,14 @@ pub enum Strength {
 }
 
 impl Strength {
+    /// The option's word (`--strength`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Strength::Associated => "associated",
+            Strength::Davis => "davis",
+        }
+    }
+
     /// The soil the bounds use for a soil of dilation `dilation_deg`.
     pub fn apply(self, soil: Soil, dilation_deg: f64) -> Soil {
         match self {
@@ -46,6 +54,16 @@ pub enum Field {
     /// of the two pieces' slopes, so that no surface is steeper than its
     /// soil's friction angle (beyond the paper; docs/model.md §18.5).
     Slope,
+}
+
+impl Field {
+    /// The option's word (`--field`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Field::Columns => "columns",
+            Field::Slope => "slope",
+        }
+    }
 }
 
 /// How much stronger than the slope it stands at [`Field::Slope`] makes a

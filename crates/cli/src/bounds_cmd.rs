@@ -29,22 +29,22 @@ pub struct BoundsArgs {
     #[arg(
         long,
         value_name = "N",
-        default_value_t = 8,
+        default_value_t = Options::default().mesh as i64,
         allow_negative_numbers = true
     )]
     mesh: i64,
     /// Below the tip level: soilcut's rigid floor, or deformable soil under
     /// the tip and the trench.
-    #[arg(long, value_name = "FLOOR", default_value = "rigid", value_parser = ["rigid", "soil"])]
+    #[arg(long, value_name = "FLOOR", default_value = Options::default().floor.name(), value_parser = ["rigid", "soil"])]
     floor: String,
     /// The soil's strength in the bounds: its own with associated flow, or
     /// Davis's reduced strength from its dilation angle.
-    #[arg(long, value_name = "STRENGTH", default_value = "associated", value_parser = ["associated", "davis"])]
+    #[arg(long, value_name = "STRENGTH", default_value = Options::default().strength.name(), value_parser = ["associated", "davis"])]
     strength: String,
     /// The strength field: each column its own node's friction angle, or
     /// each column at least as strong as the slope of the surface it stands
     /// at (beyond the paper).
-    #[arg(long, value_name = "FIELD", default_value = "columns", value_parser = ["columns", "slope"])]
+    #[arg(long, value_name = "FIELD", default_value = Options::default().field.name(), value_parser = ["columns", "slope"])]
     field: String,
     /// Print the results as JSON (bounds.json) instead of a table.
     #[arg(long)]

@@ -3,9 +3,12 @@
 //! through the run.
 
 use crate::{load, CaseOutput, Failure, Moment};
-use soilcut_io::{landscape_at, landscape_csv, landscape_map_csv, LoadedCase, OutputError};
-use soilcut_model::landscape::{least_by_distance, near_minimum};
-use soilcut_model::{Candidate, Simulation, Until};
+use soilcut_io::{
+    far_ties, landscape_at, landscape_csv, landscape_map, landscape_map_csv, LoadedCase,
+    OutputError, MAP_BIN,
+};
+use soilcut_model::landscape::near_minimum;
+use soilcut_model::{Candidate, Simulation};
 use soilcut_plot::{draw_landscape, draw_landscape_map, Landscape, LandscapeMap, PlotError};
 use std::path::Path;
 
@@ -16,9 +19,6 @@ Examples:
   soilcut landscape cases/paper/table1-hs.toml --every 0.05
       writes out/table1-hs-landscape/{landscape_map.csv,landscape_map.png,case.resolved.toml}
   soilcut landscape cases/paper/fig5.toml --at 2.5 --set run.increment=0.02 --out out/fig5-fine-ls";
-
-/// Width of the distance bins of a map, in d.
-const MAP_BIN: f64 = 0.05;
 
 #[derive(clap::Args)]
 pub struct LandscapeArgs {
@@ -116,17 +116,8 @@ fn map(
     path: &Path,
 ) -> Result<Taken, Failure> {
     let case = &loaded.case;
-    let d = case.blade.depth;
-    let mut columns: Vec<(f64, Vec<(f64, f64)>)> = Vec::new();
-    for at in sim.samples_every(every, case.steps()) {
-        sim.drive(Until::Increments(at), &mut ())
-            .map_err(|e| Failure::input(path, e))?;
-        let u = sim.blade_position();
-        let candidates = sim.landscape().map_err(|e| Failure::input(path, e))?;
-        let bins = least_by_distance(&candidates, u, MAP_BIN * d);
-        columns.push((u / d, bins.iter().map(|&(s, r)| (s / d, r)).collect()));
-    }
-    let far_ties = columns.iter().filter(|c| has_far_tie(&c.1)).count();
+    let columns = landscape_map(sim, every).map_err(|e| Failure::input(path, e))?;
+    let far_ties = far_ties(&columns);
     let summary = format!(
         "{} landscapes from u/d = 0 to {:.3}; in {far_ties} of them a band more than 1 d from the least came within 1 % of it",
         columns.len(),
@@ -149,16 +140,6 @@ fn map(
         picture: Picture::Map(picture),
         summary,
     })
-}
-
-/// Whether a bin (start in d) more than 1 d from the least one comes
-/// within 1 % of it.
-fn has_far_tie(bins: &[(f64, f64)]) -> bool {
-    let Some(least) = bins.iter().find(|b| b.1 == 1.0) else {
-        return false;
-    };
-    bins.iter()
-        .any(|b| b.1 <= 1.01 && (b.0 - least.0).abs() > 1.0)
 }
 
 /// One line: the least candidate and how many others come near it.

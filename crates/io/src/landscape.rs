@@ -1,7 +1,7 @@
 //! `landscape.csv`: every candidate mechanism of one increment.
 
 use crate::columns::Columns;
-use crate::csv_text::CsvText;
+use soilcut_model::landscape::least_by_distance;
 use soilcut_model::{Candidate, Case, Simulation, StepError, Until};
 
 /// Columns of `landscape.csv`, in order.
@@ -76,14 +76,57 @@ pub fn landscape_columns(candidates: &[Candidate], u: f64, depth: f64) -> Column
 /// Columns of `landscape_map.csv`, in order.
 pub const LANDSCAPE_MAP_HEADER: &str = "u_over_d,distance_over_d,force_over_least";
 
-/// One row per landscape and distance bin: u/d of the landscape, the bin's
-/// start / d, and the least P / P* of its candidates.
-pub fn landscape_map_csv(columns: &[(f64, Vec<(f64, f64)>)]) -> String {
-    let mut out = CsvText::new(LANDSCAPE_MAP_HEADER);
+/// Width of the landscape map's distance bins, in blade depths.
+pub const MAP_BIN: f64 = 0.05;
+
+/// One landscape of the map: its u/d and, for each bin of `MAP_BIN` d
+/// ahead of the tip that holds a candidate, (the bin's start / d, the
+/// least P / P* of its candidates).
+pub type MapColumn = (f64, Vec<(f64, f64)>);
+
+/// The landscapes of `soilcut landscape --every`: at u/d = 0, `every`,
+/// 2 `every`, … (each at the first increment at or beyond, through the
+/// end of the travel), binned by distance ahead of the tip.
+pub fn landscape_map(sim: &mut Simulation, every: f64) -> Result<Vec<MapColumn>, StepError> {
+    let d = sim.case().blade.depth;
+    let mut columns: Vec<MapColumn> = Vec::new();
+    for at in sim.samples_every(every, sim.case().steps()) {
+        sim.drive(Until::Increments(at), &mut ())?;
+        let u = sim.blade_position();
+        let candidates = sim.landscape()?;
+        let bins = least_by_distance(&candidates, u, MAP_BIN * d);
+        columns.push((u / d, bins.iter().map(|&(s, r)| (s / d, r)).collect()));
+    }
+    Ok(columns)
+}
+
+/// How many landscapes of the map hold a far tie: a bin more than 1 d from
+/// the least one whose least force comes within 1 % of it, the band
+/// jumps of docs/model.md §12.
+pub fn far_ties(columns: &[MapColumn]) -> usize {
+    let far = |bins: &[(f64, f64)]| {
+        bins.iter().find(|b| b.1 == 1.0).is_some_and(|least| {
+            bins.iter()
+                .any(|b| b.1 <= 1.01 && (b.0 - least.0).abs() > 1.0)
+        })
+    };
+    columns.iter().filter(|c| far(&c.1)).count()
+}
+
+/// The numbers of `landscape_map.csv` (columns [`LANDSCAPE_MAP_HEADER`]):
+/// one row per landscape and distance bin.
+pub fn landscape_map_columns(columns: &[MapColumn]) -> Columns {
+    let mut out = Columns::new(LANDSCAPE_MAP_HEADER);
     for (u, bins) in columns {
-        for (start, ratio) in bins {
-            out.row(&[u, start, ratio]);
+        for &(start, ratio) in bins {
+            out.push(&[*u, start, ratio]);
         }
     }
-    out.finish()
+    out
+}
+
+/// `landscape_map.csv`: one row per landscape and distance bin, u/d of the
+/// landscape, the bin's start / d, and the least P / P* of its candidates.
+pub fn landscape_map_csv(columns: &[MapColumn]) -> String {
+    landscape_map_columns(columns).csv()
 }

@@ -58,8 +58,9 @@ pub use finished::{
 };
 pub use history::{history_columns, history_value, HistoryColumn, HISTORY, HISTORY_HEADER};
 pub use landscape::{
-    check_landscape_at, check_landscape_every, landscape_at, landscape_columns, landscape_csv,
-    landscape_map_csv, LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER,
+    check_landscape_at, check_landscape_every, far_ties, landscape_at, landscape_columns,
+    landscape_csv, landscape_map, landscape_map_columns, landscape_map_csv, MapColumn,
+    LANDSCAPE_HEADER, LANDSCAPE_MAP_HEADER, MAP_BIN,
 };
 pub use measured::{
     parse_measured, parse_measured_bytes, parse_measured_curve, read_measured, read_measured_curve,

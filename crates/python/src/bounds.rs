@@ -8,7 +8,7 @@ use crate::errors::{case_message, detached_map, step_error};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_bounds::{instant, InstantError, SolveError};
+use soilcut_bounds::{instant, InstantError, Options, SolveError};
 use soilcut_io::{bounds_columns, bounds_options, check_landscape_at};
 
 fn instant_error(py: Python<'_>, e: InstantError) -> PyErr {
@@ -28,7 +28,14 @@ fn status<T>(bound: &Result<T, SolveError>) -> String {
 /// `bounds.csv`'s columns (one row) of the instant at u/d = `at`, and the
 /// solver's status of the lower and the upper bound.
 #[pyfunction]
-#[pyo3(signature = (case, at, mesh = 8, floor = "rigid", strength = "associated", field = "columns"))]
+#[pyo3(signature = (
+    case,
+    at,
+    mesh = Options::default().mesh as i64,
+    floor = Options::default().floor.name(),
+    strength = Options::default().strength.name(),
+    field = Options::default().field.name(),
+))]
 pub fn bounds<'py>(
     py: Python<'py>,
     case: &Bound<'py, PyAny>,

@@ -3,12 +3,14 @@
 //! every other call of the extension takes this handle, not text.
 
 use crate::convert::{dict, from_toml, table, to_toml};
-use crate::errors::{case_error, case_message};
+use crate::errors::{case_error, case_error_in, case_message};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use soilcut_io::{load_case_table, parse_case_table, LoadedCase, Override};
+use soilcut_io::{
+    load_case_table, parse_case_bytes, parse_case_table, InputError, LoadedCase, Override,
+};
 use soilcut_study::BaseCase;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// A validated case: the keys given (as a table and as text) and the case
 /// they make, every default filled in.
@@ -71,12 +73,7 @@ impl Case {
             Err(_) => case.hasattr("__fspath__")?,
         };
         if path {
-            // Read as `Case.from_file` reads it: one rule for files.
-            let read = py
-                .import("soilcut")?
-                .getattr("Case")?
-                .call_method1("from_file", (case,))?;
-            return Ok(read.getattr("_native")?.cast_into::<Case>()?);
+            return Bound::new(py, Case::from_file(py, case.extract()?)?);
         }
         match case.getattr("_native") {
             Ok(native) => Ok(native.cast_into::<Case>()?),
@@ -111,6 +108,28 @@ impl Case {
     fn from_toml(py: Python<'_>, text: &str) -> PyResult<Case> {
         let table = parse_case_table(text).map_err(|e| case_error(py, &e))?;
         Case::of_table(py, text.to_string(), table)
+    }
+
+    /// Reads and validates a case file (TOML, UTF-8): `OSError` (its
+    /// subclass for the cause, `FileNotFoundError` …) if it cannot be read,
+    /// `soilcut.CaseError` with the path before its message if it is not a
+    /// valid case.
+    #[staticmethod]
+    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Case> {
+        let bytes = std::fs::read(&path)?;
+        let named = |e: InputError| case_error_in(py, &path, &e);
+        let text = match String::from_utf8(bytes) {
+            Ok(text) => text,
+            Err(e) => {
+                return Err(match parse_case_bytes(e.as_bytes(), &[]) {
+                    Err(e) => named(e),
+                    Ok(_) => case_message(py, format!("{}: not UTF-8", path.display())),
+                })
+            }
+        };
+        let table = parse_case_table(&text).map_err(named)?;
+        let loaded = load_case_table(table.clone(), &[]).map_err(named)?;
+        Ok(Case::of_loaded(text, table, loaded))
     }
 
     /// A case from nested dicts shaped like the case file, validated.

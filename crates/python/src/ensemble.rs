@@ -9,7 +9,7 @@ use crate::run::{output_error, RunRecords};
 use crate::study::study_error;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_study::ensemble::{member_folder, members_of, Ensemble, EnsembleResult};
+use soilcut_study::ensemble::{member_folder, members_of, Ensemble, EnsembleResult, Perturbation};
 use soilcut_study::no_progress;
 use std::path::PathBuf;
 
@@ -55,6 +55,17 @@ impl EnsembleRun {
 
 /// Runs the ensemble of `members` members of `case` on `jobs` threads,
 /// without the interpreter.
+/// The ensembles' perturbation of `case` (docs/model.md §12.1) at a real
+/// k: `(key, value)`, the key the ensembles perturb and its value at k.
+#[pyfunction]
+pub fn perturbation(py: Python<'_>, case: &Bound<'_, PyAny>, k: f64) -> PyResult<(String, f64)> {
+    let native = Case::extract(case)?;
+    let loaded = &native.get().loaded;
+    let p = Perturbation::of(loaded).map_err(|e| study_error(py, e))?;
+    let value = p.value_at(k);
+    Ok((p.key, value))
+}
+
 #[pyfunction]
 pub fn ensemble(
     py: Python<'_>,

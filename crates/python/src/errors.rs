@@ -9,6 +9,7 @@ use soilcut_io::InputError;
 use soilcut_model::{AdvanceError, StepError, StepRecord};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
 
 /// An instance of the package's exception `class`: `class(message, key)`.
 fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> PyErr {
@@ -49,6 +50,16 @@ pub fn case_error(py: Python<'_>, e: &InputError) -> PyErr {
         _ => None,
     };
     raise(py, "CaseError", e.to_string(), key)
+}
+
+/// `soilcut.CaseError` of the case file at `path`: its message starts
+/// with the path.
+pub fn case_error_in(py: Python<'_>, path: &Path, e: &InputError) -> PyErr {
+    let key = match e {
+        InputError::Key(k) => Some(k.key.clone()),
+        _ => None,
+    };
+    raise(py, "CaseError", format!("{}: {e}", path.display()), key)
 }
 
 /// `soilcut.CaseError` from a message (errors the study crate reports as text).

@@ -26,6 +26,12 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
         soilcut_study::fit::POLISH_ITERATIONS,
     )?;
     m.add("FIT_PROFILE_GRID", soilcut_study::fit::PROFILE_GRID)?;
+    // The bounds' default options, the library's (as `soilcut bounds`'s).
+    let bounds = soilcut_bounds::instant::Options::default();
+    m.add("BOUNDS_MESH", bounds.mesh)?;
+    m.add("BOUNDS_FLOOR", bounds.floor.name())?;
+    m.add("BOUNDS_STRENGTH", bounds.strength.name())?;
+    m.add("BOUNDS_FIELD", bounds.field.name())?;
     m.add_class::<case::Case>()?;
     m.add_class::<run::RunRecords>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
@@ -37,8 +43,10 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
+    m.add_function(wrap_pyfunction!(study::landscape_map, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::bounds, m)?)?;
     m.add_function(wrap_pyfunction!(ensemble::ensemble, m)?)?;
+    m.add_function(wrap_pyfunction!(ensemble::perturbation, m)?)?;
     m.add_class::<ensemble::EnsembleRun>()?;
     m.add_class::<simulation::Simulation>()?;
     m.add_class::<step::Step>()?;

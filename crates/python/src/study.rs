@@ -7,7 +7,10 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
 use pyo3::IntoPyObjectExt;
-use soilcut_io::{baselines, check_landscape_at, landscape_at, landscape_columns};
+use soilcut_io::{
+    baselines, check_landscape_at, check_landscape_every, far_ties, landscape_at,
+    landscape_columns, landscape_map as map_of, landscape_map_columns,
+};
 use soilcut_model::Simulation;
 use soilcut_study::fit::{measured_width, Compare, Fit, FitResult, Method, Test};
 use soilcut_study::sample::{Sample, Vary};
@@ -319,6 +322,26 @@ pub fn analytic<'py>(py: Python<'py>, case: &Bound<'py, PyAny>) -> PyResult<Boun
         out.set_item("mckyes_ali", py.None())?;
     }
     Ok(out)
+}
+
+/// The map of `soilcut landscape --every`: landscapes at u/d = 0, `every`,
+/// 2 `every`, … binned by distance ahead of the tip, as
+/// `(landscape_map.csv's columns, how many hold a far tie)`.
+#[pyfunction]
+pub fn landscape_map<'py>(
+    py: Python<'py>,
+    case: &Bound<'py, PyAny>,
+    every: f64,
+) -> PyResult<(Bound<'py, PyDict>, usize)> {
+    let native = Case::extract(case)?;
+    let case = &native.get().loaded.case;
+    check_landscape_every(case, "every", every).map_err(PyValueError::new_err)?;
+    let mut sim = Simulation::new(case).map_err(|e| case_error(py, &e.into()))?;
+    let columns = detached(py, || map_of(&mut sim, every))?;
+    Ok((
+        arrays(py, &landscape_map_columns(&columns))?,
+        far_ties(&columns),
+    ))
 }
 
 /// The landscape of `soilcut landscape --at`: every candidate mechanism at

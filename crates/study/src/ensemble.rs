@@ -17,7 +17,7 @@
 use crate::accuracy::{agreement, Agreement, Spread};
 use crate::error::StudyError;
 use crate::figures::{mean, unit_windows, window_means};
-use crate::run::{override_of, run_recorded, BaseCase};
+use crate::run::{override_of, resolved_number, run_recorded, BaseCase};
 use crate::Progress;
 use rayon::prelude::*;
 use soilcut_io::{LoadedCase, RecordedRun};
@@ -59,16 +59,18 @@ pub struct Perturbation {
 }
 
 impl Perturbation {
-    /// The perturbation of the case `loaded` read from `base`.
-    pub fn of(base: &BaseCase, loaded: &LoadedCase) -> Result<Perturbation, StudyError> {
+    /// The perturbation of the case `loaded` (M39): the original model's
+    /// wall friction, the refined model's d50 where the band width is
+    /// given in d50, else its band width.
+    pub fn of(loaded: &LoadedCase) -> Result<Perturbation, StudyError> {
         let (key, relative, step) = match loaded.case.model {
             Model::Original => ("blade.wall_friction", false, FRICTION_STEP_DEG),
-            Model::Refined if base.number("soil.band_width_d50").is_ok() => {
+            Model::Refined if resolved_number(loaded, "soil.band_width_d50").is_ok() => {
                 ("soil.d50", true, RELATIVE_STEP)
             }
             Model::Refined => ("soil.band_width", true, RELATIVE_STEP),
         };
-        let value = base.number(key).map_err(StudyError::Spec)?;
+        let value = resolved_number(loaded, key).map_err(StudyError::Spec)?;
         Ok(Perturbation {
             key: key.to_string(),
             base: value,
@@ -79,10 +81,15 @@ impl Perturbation {
 
     /// The key's value in member k (M39).
     pub fn value(&self, k: i32) -> f64 {
+        self.value_at(f64::from(k))
+    }
+
+    /// The key's value at a real k (the gym draws k from [−3, 3]).
+    pub fn value_at(&self, k: f64) -> f64 {
         if self.relative {
-            self.base * (1.0 + self.step * f64::from(k))
+            self.base * (1.0 + self.step * k)
         } else {
-            self.base + self.step * f64::from(k)
+            self.base + self.step * k
         }
     }
 
@@ -168,7 +175,7 @@ impl Ensemble {
         let given = i64::try_from(self.members).unwrap_or(i64::MAX);
         members_of(given, "--ensemble")?;
         let loaded = self.base.load(&[])?;
-        let perturbation = Perturbation::of(&self.base, &loaded)?;
+        let perturbation = Perturbation::of(&loaded)?;
         let depth = loaded.case.blade.depth;
         let windows = unit_windows(loaded.case.run.travel, depth);
         let ks = member_offsets(self.members);

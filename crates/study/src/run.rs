@@ -71,21 +71,27 @@ impl BaseCase {
     /// overrides), e.g. `soil.friction.peak`.
     pub fn number(&self, key: &str) -> Result<f64, String> {
         let loaded = self.load(&[]).map_err(|e| e.to_string())?;
-        let table = loaded.resolved_table();
-        let mut value = None;
-        let mut current = Some(&table);
-        for part in key.split('.') {
-            value = current.and_then(|t| t.get(part));
-            current = value.and_then(toml::Value::as_table);
-        }
-        match value {
-            Some(toml::Value::Float(x)) => Ok(*x),
-            Some(toml::Value::Integer(i)) => Ok(*i as f64),
-            Some(other) => Err(format!("{key}: not a number in the case (got {other})")),
-            None => Err(format!(
-                "{key}: the resolved case has no such key (give it in the case file or with --set)"
-            )),
-        }
+        resolved_number(&loaded, key)
+    }
+}
+
+/// The value of a numeric key of `loaded`'s resolved case, e.g.
+/// `soil.friction.peak`.
+pub fn resolved_number(loaded: &LoadedCase, key: &str) -> Result<f64, String> {
+    let table = loaded.resolved_table();
+    let mut value = None;
+    let mut current = Some(&table);
+    for part in key.split('.') {
+        value = current.and_then(|t| t.get(part));
+        current = value.and_then(toml::Value::as_table);
+    }
+    match value {
+        Some(toml::Value::Float(x)) => Ok(*x),
+        Some(toml::Value::Integer(i)) => Ok(*i as f64),
+        Some(other) => Err(format!("{key}: not a number in the case (got {other})")),
+        None => Err(format!(
+            "{key}: the resolved case has no such key (give it in the case file or with --set)"
+        )),
     }
 }
 
