@@ -138,7 +138,9 @@ class Simulation:
         grid is tied to whole increments. Beyond ``run.travel`` the travel
         becomes ``x``. With ``depth`` (length) the tip goes linearly from
         its depth now to ``depth`` at ``x`` and stays there: the case's
-        depth path ahead of the blade is replaced (vertical blades only;
+        depth path ahead of the blade is replaced; at an ``x`` the blade
+        has passed (a controller's tick between increments), ``depth`` is
+        held for the next increment, which takes the tip there (vertical blades only;
         deeper than ``run.increment`` and the band width, no deeper than
         the case's deepest tip depth, which sets the ground the simulation
         holds). ``sim.case`` shows the steered case. Raises ``TypeError``

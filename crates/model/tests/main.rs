@@ -5,6 +5,7 @@
 mod band_strength;
 mod bin;
 mod common;
+mod controller;
 mod depth_path;
 mod face_friction;
 mod finite_width;

@@ -30,7 +30,7 @@ use crate::error::StudyError;
 use crate::run::RunResult;
 use crate::Progress;
 use problem::{Point, Problem};
-use profile::{Noise, Profile};
+use profile::{Noise, Profile, Residuals};
 use search::{best_of, evolve, polish, Budget, Generation, Search};
 use std::str::FromStr;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -225,7 +225,7 @@ impl Fit {
             let mut best = self.polished_best(&problem, &search.best, &mut points)?;
             let done = self.evaluations + self.polish_iterations as usize;
             progress(done, total);
-            let noise = Noise::estimate(&best, &self.counts(), &self.overlaps(), params.len());
+            let noise = Noise::estimate(&best, &self.residuals(), params.len());
             let profiled = match &noise {
                 Some(noise) if self.profile_grid > 0 => {
                     let finished = AtomicUsize::new(done);
@@ -318,11 +318,18 @@ impl Fit {
         }
     }
 
-    /// Residuals of each test (their number does not depend on the values).
-    fn counts(&self) -> Vec<usize> {
+    /// Each test's residuals, their weight and overlap (none depends on
+    /// the values).
+    fn residuals(&self) -> Vec<Residuals> {
         self.tests
             .iter()
-            .map(|t| objective::residuals(self.compare, &t.measured, &t.measured, &t.weights).len())
+            .zip(self.overlaps())
+            .map(|(t, overlap)| Residuals {
+                count: objective::residuals(self.compare, &t.measured, &t.measured, &t.weights)
+                    .len(),
+                weight: t.weight(self.compare),
+                overlap,
+            })
             .collect()
     }
 

@@ -129,3 +129,45 @@ fn measured_curve_must_lie_within_the_travel() {
     let e = f.run(&no_progress).unwrap_err().to_string();
     assert!(e.contains("--bounds run.increment=lo:hi"), "{e}");
 }
+
+/// The noise row of `fit.md`'s test table: (σ, RMS at best).
+fn noise_row(md: &str) -> (f64, f64) {
+    let header = md
+        .lines()
+        .position(|l| l.contains("noise level σ"))
+        .unwrap_or_else(|| panic!("no noise table:\n{md}"));
+    let row = md.lines().nth(header + 2).unwrap();
+    let cells: Vec<f64> = row
+        .split('|')
+        .filter_map(|c| c.trim().parse().ok())
+        .collect();
+    (cells[cells.len() - 2], cells[cells.len() - 1])
+}
+
+/// `fit.md` prints the σ its χ² uses, the noise of a residual of the
+/// test's mean weight (its weights here are 1/P², far from 1), and with
+/// `--profile-points 0` neither a threshold (it had "Δχ² ≤ NaN") nor the
+/// profiles' picture, which it did not draw (issue 50 item 6).
+#[test]
+fn fit_md_says_the_noise_its_chi2_uses_and_only_what_it_drew() {
+    let mut f = case(7, 1, 16).fit;
+    f.polish_iterations = 4;
+    f.profile_grid = 0;
+    let r = f.run(&no_progress).unwrap();
+    let md = r.markdown("x");
+    assert!(!md.contains("NaN"), "{md}");
+    assert!(!md.contains("profiles.png"), "{md}");
+    let (sigma, rms) = noise_row(&md);
+    let (n, p) = (f.tests[0].measured.len() as f64, f.free.len() as f64);
+    let expected = rms * (n / (n - p)).sqrt();
+    assert!(
+        (sigma / expected - 1.0).abs() < 1e-4,
+        "σ {sigma}, RMS {rms}"
+    );
+    // χ² at the best is then N − p, the residuals' degrees of freedom.
+    let chi2 = r.noise.as_ref().unwrap().chi2(&r.best);
+    assert!((chi2 - (n - p)).abs() < 1e-6 * n, "{chi2}");
+    f.profile_grid = 2;
+    let md = f.run(&no_progress).unwrap().markdown("x");
+    assert!(md.contains("(profiles.png)") && !md.contains("NaN"), "{md}");
+}

@@ -61,7 +61,9 @@ impl Simulation {
     /// the tip goes linearly from its depth now to `depth` at x and stays
     /// there: the case's depth path beyond the blade is replaced by that
     /// segment (vertical blades only, as every depth path; no deeper than
-    /// the ground the simulation was set up with, `Case::deepest`). Beyond
+    /// the ground the simulation was set up with, `Case::deepest`). An x
+    /// the blade has passed holds `depth` for the next increment, which
+    /// takes the tip there (a controller's tick between increments). Beyond
     /// `run.travel`, the travel becomes x. Errors leave the simulation as
     /// it was, except a failed increment (`AdvanceError::Step`).
     pub fn advance_to(
@@ -135,12 +137,12 @@ impl Simulation {
         if new_points.is_none() && x <= travel {
             return Ok(());
         }
-        let u0 = self.blade_position();
+        let from = self.read_to();
         let path = &mut self.case.blade.depth_path;
-        let kept = path.partition_point(|p| p[0] < u0);
+        let kept = path.partition_point(|p| p[0] < from);
         let ahead = match new_points {
-            // What lies behind the blade stays as run; the tip is pinned
-            // where it is now, so that the increments to come start from it.
+            // What the increments made have read stays as run; the tip is
+            // pinned where they left it, so that the ones to come start from it.
             Some(points) => {
                 let ahead = path.split_off(kept);
                 path.extend(points);
@@ -186,8 +188,9 @@ impl Simulation {
     }
 
     /// The two points of the depth path that take the tip from its depth
-    /// now to `depth` at x over `todo` increments; `None` where the case
-    /// holds the tip at `depth` with no path (nor a vertical blade).
+    /// now to `depth` at x over `todo` increments (at the end of the next
+    /// one where `todo` is 0); `None` where the case holds the tip at
+    /// `depth` with no path (nor a vertical blade).
     fn steered_points(
         &self,
         x: f64,
@@ -211,15 +214,31 @@ impl Simulation {
         if self.case.blade.depth_path.is_empty() && depth == self.case.blade.depth {
             return Ok(None);
         }
-        if todo == 0 {
-            return Err(argument(format!(
-                "x = {x} needs no increment (the blade is at u = {}), so the tip cannot move to a new depth over it",
-                self.blade_position()
-            )));
-        }
+        // A position the blade has passed needs no increment: the command
+        // holds until the next increment takes it (a controller ticks
+        // between increments), the path's point at that increment's end; a
+        // later command replaces it before the increment is made.
+        let v0 = self.case.run.increment;
+        let last = self.done + todo.max(1) - 1;
+        let reach = if todo == 0 { f64::INFINITY } else { x };
+        let from = self.read_to();
         Ok(Some([
-            [self.blade_position(), self.tip_depth()],
-            [x, depth],
+            [from, self.case.tip_depth(from)],
+            [reach.min(last as f64 * v0 + v0), depth],
         ]))
+    }
+
+    /// The furthest along the depth path the increments made so far have
+    /// read it: increment j + 1 reads the tip at u_j = j v0 and at
+    /// u_j + v0 (both grounds hold the face at exactly j v0), and the two
+    /// differ in the last bit. New points go from there on, so that every
+    /// depth a made increment read stays on the path as it read it, and
+    /// the steered case runs as the steered session did, bit for bit.
+    fn read_to(&self) -> f64 {
+        let u = self.blade_position();
+        match self.done {
+            0 => u,
+            n => u.max((n - 1) as f64 * self.case.run.increment + self.case.run.increment),
+        }
     }
 }

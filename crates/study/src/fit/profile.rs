@@ -2,13 +2,19 @@
 //!
 //! The noise of test t is estimated from the residuals at the best point,
 //!
-//!   σ_t² = k_t S_t / n_t · N / (N − p),
+//!   σ_t² = S_t / W_t · N / (N − p),
 //!
-//! with n_t its residuals, N = Σ n_t, p the free keys and k_t the mean
-//! number of measured points a residual averages over (1 for raw
-//! residuals and window means, whose weights already count their points;
-//! the window's points for a smoothed curve, whose residuals overlap).
-//! Then χ²(θ) = Σ_t S_t(θ) / σ_t² and, for key j, the profile
+//! the noise of a residual of the test's mean weight w̄_t = W_t / n_t (a
+//! residual of weight w has σ_t² w̄_t / w), with S_t = Σ wᵢ rᵢ² its
+//! weighted sum of squares, W_t = Σ wᵢ, n_t its residuals, N = Σ n_t and
+//! p the free keys; with k_t the mean number of measured points a
+//! residual averages over (1 for raw residuals and window means, whose
+//! weights already count their points; the window's points for a
+//! smoothed curve, whose residuals overlap),
+//!
+//!   χ²(θ) = Σ_t S_t(θ) / (k_t w̄_t σ_t²),
+//!
+//! N − p at the best point when k_t = 1. For key j, the profile
 //!
 //!   χ²_j(v) = min over the other keys of χ²(θ with θ_j = v)
 //!
@@ -45,35 +51,51 @@ const BISECTIONS: usize = 6;
 /// χ² at a point from the noise of each test.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Noise {
-    /// σ_t² of each test (including the overlap factor k_t).
+    /// k_t w̄_t σ_t² of each test: what its sum of squares is divided by.
     pub variance: Vec<f64>,
-    /// σ_t without the overlap factor: the noise level of the measured
-    /// force (force per unit width).
+    /// σ_t: the noise level of the measured force at the test's mean
+    /// weight (force per unit width), the σ of `variance`.
     pub sigma: Vec<f64>,
+}
+
+/// What [`Noise::estimate`] reads of each test: its residuals n_t, the sum
+/// of their weights W_t and the overlap factor k_t.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Residuals {
+    /// n_t.
+    pub count: usize,
+    /// W_t.
+    pub weight: f64,
+    /// k_t.
+    pub overlap: f64,
 }
 
 impl Noise {
     /// From the sums of squares at the best point (see the module
     /// documentation); None if there are no more residuals than keys or
     /// the fit is exact.
-    pub fn estimate(best: &Point, counts: &[usize], overlap: &[f64], keys: usize) -> Option<Noise> {
+    pub fn estimate(best: &Point, tests: &[Residuals], keys: usize) -> Option<Noise> {
         let sums = best.sums.as_ref()?;
-        let n: usize = counts.iter().sum();
+        let n: usize = tests.iter().map(|t| t.count).sum();
         if n <= keys {
             return None;
         }
         let dof = n as f64 / (n - keys) as f64;
-        let sigma2: Vec<f64> = sums
+        // w̄_t σ_t² = S_t / n_t · N / (N − p).
+        let per_mean_weight: Vec<f64> = sums
             .iter()
-            .zip(counts)
-            .map(|(s, &c)| s / c as f64 * dof)
+            .zip(tests)
+            .map(|(s, t)| s / t.count as f64 * dof)
             .collect();
-        if sigma2.iter().any(|s| s.is_nan() || *s <= 0.0) {
+        if per_mean_weight.iter().any(|s| !s.is_finite() || *s <= 0.0) {
             return None;
         }
+        let each = per_mean_weight.iter().zip(tests);
         Some(Noise {
-            variance: sigma2.iter().zip(overlap).map(|(s, k)| s * k).collect(),
-            sigma: sigma2.iter().map(|s| s.sqrt()).collect(),
+            variance: each.clone().map(|(s, t)| s * t.overlap).collect(),
+            sigma: each
+                .map(|(s, t)| (s * t.count as f64 / t.weight).sqrt())
+                .collect(),
         })
     }
 

@@ -214,9 +214,14 @@ impl FitResult {
         );
         self.noise_section(w);
         self.correlation_section(w);
+        // profiles.png is drawn only with profiles (`draw`).
+        let profiles = match self.profiles.is_empty() {
+            true => "",
+            false => "![profiles](profiles.png)\n\n",
+        };
         let _ = writeln!(
             w,
-            "\n![measured and fitted force](fit.png)\n\n![profiles](profiles.png)\n\n![search](search.png)\n"
+            "\n![measured and fitted force](fit.png)\n\n{profiles}![search](search.png)\n"
         );
         self.method_section(w);
         s
@@ -227,12 +232,16 @@ impl FitResult {
             let _ = writeln!(w, "\nNo noise level: the fit is exact or has no more residuals than keys; no intervals.");
             return;
         };
-        let _ = writeln!(
-            w,
-            "\nIntervals by profile likelihood: χ² = Σ_t S_t/σ_t² with each test's noise level σ_t estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {:.2}: the threshold, calibrated for the roughness of the objective by a wild bootstrap (replicate curves made of the best fit's curve plus its residuals with random signs, and how far the evaluated points and short refits undercut each replicate's truth), at least the χ²ₚ 95 % quantile of a smooth model with p free keys: the intervals are the projections of the joint 95 % region. A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n",
-            self.threshold.unwrap_or(f64::NAN)
-        );
-        let _ = writeln!(w, "| test | points | noise level σ (from the residuals) | RMS at best |\n|---|---|---|---|");
+        match self.threshold {
+            Some(threshold) => intervals_text(w, threshold),
+            None => {
+                let _ = writeln!(
+                    w,
+                    "\nNo intervals: the profiles were not computed (`--profile-points 0`).\n"
+                );
+            }
+        }
+        let _ = writeln!(w, "| test | points | noise level σ (from the residuals, at the test's mean weight; χ²'s) | RMS at best |\n|---|---|---|---|");
         for ((t, sigma), run) in self.tests.iter().zip(&noise.sigma).zip(&self.best_runs) {
             let rms = super::objective::sum_of_squares(&t.residuals(self.compare, run))
                 / t.weight(self.compare);
@@ -404,6 +413,14 @@ fn significant(x: f64) -> String {
     } else {
         text
     }
+}
+
+/// How `fit.md`'s intervals were found, with their threshold of Δχ².
+fn intervals_text(w: &mut String, threshold: f64) {
+    let _ = writeln!(
+        w,
+        "\nIntervals by profile likelihood: χ² = Σ_t S_t/(w̄_t σ_t²) with each test's noise level σ_t (at its mean weight w̄_t) estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {threshold:.2}: the threshold, calibrated for the roughness of the objective by a wild bootstrap (replicate curves made of the best fit's curve plus its residuals with random signs, and how far the evaluated points and short refits undercut each replicate's truth), at least the χ²ₚ 95 % quantile of a smooth model with p free keys: the intervals are the projections of the joint 95 % region. A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n"
+    );
 }
 
 #[cfg(test)]
