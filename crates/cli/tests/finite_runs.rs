@@ -10,7 +10,7 @@ use std::process::{Command, Output};
 
 fn case(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../cases")
+        .join("../..")
         .join(rel)
 }
 
@@ -39,7 +39,7 @@ fn fig5_scaled_down_writes_only_finite_numbers() {
         "run.travel=11.099485582369706",
     ];
     let dir = tempfile::tempdir().unwrap();
-    let file = case("paper/fig5.toml");
+    let file = case("cases/paper/fig5.toml");
     let mut args = with_sets("run", &file, &sets);
     args.extend(["--no-plots", "--out", "out"]);
     let o = soilcut(dir.path(), &args);
@@ -87,9 +87,9 @@ fn refused(rel: &str, sets: &[&str], key: &str, range: &str) {
 #[test]
 fn an_increment_below_round_off_is_refused() {
     let sets = ["run.increment=1e-15", "run.travel=1e-14"];
-    refused("paper/original.toml", &sets, "run.increment", ">= 1e-9");
+    refused("cases/paper/original.toml", &sets, "run.increment", ">= 1e-9");
     let deep = ["blade.depth=9.2e18"];
-    refused("tools/cohesive.toml", &deep, "run.increment", ">= 1e-9");
+    refused("cases/tools/cohesive.toml", &deep, "run.increment", ">= 1e-9");
 }
 
 /// The cases that grew without bound (aborted at 4 GiB), refused before
@@ -97,7 +97,7 @@ fn an_increment_below_round_off_is_refused() {
 /// "Limits").
 #[test]
 fn a_case_beyond_the_memory_bounds_is_refused() {
-    let fig5 = "paper/fig5.toml";
+    let fig5 = "cases/paper/fig5.toml";
     refused(
         fig5,
         &["blade.depth=9.2e18"],
@@ -106,7 +106,7 @@ fn a_case_beyond_the_memory_bounds_is_refused() {
     );
     let thin = ["soil.band_width=1e-6"];
     refused(
-        "validation/deep.toml",
+        "cases/validation/deep.toml",
         &thin,
         "soil.band_width",
         "samples per depth",
@@ -128,7 +128,7 @@ fn a_case_beyond_the_memory_bounds_is_refused() {
 #[test]
 fn a_sweep_of_a_hundred_million_runs_is_refused() {
     let dir = tempfile::tempdir().unwrap();
-    let file = case("paper/original.toml");
+    let file = case("cases/paper/original.toml");
     for (option, value) in [
         ("--vary", "soil.friction.peak=30:40:100000000"),
         ("--sample", "lhs:100000000"),
