@@ -14,6 +14,7 @@ mod analytic_cmd;
 mod bounds_cmd;
 mod ensemble_cmd;
 mod landscape_cmd;
+mod sensitivity_cmd;
 mod study_cmd;
 mod sweep_cmd;
 mod sweep_folder;
@@ -156,6 +157,9 @@ enum Command {
     /// Run a case for many values of its keys (a grid or a Latin-hypercube sample), in parallel.
     #[command(after_help = sweep_cmd::SWEEP_EXAMPLES)]
     Sweep(sweep_cmd::SweepArgs),
+    /// Morris screening or Sobol indices of a case's forces over ranges of its keys, chaos-aware.
+    #[command(after_help = sensitivity_cmd::EXAMPLES)]
+    Sensitivity(sensitivity_cmd::SensitivityArgs),
     /// Fit keys of a case to a measured force-displacement curve.
     #[command(after_help = study_cmd::FIT_EXAMPLES)]
     Fit(study_cmd::FitArgs),
@@ -339,6 +343,7 @@ fn main() -> ExitCode {
         Command::Landscape(args) => landscape_cmd::landscape(args),
         Command::Bounds(args) => bounds_cmd::bounds(args),
         Command::Sweep(args) => sweep_cmd::sweep(args),
+        Command::Sensitivity(args) => sensitivity_cmd::sensitivity(args),
         Command::Fit(args) => study_cmd::fit(args),
         Command::Converge(args) => study_cmd::converge(args),
         Command::Accuracy(args) => accuracy_cmd::accuracy(args),

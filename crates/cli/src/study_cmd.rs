@@ -44,7 +44,7 @@ pub struct Common {
     #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
     pub jobs: usize,
     /// No progress bar (it is shown only when stderr is a terminal).
-    #[arg(long)]
+    #[arg(long, short)]
     pub quiet: bool,
 }
 
@@ -196,7 +196,7 @@ pub fn progress(quiet: bool, unit: &'static str) -> impl Fn(usize, usize) + Sync
 /// Writes a study's outputs: `write` fills the staging folder of `out`,
 /// which is then published (`OutputDir::write_then`); a failure of
 /// `write` is returned as it is.
-fn write_study(
+pub fn write_study(
     out: OutputDir,
     write: impl FnOnce(&Path) -> Result<(), StudyError>,
 ) -> Result<(), StudyError> {

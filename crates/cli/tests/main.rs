@@ -12,5 +12,6 @@ mod output_folder;
 mod plots;
 mod readme;
 mod references;
+mod sensitivity;
 mod study;
 mod test_targets;

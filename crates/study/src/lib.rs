@@ -9,6 +9,8 @@
 //! * [`ensemble`]: one case run with imperceptible perturbations, the
 //!   spread of its window means, judged by the rule of [`accuracy`]
 //!   (defined in `soilcut-model`).
+//! * [`sensitivity`]: Morris screening and Sobol indices of a case's
+//!   outputs over ranges of its keys, chaos-aware (ensembles per point).
 //! * [`converge`]: one case with the increment halved level after level,
 //!   and which averaged quantities converge (docs/model.md §12).
 //!
@@ -32,6 +34,7 @@ pub mod figures;
 pub mod fit;
 pub mod run;
 pub mod sample;
+pub mod sensitivity;
 pub mod sweep;
 
 pub use error::StudyError;

@@ -5,5 +5,6 @@
 mod converge;
 mod ensemble;
 mod fit;
+mod sensitivity;
 mod sweep;
 mod synthetic;

@@ -1,0 +1,141 @@
+//! `soilcut sensitivity`: Morris screening or Sobol indices of a case's
+//! outputs over ranges of its keys (`soilcut-study`'s `sensitivity`). Its
+//! files appear together, once every run has finished; a study one of
+//! whose runs failed writes samples.csv and a summary saying so, no
+//! indices, and exits 2.
+
+use super::Failure;
+use crate::study_cmd::{study_failure, text_files, write_study, Common};
+use clap::Args;
+use soilcut_study::sensitivity::{Function, Method, Model, Range, Sensitivity, DEFAULT_LEVELS};
+use soilcut_study::StudyError;
+use std::time::Instant;
+
+pub const EXAMPLES: &str = "\
+Examples:
+  soilcut sensitivity cases/paper/fig5.toml --method morris --samples 10 \\
+      --vary soil.friction.peak=35:45 --vary soil.peak_shear=1:3 --vary blade.wall_friction=5:15
+      writes out/fig5-sensitivity/{indices.csv,samples.csv,summary.json,sensitivity.md,timing.csv}
+  soilcut sensitivity cases/paper/fig5.toml --method sobol --samples 256 --members 3 --dummy \\
+      --vary soil.friction.peak=35:45 --vary soil.peak_shear=1:3 --seed 2 --jobs 2";
+
+/// Sobol base points by default.
+const SOBOL_SAMPLES: usize = 512;
+/// Morris trajectories by default.
+const MORRIS_TRAJECTORIES: usize = 20;
+
+#[derive(Args)]
+pub struct SensitivityArgs {
+    #[command(flatten)]
+    common: Common,
+    /// A key and its range lo:hi, lo < hi (repeatable).
+    #[arg(long, value_name = "KEY=LO:HI", required = true)]
+    vary: Vec<String>,
+    /// morris (screening: μ*, σ of elementary effects) or sobol (first-order and total indices).
+    #[arg(long, value_enum)]
+    method: MethodArg,
+    /// Morris: trajectories r [default: 20]; Sobol: base points N, a power of 2 [default: 512];
+    /// the runs are r (keys + 1) or N (keys + 2), times --members.
+    #[arg(long, value_name = "N")]
+    samples: Option<usize>,
+    /// Levels p of Morris's grid (even).
+    #[arg(long, value_name = "P", default_value_t = DEFAULT_LEVELS)]
+    levels: usize,
+    /// Run each design point as an ensemble of K perturbed members (the ensembles' rule):
+    /// indices of the ensemble mean, and each output's chaos share.
+    #[arg(long, value_name = "K", default_value_t = 1)]
+    members: usize,
+    /// Seed of the design and the bootstrap. Results do not depend on --jobs.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Add an input `dummy` that no run reads: its indices show the estimators' noise floor.
+    #[arg(long)]
+    dummy: bool,
+    /// Evaluate a test function (ishigami, linear) of the varied inputs instead of the case.
+    #[arg(long, hide = true)]
+    function: Option<String>,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum MethodArg {
+    Morris,
+    Sobol,
+}
+
+/// The study of `args`, checked before anything is written.
+fn prepare(args: &SensitivityArgs) -> Result<(Sensitivity, std::path::PathBuf), Failure> {
+    let c = &args.common;
+    let path = &c.target.case;
+    let fail = |e| study_failure(path, e);
+    let (base, out) = c.start("sensitivity")?;
+    let ranges = args
+        .vary
+        .iter()
+        .map(|v| Range::parse(v))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(fail)?;
+    let model = match &args.function {
+        Some(name) => Model::Function(Function::parse(name).map_err(fail)?),
+        None => Model::Case(base),
+    };
+    let (method, samples) = match args.method {
+        MethodArg::Morris => (
+            Method::Morris {
+                levels: args.levels,
+            },
+            MORRIS_TRAJECTORIES,
+        ),
+        MethodArg::Sobol => (Method::Sobol, SOBOL_SAMPLES),
+    };
+    let study = Sensitivity {
+        model,
+        ranges,
+        method,
+        samples: args.samples.unwrap_or(samples),
+        members: args.members,
+        dummy: args.dummy,
+        seed: args.seed,
+        jobs: c.jobs,
+    };
+    study.check().map_err(|e| match e {
+        StudyError::Key(e) => Failure::argument(path, "--vary", &args.vary, e),
+        e => fail(e),
+    })?;
+    Ok((study, out))
+}
+
+pub fn sensitivity(args: SensitivityArgs) -> Result<(), Failure> {
+    let c = &args.common;
+    let path = &c.target.case;
+    let (study, out) = prepare(&args)?;
+    let start = Instant::now();
+    let mut result = None;
+    write_study(c.claim(&out)?, |dir| {
+        let r = study.run(&c.progress("runs"))?;
+        text_files(dir, &r.files())?;
+        result = Some(r);
+        Ok(())
+    })
+    .map_err(|e| study_failure(path, e))?;
+    let Some(r) = result else {
+        return Ok(());
+    };
+    if let Err(e) = &r.analysis {
+        return Err(Failure::input(
+            &out,
+            format!(
+                "{e}; no indices: samples.csv has every run, summary.json says it is not complete"
+            ),
+        ));
+    }
+    if !c.quiet {
+        let seconds = start.elapsed().as_secs_f64();
+        println!(
+            "sensitivity: {} runs in {seconds:.1} s ({:.1} runs/s), outputs in {}",
+            r.runs.len(),
+            r.runs.len() as f64 / seconds,
+            out.display()
+        );
+    }
+    Ok(())
+}

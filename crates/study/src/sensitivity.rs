@@ -1,0 +1,141 @@
+//! Variance-based sensitivity of a case's outputs to its keys: Morris
+//! screening (elementary effects μ*, σ, μ) and Sobol first-order and total
+//! indices (Saltelli's design on a scrambled Sobol sequence, Saltelli's
+//! 2010 S1 and Jansen's ST estimators), each with seeded bootstrap
+//! intervals; SALib gives the same indices on the same samples
+//! (python/tests/test_sensitivity.py).
+//!
+//! Chaos-aware: with `members` K > 1 each design point is an ensemble of K
+//! members perturbed by the ensembles' rule ([`crate::ensemble`]), the
+//! indices are those of the ensemble mean, and each output's chaos share
+//! is the members' mean variance within a point over the variance of every
+//! run's output: an index below it is below the noise.
+//!
+//! Runs go through [`BaseCase::run`] in parallel; results are collected in
+//! the design's order, so any number of threads gives the same files.
+
+use crate::error::StudyError;
+use crate::run::BaseCase;
+use crate::sample::Vary;
+
+pub mod bootstrap;
+pub mod design;
+mod files;
+pub mod function;
+pub mod morris;
+mod runs;
+pub mod sequence;
+pub mod sobol;
+
+pub use files::{MEANINGS, OUTPUTS};
+pub use function::Function;
+pub use runs::{RunRow, SensitivityResult};
+
+/// The name of the input that no run reads (`dummy`).
+pub const DUMMY: &str = "dummy";
+/// Fewest base points of a Sobol design.
+pub const MIN_SOBOL_SAMPLES: usize = 16;
+/// Fewest Morris trajectories (σ needs two).
+pub const MIN_TRAJECTORIES: usize = 2;
+/// Morris levels by default.
+pub const DEFAULT_LEVELS: usize = 4;
+
+/// The method and its design.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method {
+    /// Morris screening on a grid of `levels` levels (even).
+    Morris {
+        /// p, the levels of the grid.
+        levels: usize,
+    },
+    /// Sobol first-order and total indices.
+    Sobol,
+}
+
+/// What each design point runs.
+#[derive(Clone, Debug)]
+pub enum Model {
+    /// The case with the point's keys set.
+    Case(BaseCase),
+    /// A function of known indices, for checking the estimators.
+    Function(Function),
+}
+
+/// One varied key and its range lo < hi.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Range {
+    /// The case key.
+    pub key: String,
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+}
+
+impl Range {
+    /// `key=lo:hi` (as `--vary`), lo < hi.
+    pub fn parse(text: &str) -> Result<Range, StudyError> {
+        let vary: Vary = text.parse()?;
+        match vary.values {
+            crate::sample::Values::Range { lo, hi } if hi > lo => Ok(Range {
+                key: vary.key,
+                lo,
+                hi,
+            }),
+            crate::sample::Values::Range { .. } => Err(StudyError::Spec(format!(
+                "--vary {text}: a range needs lo < hi"
+            ))),
+            _ => Err(StudyError::Spec(format!(
+                "--vary {text}: expected key=lo:hi (a sensitivity study samples the interval)"
+            ))),
+        }
+    }
+}
+
+/// A sensitivity study to run.
+#[derive(Clone, Debug)]
+pub struct Sensitivity {
+    /// What each run is.
+    pub model: Model,
+    /// The varied keys.
+    pub ranges: Vec<Range>,
+    /// Morris or Sobol.
+    pub method: Method,
+    /// Morris: trajectories r; Sobol: base points N (a power of 2).
+    pub samples: usize,
+    /// Members K of each design point's ensemble (1: one run).
+    pub members: usize,
+    /// Add the input [`DUMMY`] that no run reads.
+    pub dummy: bool,
+    /// Seed of the design and the bootstrap.
+    pub seed: u64,
+    /// Worker threads (0: one per core).
+    pub jobs: usize,
+}
+
+impl Sensitivity {
+    /// The inputs: the varied keys, then [`DUMMY`] if asked for.
+    pub fn keys(&self) -> Vec<String> {
+        let mut keys: Vec<String> = self.ranges.iter().map(|r| r.key.clone()).collect();
+        if self.dummy {
+            keys.push(DUMMY.to_string());
+        }
+        keys
+    }
+
+    /// Runs the study will make: design points × members.
+    pub fn runs(&self) -> usize {
+        let d = self.keys().len();
+        let points = match self.method {
+            Method::Morris { .. } => self.samples.saturating_mul(d + 1),
+            Method::Sobol => self.samples.saturating_mul(d + 2),
+        };
+        points.saturating_mul(self.members)
+    }
+
+    /// Refuses what would make the study fail or mean nothing, before
+    /// any run: see [`runs::check`].
+    pub fn check(&self) -> Result<(), StudyError> {
+        runs::check(self)
+    }
+}

@@ -1,0 +1,223 @@
+//! The files of a sensitivity study: `indices.csv`, `samples.csv`,
+//! `summary.json`, `sensitivity.md`, `timing.csv`.
+
+use super::runs::{Indices, OutputIndices, SensitivityResult};
+use super::{bootstrap, Method};
+use crate::field::number;
+use crate::figures::mean;
+use crate::run::RunResult;
+use soilcut_io::CsvText;
+
+/// The outputs of a run of a case, in the order of [`outputs_of`].
+pub const OUTPUTS: [&str; 3] = ["initial_force_norm", "max_force_norm", "mean_force_norm"];
+
+/// What each output is (all P/(γ0 d²), dimensionless).
+pub const MEANINGS: [&str; 3] = [
+    "P/(γ0 d²) of the first increment",
+    "largest P/(γ0 d²) of the run",
+    "mean P/(γ0 d²) over every increment of the run",
+];
+
+/// The outputs of a finished run: first, largest and mean P/(γ0 d²).
+pub fn outputs_of(run: &RunResult) -> [f64; 3] {
+    let forces: Vec<f64> = run.history.iter().map(|r| r.force_norm).collect();
+    [
+        run.summary.initial_force_norm,
+        run.summary.max_force_norm,
+        mean(&forces),
+    ]
+}
+
+impl SensitivityResult {
+    /// `indices.csv`: Sobol `output,key,S1,S1_low,S1_high,ST,ST_low,ST_high`;
+    /// Morris `output,key,mu_star,mu_star_low,mu_star_high,sigma,mu`.
+    /// Empty fields for an output that does not vary; no rows if a run
+    /// failed.
+    pub fn indices_csv(&self) -> String {
+        let header = match self.study.method {
+            Method::Sobol => "output,key,S1,S1_low,S1_high,ST,ST_low,ST_high",
+            Method::Morris { .. } => "output,key,mu_star,mu_star_low,mu_star_high,sigma,mu",
+        };
+        let mut out = CsvText::new(header);
+        for o in self.analysis.as_deref().unwrap_or(&[]) {
+            for (j, key) in self.keys.iter().enumerate() {
+                let mut fields = vec![o.name.clone(), key.clone()];
+                fields.extend(index_fields(&o.indices, j).iter().map(|&x| number(x)));
+                out.fields(&fields);
+            }
+        }
+        out.finish()
+    }
+
+    /// `samples.csv`: `run,point,k`, the inputs' values, `status,error`,
+    /// the outputs: every run, in the design's order.
+    pub fn samples_csv(&self) -> String {
+        let mut header: Vec<String> = ["run", "point", "k"].map(String::from).to_vec();
+        header.extend(self.keys.iter().cloned());
+        header.extend(["status".to_string(), "error".to_string()]);
+        header.extend(self.outputs.iter().cloned());
+        let mut out = CsvText::named(&header);
+        for (i, row) in self.runs.iter().enumerate() {
+            let mut fields = vec![
+                (i + 1).to_string(),
+                (row.point + 1).to_string(),
+                row.k.to_string(),
+            ];
+            fields.extend(self.values[row.point].iter().map(|x| x.to_string()));
+            match &row.outcome {
+                Ok(v) => {
+                    fields.extend(["ok".to_string(), String::new()]);
+                    fields.extend(v.iter().map(|&x| number(x)));
+                }
+                Err(e) => {
+                    fields.extend(["failed".to_string(), e.clone()]);
+                    fields.extend(self.outputs.iter().map(|_| String::new()));
+                }
+            }
+            out.fields(&fields);
+        }
+        out.finish()
+    }
+
+    /// `timing.csv`: `run,wall_time_s` (the only file that changes
+    /// between identical studies).
+    pub fn timing_csv(&self) -> String {
+        let mut out = CsvText::new("run,wall_time_s");
+        for (i, row) in self.runs.iter().enumerate() {
+            out.fields(&[(i + 1).to_string(), row.wall_time_s.to_string()]);
+        }
+        out.finish()
+    }
+
+    /// `summary.json`: the study, whether it is complete, each output's
+    /// chaos share.
+    pub fn summary_json(&self) -> String {
+        let s = &self.study;
+        let (method, levels) = match s.method {
+            Method::Sobol => ("sobol", None),
+            Method::Morris { levels } => ("morris", Some(levels)),
+        };
+        let ranges: Vec<serde_json::Value> = s
+            .ranges
+            .iter()
+            .map(|r| serde_json::json!({"key": r.key, "lo": r.lo, "hi": r.hi}))
+            .collect();
+        let outputs: Vec<serde_json::Value> = self
+            .analysis
+            .as_deref()
+            .unwrap_or(&[])
+            .iter()
+            .map(|o| serde_json::json!({"output": o.name, "chaos_share": o.chaos_share}))
+            .collect();
+        let failed = self.runs.iter().filter(|r| r.outcome.is_err()).count();
+        let json = serde_json::json!({
+            "method": method, "levels": levels, "samples": s.samples, "members": s.members,
+            "perturbation": self.perturbation, "seed": s.seed, "dummy": s.dummy,
+            "keys": ranges, "design_points": self.design.len(), "runs": self.runs.len(),
+            "failed": failed, "complete": self.analysis.is_ok(),
+            "stopped": self.analysis.as_ref().err(),
+            "bootstrap": {"resamples": bootstrap::RESAMPLES, "confidence": 0.95, "interval": "normal"},
+            "outputs": outputs,
+        });
+        let mut text = serde_json::to_string_pretty(&json).expect("a summary serialises");
+        text.push('\n');
+        text
+    }
+
+    /// The files, name and contents (timing.csv last).
+    pub fn files(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("indices.csv", self.indices_csv()),
+            ("samples.csv", self.samples_csv()),
+            ("summary.json", self.summary_json()),
+            ("sensitivity.md", self.markdown()),
+            ("timing.csv", self.timing_csv()),
+        ]
+    }
+}
+
+/// The numbers of input `j`'s row of `indices.csv`.
+fn index_fields(indices: &Indices, j: usize) -> Vec<f64> {
+    match indices {
+        Indices::Sobol(Some(all)) => {
+            let i = &all[j];
+            vec![
+                i.s1.value, i.s1.low, i.s1.high, i.st.value, i.st.low, i.st.high,
+            ]
+        }
+        Indices::Sobol(None) => vec![f64::NAN; 6],
+        Indices::Morris(all) => {
+            let i = &all[j];
+            vec![
+                i.mu_star.value,
+                i.mu_star.low,
+                i.mu_star.high,
+                i.sigma,
+                i.mu,
+            ]
+        }
+    }
+}
+
+impl SensitivityResult {
+    /// `sensitivity.md`: a table per output, its chaos share beside it.
+    pub fn markdown(&self) -> String {
+        let mut md = String::from("# Sensitivity\n\n");
+        let analysis = match &self.analysis {
+            Ok(a) => a,
+            Err(e) => return md + &format!("Not complete: {e}. samples.csv has every run.\n"),
+        };
+        md += &format!(
+            "{} design points × {} member(s) = {} runs, seed {}; intervals: 95 %, bootstrap of {} resamples.\n",
+            self.design.len(),
+            self.study.members,
+            self.runs.len(),
+            self.study.seed,
+            bootstrap::RESAMPLES
+        );
+        for o in analysis {
+            md += &self.output_table(o);
+        }
+        md
+    }
+
+    fn output_table(&self, o: &OutputIndices) -> String {
+        let share = o
+            .chaos_share
+            .map_or("not measured (one member a point)".to_string(), |c| {
+                format!("{c:.4}")
+            });
+        let mut md = format!("\n## {}\n\nChaos share: {share}.\n\n", o.name);
+        let head = match o.indices {
+            Indices::Sobol(_) => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
+            Indices::Morris(_) => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
+        };
+        md += head;
+        for (j, key) in self.keys.iter().enumerate() {
+            let f = index_fields(&o.indices, j);
+            let n = |x: f64| {
+                if x.is_finite() {
+                    format!("{x:.4}")
+                } else {
+                    "–".into()
+                }
+            };
+            let cells = match o.indices {
+                Indices::Sobol(_) => [
+                    n(f[0]),
+                    format!("{} to {}", n(f[1]), n(f[2])),
+                    n(f[3]),
+                    format!("{} to {}", n(f[4]), n(f[5])),
+                ],
+                Indices::Morris(_) => [
+                    n(f[0]),
+                    format!("{} to {}", n(f[1]), n(f[2])),
+                    n(f[3]),
+                    n(f[4]),
+                ],
+            };
+            md += &format!("| {key} | {} |\n", cells.join(" | "));
+        }
+        md
+    }
+}

@@ -1,0 +1,325 @@
+//! The runs of a sensitivity study and the indices of their outputs.
+
+use super::morris::{morris_indices, MorrisIndex};
+use super::sobol::{sobol_indices, SobolIndex};
+use super::{bootstrap, design, files, Method, Model, Sensitivity};
+use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
+use crate::ensemble::{member_offsets, Perturbation};
+use crate::error::StudyError;
+use crate::figures::mean;
+use crate::run::override_of;
+use crate::sample::MAX_RUNS;
+use crate::Progress;
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// One run: member k of design point `point`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunRow {
+    /// Design point, from 0, in the design's order.
+    pub point: usize,
+    /// Member k (0 without members).
+    pub k: i32,
+    /// The outputs ([`files::OUTPUTS`] or `f`), or why the run failed.
+    pub outcome: Result<Vec<f64>, String>,
+    /// Wall time of the simulation, s.
+    pub wall_time_s: f64,
+}
+
+/// The indices of every input for one output.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Indices {
+    /// μ*, μ, σ per input.
+    Morris(Vec<MorrisIndex>),
+    /// S1, ST per input; `None` for an output that does not vary.
+    Sobol(Option<Vec<SobolIndex>>),
+}
+
+/// One output's analysis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputIndices {
+    /// The output's name.
+    pub name: String,
+    /// Indices of its ensemble mean.
+    pub indices: Indices,
+    /// Mean within-point variance of the members / variance of every
+    /// run's output (None with one member, or no variance).
+    pub chaos_share: Option<f64>,
+}
+
+/// A finished sensitivity study.
+#[derive(Clone, Debug)]
+pub struct SensitivityResult {
+    /// The study as given.
+    pub study: Sensitivity,
+    /// The inputs (the keys, then `dummy`).
+    pub keys: Vec<String>,
+    /// The outputs' names.
+    pub outputs: Vec<String>,
+    /// The design in the unit cube, one row per point.
+    pub design: Vec<Vec<f64>>,
+    /// The inputs' values of each point.
+    pub values: Vec<Vec<f64>>,
+    /// Every run, point by point, members in the order of k.
+    pub runs: Vec<RunRow>,
+    /// The ensembles' rule, if K > 1.
+    pub perturbation: Option<String>,
+    /// The indices per output, or the first failed run.
+    pub analysis: Result<Vec<OutputIndices>, String>,
+}
+
+fn spec(message: String) -> StudyError {
+    StudyError::Spec(message)
+}
+
+/// Refuses, before any run: no keys, a key twice, a sample size below the
+/// estimator's least (Sobol: N a power of 2, ≥ 16, at most 10 inputs;
+/// Morris: r ≥ 2, an even p ≥ 2), K = 0, more than [`MAX_RUNS`] runs, a
+/// key no run can set.
+pub fn check(s: &Sensitivity) -> Result<(), StudyError> {
+    let keys = s.keys();
+    if s.ranges.is_empty() {
+        return Err(spec("give at least one --vary key=lo:hi".into()));
+    }
+    if let Some((i, k)) = keys
+        .iter()
+        .enumerate()
+        .find(|(i, k)| keys[..*i].contains(k))
+    {
+        let what = if i == s.ranges.len() {
+            "--dummy's input"
+        } else {
+            "the key"
+        };
+        return Err(spec(format!("--vary {k}: {what} is varied twice")));
+    }
+    let n = s.samples;
+    match s.method {
+        Method::Sobol if n < MIN_SOBOL_SAMPLES || !n.is_power_of_two() => Err(spec(format!(
+            "--samples {n}: Sobol indices need N a power of 2 and at least {MIN_SOBOL_SAMPLES} \
+             (SALib's guidance: 500 or more per input)"
+        ))),
+        Method::Sobol if 2 * keys.len() > super::sequence::MAX_DIMENSIONS => Err(spec(format!(
+            "--vary: {} inputs; Sobol indices take at most {} (the sequence's dimensions / 2): \
+             screen them first with --method morris",
+            keys.len(),
+            super::sequence::MAX_DIMENSIONS / 2
+        ))),
+        Method::Morris { .. } if n < MIN_TRAJECTORIES => Err(spec(format!(
+            "--samples {n}: Morris needs at least {MIN_TRAJECTORIES} trajectories (σ), \
+             10 to 50 usual"
+        ))),
+        Method::Morris { levels } if levels < 2 || levels % 2 == 1 => Err(spec(format!(
+            "--levels {levels}: Morris's grid needs an even number of levels >= 2 \
+             ({DEFAULT_LEVELS} usual)"
+        ))),
+        _ => Ok(()),
+    }?;
+    if s.members == 0 {
+        return Err(spec("--members 0: give 1 (one run a point) or more".into()));
+    }
+    if s.runs() > MAX_RUNS {
+        return Err(spec(format!(
+            "--samples {n}: {} runs; a study takes at most {MAX_RUNS} (1e5 runs)",
+            s.runs()
+        )));
+    }
+    check_model(s)
+}
+
+fn check_model(s: &Sensitivity) -> Result<(), StudyError> {
+    match &s.model {
+        Model::Case(base) => {
+            let keys: Vec<String> = s.ranges.iter().map(|r| r.key.clone()).collect();
+            let values: Vec<toml::Value> =
+                s.ranges.iter().map(|r| toml::Value::Float(r.lo)).collect();
+            crate::sweep::check_keys(base, &keys, &values)
+        }
+        Model::Function(f) if s.members > 1 => Err(spec(format!(
+            "--members {}: a test function ({f:?}) has no chaos to sample",
+            s.members
+        ))),
+        Model::Function(f) => match f.inputs() {
+            Some(n) if n != s.ranges.len() => Err(spec(format!(
+                "--vary: {f:?} takes {n} inputs, {} given",
+                s.ranges.len()
+            ))),
+            _ => Ok(()),
+        },
+    }
+}
+
+impl Sensitivity {
+    /// The design: in the unit cube, and scaled to the keys' ranges
+    /// (`dummy` over [0, 1]).
+    fn design(&self) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+        let d = self.keys().len();
+        let unit = match self.method {
+            Method::Morris { levels } => design::morris(d, self.samples, levels, self.seed),
+            Method::Sobol => design::saltelli(d, self.samples, self.seed),
+        };
+        let scale = |row: &Vec<f64>| {
+            row.iter()
+                .enumerate()
+                .map(|(j, u)| match self.ranges.get(j) {
+                    Some(r) => r.lo + (r.hi - r.lo) * u,
+                    None => *u,
+                })
+                .collect()
+        };
+        let values = unit.iter().map(scale).collect();
+        (unit, values)
+    }
+
+    /// Runs every design point's members on `jobs` threads and computes
+    /// the indices of every output.
+    pub fn run(&self, progress: Progress) -> Result<SensitivityResult, StudyError> {
+        self.check()?;
+        let (unit, values) = self.design();
+        let perturbation = self.perturbation()?;
+        let ks = if self.members > 1 {
+            member_offsets(self.members)
+        } else {
+            vec![0]
+        };
+        let jobs: Vec<(usize, i32)> = (0..values.len())
+            .flat_map(|p| ks.iter().map(move |&k| (p, k)))
+            .collect();
+        let finished = AtomicUsize::new(0);
+        progress(0, jobs.len());
+        let one = |&(point, k): &(usize, i32)| {
+            let (outcome, wall_time_s) = self.run_one(&values[point], k);
+            progress(finished.fetch_add(1, Ordering::Relaxed) + 1, jobs.len());
+            RunRow {
+                point,
+                k,
+                outcome,
+                wall_time_s,
+            }
+        };
+        let runs: Vec<RunRow> =
+            crate::pool(self.jobs)?.install(|| jobs.par_iter().map(one).collect());
+        let outputs = self.output_names();
+        let analysis = analyse(self, &unit, &runs, outputs.len(), &outputs);
+        Ok(SensitivityResult {
+            study: self.clone(),
+            keys: self.keys(),
+            outputs,
+            design: unit,
+            values,
+            runs,
+            perturbation: perturbation.map(|p| p.rule()),
+            analysis,
+        })
+    }
+
+    fn output_names(&self) -> Vec<String> {
+        match self.model {
+            Model::Case(_) => files::OUTPUTS.iter().map(|s| s.to_string()).collect(),
+            Model::Function(_) => vec!["f".to_string()],
+        }
+    }
+
+    /// The ensembles' rule at the case's own values (for summary.json);
+    /// each point takes it at its own values.
+    fn perturbation(&self) -> Result<Option<Perturbation>, StudyError> {
+        match &self.model {
+            Model::Case(base) if self.members > 1 => Ok(Some(Perturbation::of(&base.load(&[])?)?)),
+            _ => Ok(None),
+        }
+    }
+
+    /// Member k of the point `values`: its outputs and wall time.
+    fn run_one(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
+        let base = match &self.model {
+            Model::Function(f) => return (Ok(vec![f.value(values)]), 0.0),
+            Model::Case(base) => base,
+        };
+        let mut overrides = Vec::new();
+        for (r, v) in self.ranges.iter().zip(values) {
+            match override_of(&r.key, &toml::Value::Float(*v)) {
+                Ok(o) => overrides.push(o),
+                Err(e) => return (Err(e), 0.0),
+            }
+        }
+        if k != 0 {
+            let member = base
+                .load(&overrides)
+                .map_err(|e| e.to_string())
+                .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
+                .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
+            match member {
+                Ok(o) => overrides.push(o),
+                Err(e) => return (Err(e), 0.0),
+            }
+        }
+        match base.run(&overrides) {
+            Ok(run) => (Ok(files::outputs_of(&run).to_vec()), run.wall_time_s),
+            Err(e) => (Err(e), 0.0),
+        }
+    }
+}
+
+/// The indices of each output's ensemble mean, and its chaos share; the
+/// first failed run's message if any failed (there is no estimator with
+/// holes).
+fn analyse(
+    s: &Sensitivity,
+    unit: &[Vec<f64>],
+    runs: &[RunRow],
+    count: usize,
+    names: &[String],
+) -> Result<Vec<OutputIndices>, String> {
+    if let Some((row, e)) = runs
+        .iter()
+        .find_map(|r| r.outcome.as_ref().err().map(|e| (r, e)))
+    {
+        return Err(format!(
+            "design point {} (member k = {}) failed: {e}",
+            row.point + 1,
+            row.k
+        ));
+    }
+    let d = s.keys().len();
+    let members = runs.len() / unit.len();
+    let output = |o: usize| {
+        let all: Vec<f64> = runs
+            .iter()
+            .map(|r| r.outcome.as_ref().map_or(f64::NAN, |v| v[o]))
+            .collect();
+        let means: Vec<f64> = all.chunks(members).map(mean).collect();
+        let indices = match s.method {
+            Method::Morris { levels } => Indices::Morris(morris_indices(
+                unit,
+                &means,
+                d,
+                levels,
+                bootstrap::RESAMPLES,
+                s.seed,
+            )),
+            Method::Sobol => Indices::Sobol(sobol_indices(&means, d, bootstrap::RESAMPLES, s.seed)),
+        };
+        OutputIndices {
+            name: names[o].clone(),
+            indices,
+            chaos_share: chaos_share(&all, members),
+        }
+    };
+    Ok((0..count).map(output).collect())
+}
+
+/// Mean over the points of the members' variance (n − 1) over the
+/// variance (n) of every run (`all`, `members` runs a point); None for
+/// one member or outputs that do not vary.
+pub fn chaos_share(all: &[f64], members: usize) -> Option<f64> {
+    if members < 2 {
+        return None;
+    }
+    let within: Vec<f64> = all
+        .chunks(members)
+        .map(|m| bootstrap::sd(m).powi(2))
+        .collect();
+    let m = mean(all);
+    let total = all.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / all.len() as f64;
+    (total > 0.0).then(|| mean(&within) / total)
+}
