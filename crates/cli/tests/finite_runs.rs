@@ -87,9 +87,19 @@ fn refused(rel: &str, sets: &[&str], key: &str, range: &str) {
 #[test]
 fn an_increment_below_round_off_is_refused() {
     let sets = ["run.increment=1e-15", "run.travel=1e-14"];
-    refused("cases/paper/original.toml", &sets, "run.increment", ">= 1e-9");
+    refused(
+        "cases/paper/original.toml",
+        &sets,
+        "run.increment",
+        ">= 1e-9",
+    );
     let deep = ["blade.depth=9.2e18"];
-    refused("cases/tools/cohesive.toml", &deep, "run.increment", ">= 1e-9");
+    refused(
+        "cases/tools/cohesive.toml",
+        &deep,
+        "run.increment",
+        ">= 1e-9",
+    );
 }
 
 /// The cases that grew without bound (aborted at 4 GiB), refused before
