@@ -54,7 +54,7 @@ def run(soilcut, case, rule, folder, ensemble=False):
         return folder
     cmd = [soilcut, "run", case, "--out", str(folder), "--force", "--quiet", "--no-plots"]
     # Both rules under the explicit time scheme: the sign rule has no
-    # midpoint force (docs/model.md §19), so that only the rule differs.
+    # midpoint force (docs/model.md §2.12), so that only the rule differs.
     cmd += ["--set", f"choices.face_friction={rule}", "--set", "run.time_scheme=explicit"]
     if ensemble:
         cmd += ["--ensemble", str(MEMBERS), "--jobs", "1"]
@@ -176,7 +176,7 @@ def write(results, soilcut_version):
         "issue 20 (±φw, −φw at zero slip, (M9)), `mobilised` the default since",
         "(m = clamp(s / 0.05, −1, 1), (M41)). Both run under the explicit time",
         'scheme (`run.time_scheme = "explicit"`; the sign rule has no midpoint',
-        "force, docs/model.md §19), at the increment the cases then default to",
+        "force, docs/model.md §2.12), at the increment the cases then default to",
         "(d/500 on the vertex ground), so that only the rule differs.",
         "",
         "Forces are P/(γ0 d²). Cases whose two histories are identical bit for bit",

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The vertex ground (issue 28, docs/model.md §19) judged by the ensemble rule:
+# The vertex ground (issue 28, docs/model.md §1.2, §2.12) judged by the ensemble rule:
 # for each paper case it supports, ensembles of 7 (`soilcut run --ensemble 7`)
 # under the explicit rule at increments d/250, d/500 and d/1250 with
 # vertices d/50 apart, and Fig. 5 and Table 1 HS at d/1250 with vertices

@@ -69,7 +69,7 @@ def test_a_failed_run_is_a_row(refined):
 def test_samples_and_tuples(refined):
     # At this increment (d/20) half an increment of hardening is about 4°
     # of φ, so the midpoint force (the vertex ground's default) overshoots
-    # where a band re-shears hardening soil (docs/model.md §19): the
+    # where a band re-shears hardening soil (docs/model.md §2.12): the
     # stronger soil's larger force is the explicit rule's claim here.
     case = short(refined).update({"run.time_scheme": "explicit"})
     grid = soilcut.sweep(case, {"soil.friction.peak": (33, 37, 3)}, jobs=1)

@@ -114,7 +114,7 @@ fn missing_key() {
 }
 
 /// What the vertex ground does not do is refused by `run` and `check`
-/// alike, naming its key (docs/model.md §19).
+/// alike, naming its key (docs/model.md §9).
 #[test]
 fn the_time_scheme_is_refused_where_it_cannot_run() {
     assert_bad_input(

@@ -253,7 +253,7 @@ pub enum TimeScheme {
     /// state half an increment on, ut + ½ Δut, wherever its footprint
     /// holds soil a band has sheared (on fresh soil, as explicit, so the
     /// first increment is Coulomb's wedge). The vertex ground only
-    /// (docs/model.md §19).
+    /// (docs/model.md §2.12).
     MidpointForce,
 }
 

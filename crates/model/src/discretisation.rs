@@ -1,6 +1,6 @@
 //! What the simulation asks of the ground it runs on, the node grid
 //! (`simulation::node_grid`, docs/model.md §9) or the vertex ground
-//! (`vertices::cutting`, §19): one question, one method, so that the
+//! (`vertices::cutting`, §1.2): one question, one method, so that the
 //! simulation decides the discretisation once, when it is set up, and
 //! never branches on it again.
 //!

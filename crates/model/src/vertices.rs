@@ -1,4 +1,4 @@
-//! A ground whose points move with the soil (issue 28; docs/model.md §19,
+//! A ground whose points move with the soil (issue 28; docs/model.md §1.2-§7,
 //! measured in docs/performance.md, "Issue 28, second step: the vertex
 //! ground"): the free surface
 //! as a polyline of vertices (x_k, y_k), x strictly increasing, vertex 0

@@ -44,7 +44,7 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
     }
 }
 
-/// `case` on the vertex ground (docs/model.md §19), vertices d/`per_depth`
+/// `case` on the vertex ground (docs/model.md §1.2), vertices d/`per_depth`
 /// apart, with the sampled search's default K (it has no exhaustive one).
 /// The time scheme is the explicit one.
 pub fn on_vertices(mut case: Case, per_depth: f64) -> Case {

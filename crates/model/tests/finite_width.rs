@@ -182,7 +182,7 @@ fn vanishing_widths_are_refused_naming_the_key() {
     }
 }
 
-/// On the vertex ground (docs/model.md §19) the first increment is McKyes
+/// On the vertex ground (docs/model.md §1.2) the first increment is McKyes
 /// & Ali's least force, never below it: the band may emerge between
 /// vertices and then snaps to one within half the spacing, so the error is
 /// second order in that distance (1e-4 with vertices d/50 apart, 1e-7 with

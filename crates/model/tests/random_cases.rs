@@ -329,7 +329,7 @@ fn the_default_grid_is_accurate_on_random_cases() {
     }
 }
 
-/// The same random cases on the vertex ground (docs/model.md §19), where it
+/// The same random cases on the vertex ground (docs/model.md §1.2), where it
 /// runs: vertical blades at constant depth, vertices d/100 to d/25 apart.
 /// Positive finite forces, mass kept, every piece's state physical, and
 /// the chosen band never more than the snap's 0.1 % above the least of the

@@ -1,5 +1,5 @@
 //! The simulation on the vertex ground (`run.vertex_spacing` > 0,
-//! docs/model.md §19): Coulomb's wedge on the first increment, mass over a
+//! docs/model.md §1.2-§7): Coulomb's wedge on the first increment, mass over a
 //! run, the node grid's results where the two agree by design, and a cost
 //! that follows what changes (its vertices do not multiply with the
 //! resolution).

@@ -12,9 +12,8 @@ pub const MAX_NODES: f64 = 5.0e7;
 
 /// Largest number of vertices the vertex ground may have at the start
 /// (memory guard: the model holds about 0.2 kB a vertex, `soilcut run`
-/// 40 bytes more a vertex for each of its up to 120 frames; measured on
-/// Fig. 5, 16 MB at 1e4 vertices, 83 MB at 1e5, 814 MB at 1e6 over 16
-/// increments, docs/guide/case-keys.md, "Limits").
+/// 40 bytes more a vertex for each of its up to 120 frames; measured in
+/// docs/guide/case-keys.md, "Limits").
 pub const MAX_VERTICES: f64 = 1.0e6;
 
 /// Most increments a run may take (memory guard: `history.csv` holds a

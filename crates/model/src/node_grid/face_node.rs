@@ -1,5 +1,5 @@
 //! Where the blade face lies on the node grid x_i = i h, h = v0
-//! (docs/model.md §9): on node b, which holds the soil column at the face.
+//! (docs/model.md §9.1): on node b, which holds the soil column at the face.
 //! Node i ≥ b is i − b spacings from the face, and the trapezoid rule over
 //! the nodes from the face weighs the face's node by ½. The surface, the
 //! band, the search and the update take both from here.

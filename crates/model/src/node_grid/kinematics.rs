@@ -1,4 +1,4 @@
-//! The update of the free surface after an increment (docs/model.md §3).
+//! The update of the free surface after an increment (docs/model.md §3, §9.1).
 //!
 //! **Slip line** (original model, Fig. 1b; and any band narrower than a
 //! node): the block above the slip line A→j translates by v0 (1, tan β*).

@@ -1,4 +1,4 @@
-//! Avalanching (docs/model.md §6): sand cannot stand steeper than its
+//! Avalanching (docs/model.md §6, §9.1): sand cannot stand steeper than its
 //! angle of repose θr.
 //!
 //! With s = Δx tan θr, the surface must satisfy |y_{i+1} − y_i| ≤ s. The

@@ -1,5 +1,5 @@
 //! The shear band of one node-grid candidate (paper Fig. 3a;
-//! docs/model.md §3.2, §9): its lower boundary from the tip to emergence
+//! docs/model.md §3.2, §9.1): its lower boundary from the tip to emergence
 //! node j, its nodes' relative positions, its area below the surface and
 //! its footprint in nodes.
 

@@ -1,6 +1,6 @@
 //! The principle of minimum effort: the grid search over candidate emergence
 //! nodes for the admissible mechanism of least force (paper, "Numerical
-//! formulation"; docs/model.md §2).
+//! formulation"; docs/model.md §2, §9.1).
 //!
 //! Candidate j is the straight line from the blade tip to surface node j
 //! (`line`: its angle (M2), admissibility (M3) and weight (M5) from running

@@ -1,5 +1,5 @@
 //! The free surface of the node grid: nodes on a fixed grid x_i = i h,
-//! h = v0 (docs/model.md §9), each carrying the height of the surface, the
+//! h = v0 (docs/model.md §9.1), each carrying the height of the surface, the
 //! accumulated shearing displacement ut of the soil there (with the
 //! friction and dilation angles it implies) and the unit weight γ of its
 //! column. The blade sits on node b = (increments done), and a block

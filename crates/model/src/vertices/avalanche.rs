@@ -1,4 +1,4 @@
-//! Avalanching on the vertex ground (M50; docs/model.md §19, and §6 for
+//! Avalanching on the vertex ground (M50; docs/model.md §6, and §9.1 for
 //! the node grid):
 //! no piece may be steeper than the angle of repose θr.
 //!

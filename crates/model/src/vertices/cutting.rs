@@ -9,7 +9,7 @@
 //! (the crescents in the search, the side heaps a field at fixed x that
 //! the vertices spill into, `spill`), at constant depth or on a depth path,
 //! in a bin or not, under every band rule, the sampled search or the
-//! exhaustive one (docs/model.md §1.2, §19).
+//! exhaustive one (docs/model.md §1.2, §2.8).
 
 use super::avalanche::Settled;
 use super::midpoint::{half_slip, midpoint_force};

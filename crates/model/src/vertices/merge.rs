@@ -1,4 +1,4 @@
-//! Joining pieces (docs/model.md §19): a vertex goes where a piece it ends
+//! Joining pieces (docs/model.md §3.4, §3.8): a vertex goes where a piece it ends
 //! is too short to matter (`merge_close`, every increment, below v0/4) or
 //! where it carries no information (`merge_quiet`, with
 //! `run.merge_tolerance` > 0): the pieces either side of it hold nearly

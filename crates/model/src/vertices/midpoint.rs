@@ -1,5 +1,5 @@
 //! The midpoint force (M51; `run.time_scheme = "midpoint-force"`,
-//! docs/model.md §19): the band the search chose at the start of the increment keeps its
+//! docs/model.md §2.12): the band the search chose at the start of the increment keeps its
 //! geometry and weight, and takes its strength from the state half an
 //! increment on.
 //!

@@ -1,5 +1,5 @@
 //! One increment's motion of the soil on the vertex ground (M48;
-//! docs/model.md §19, and §3 for the node grid).
+//! docs/model.md §3, and §9.1 for the node grid).
 //!
 //! The lower boundary of the band is the line from the tip (x_0, −d) to the
 //! emergence point x_e, of slope tan β = (y(x_e) + d) / (x_e − x_0); the

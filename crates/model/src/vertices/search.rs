@@ -1,5 +1,5 @@
 //! The search for the least force on the vertex ground (M49;
-//! docs/model.md §19, and §2 for the node grid): the band may emerge
+//! docs/model.md §2.1, §2.8, §2.11, and §9.1 for the node grid): the band may emerge
 //! anywhere on the ground, not only at vertices.
 //!
 //! For an emergence point x on piece k (x_k ≤ x < x_{k+1}), with the tip at
@@ -35,8 +35,9 @@ use crate::laws::BandAngles;
 
 /// Local minima of the samples within this fraction of the least are
 /// narrowed, and the first stage prunes against it (the sampled search's
-/// slack, (M47); the node grid's 2 % gave the same ensembles with twice
-/// the Eq. (1) evaluations, docs/model.md §19).
+/// slack, (M47); measured against the former 2 % in docs/performance.md,
+/// "Issue 28, fourth step: the midpoint force and d/350", with the
+/// ensembles of `docs/studies/vertex-ground/`; docs/model.md §2.8).
 const SLACK: f64 = 0.005;
 /// A vertex near the least's emergence point takes the band if its force
 /// is within this fraction of the least.
@@ -46,16 +47,16 @@ const SNAP_SLACK: f64 = 1e-3;
 const LEAD: usize = 8;
 /// tan 10°: a band emerging on a piece seen from the tip at a flatter
 /// angle has a footprint of at least dB / tan β along the ground, and the
-/// search samples it coarser in proportion (M52, `far_spacing`); at 15° or
-/// 20° Fig. 5 in an 8 d bin fails the ensemble rule (6.6 and 23.6 times
-/// its tolerance: docs/model.md §19).
+/// search samples it coarser in proportion (M52, `far_spacing`); 10°
+/// against 15° and 20° is measured in docs/performance.md, "Issue 39,
+/// second step: flat bands sampled by their footprint (M52)" (docs/model.md
+/// §2.11).
 const FLAT_BAND: f64 = 0.176_326_980_708_464_97;
 /// A vertex closer than this many h (`run.vertex_spacing`) to the last
 /// vertex sampled takes no sample of its own (M54, `VertexSearch::crowded`):
-/// crowded vertices lie a few v0 apart, far closer than h / 4, so h / 2
-/// saves no more time, and at h / 2 Fig. 5 under the explicit rule at its
-/// default d/500 fails the ensemble rule (1.02 times its tolerance), at h
-/// Fig. 5 raked at 60° (1.43) (docs/model.md §19).
+/// crowded vertices lie a few v0 apart, far closer than h / 4; h / 4
+/// against h / 2 and h is measured in docs/performance.md, "Issue 39,
+/// fourth step: crowded vertices sampled once (M54)" (docs/model.md §2.11).
 const CROWDED: f64 = 0.25;
 /// 1 / golden ratio.
 const INVERSE_PHI: f64 = 0.618_033_988_749_894_8;

@@ -1,4 +1,4 @@
-//! Candidates on undisturbed ground, in closed form (docs/model.md §7.3):
+//! Candidates on undisturbed ground, in closed form (docs/model.md §9.1):
 //! beyond the last disturbed node the surface is flat, fresh and of unit
 //! weight γ0, so a candidate's weight is a function of its distance alone
 //! (M32) and its band has the fresh soil's angles. Those candidates are

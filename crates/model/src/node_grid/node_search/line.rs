@@ -1,4 +1,4 @@
-//! The candidate lines (docs/model.md §2.1-2.3). Candidate j is the
+//! The candidate lines (docs/model.md §2.1-2.3, §9.1). Candidate j is the
 //! straight line from the blade tip A = (x_b, −d) to surface node j. With
 //! r_j = (y_j + d) / (j − b) (rise per node, so that tan β_j = r_j / Δx on
 //! the grid, (M2); for a raked blade the grid is sheared and `Rake`

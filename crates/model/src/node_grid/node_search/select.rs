@@ -1,4 +1,4 @@
-//! Minimum effort and ties (docs/model.md §2.8): the increment's mechanism
+//! Minimum effort and ties (docs/model.md §2.8, §9.1): the increment's mechanism
 //! is the admissible candidate of least force, P* = min_j P_j (M11).
 //! Candidates whose force is within `TIE_TOLERANCE` (relative) of the
 //! minimum count as equal, and the one nearest the blade wins, so round-off
