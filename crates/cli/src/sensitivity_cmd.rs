@@ -34,8 +34,8 @@ pub struct SensitivityArgs {
     /// morris (screening: μ*, σ of elementary effects) or sobol (first-order and total indices).
     #[arg(long, value_enum)]
     method: MethodArg,
-    /// Morris: trajectories r [default: 20]; Sobol: base points N, a power of 2 [default: 512];
-    /// the runs are r (keys + 1) or N (keys + 2), times --members.
+    /// Morris: trajectories r (20 when not given); Sobol: base points N, a power of 2 (512 when
+    /// not given); the runs are r (keys + 1) or N (keys + 2), times --members.
     #[arg(long, value_name = "N")]
     samples: Option<usize>,
     /// Levels p of Morris's grid (even).

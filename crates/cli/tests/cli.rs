@@ -736,6 +736,7 @@ fn every_option_shows_one_default_at_most() {
         "fit",
         "converge",
         "accuracy",
+        "sensitivity",
     ];
     for command in commands {
         let o = Command::new(env!("CARGO_BIN_EXE_soilcut"))
@@ -743,11 +744,24 @@ fn every_option_shows_one_default_at_most() {
             .output()
             .unwrap();
         let help = stdout(&o);
-        // An option's entry runs from its `-` line to the next one.
-        for entry in help.split("\n  -").skip(1) {
+        // An option's entry runs from its `-` line (indented by at most six
+        // columns: `  -q, --quiet` or `      --vary`) to the next one.
+        let mut entries: Vec<String> = Vec::new();
+        for line in help.lines() {
+            let indent = line.len() - line.trim_start().len();
+            if line.trim_start().starts_with('-') && indent <= 6 {
+                entries.push(String::new());
+            }
+            if let Some(entry) = entries.last_mut() {
+                entry.push_str(line);
+                entry.push('\n');
+            }
+        }
+        assert!(!entries.is_empty(), "{command}: no options read in {help}");
+        for entry in entries {
             assert!(
                 entry.matches("[default").count() <= 1,
-                "{command}: two defaults in -{entry}"
+                "{command}: two defaults in {entry}"
             );
         }
     }

@@ -21,13 +21,14 @@ use crate::sample::Vary;
 pub mod bootstrap;
 pub mod design;
 mod files;
+mod outputs;
 pub mod function;
 pub mod morris;
 mod runs;
 pub mod sequence;
 pub mod sobol;
 
-pub use files::{MEANINGS, OUTPUTS};
+pub use outputs::{MEANINGS, OUTPUTS};
 pub use function::Function;
 pub use runs::{RunRow, SensitivityResult};
 

@@ -2,7 +2,7 @@
 
 use super::morris::{morris_indices, MorrisIndex};
 use super::sobol::{sobol_indices, SobolIndex};
-use super::{bootstrap, design, files, Method, Model, Sensitivity};
+use super::{bootstrap, design, outputs, Method, Model, Sensitivity};
 use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
 use crate::ensemble::{member_offsets, Perturbation};
 use crate::error::StudyError;
@@ -20,7 +20,7 @@ pub struct RunRow {
     pub point: usize,
     /// Member k (0 without members).
     pub k: i32,
-    /// The outputs ([`files::OUTPUTS`] or `f`), or why the run failed.
+    /// The outputs ([`outputs::OUTPUTS`] or `f`), or why the run failed.
     pub outcome: Result<Vec<f64>, String>,
     /// Wall time of the simulation, s.
     pub wall_time_s: f64,
@@ -215,7 +215,7 @@ impl Sensitivity {
 
     fn output_names(&self) -> Vec<String> {
         match self.model {
-            Model::Case(_) => files::OUTPUTS.iter().map(|s| s.to_string()).collect(),
+            Model::Case(_) => outputs::OUTPUTS.iter().map(|s| s.to_string()).collect(),
             Model::Function(_) => vec!["f".to_string()],
         }
     }
@@ -254,7 +254,7 @@ impl Sensitivity {
             }
         }
         match base.run(&overrides) {
-            Ok(run) => (Ok(files::outputs_of(&run).to_vec()), run.wall_time_s),
+            Ok(run) => (Ok(outputs::outputs_of(&run).to_vec()), run.wall_time_s),
             Err(e) => (Err(e), 0.0),
         }
     }
