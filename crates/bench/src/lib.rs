@@ -13,6 +13,7 @@ pub fn shipped_case(path: &str, overrides: &[&str]) -> Case {
     soilcut_io::read_case(&root.join(path), &overrides)
         .expect("a valid shipped case")
         .case
+        .into_case()
 }
 
 /// A simulation of `case` stepped to u = `depths` blade depths: a

@@ -36,7 +36,7 @@ pub fn landscape(args: LandscapeArgs) -> Result<(), Failure> {
     args.moment.check(case, path)?;
     let out = target.out_or(&format!("{}-landscape", case.name));
     let claim = target.claim(&out)?;
-    let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
+    let mut sim = Simulation::start(case);
     let taken = match (args.moment.at, args.moment.every) {
         (Some(at), _) => one(&mut sim, &loaded, at, path)?,
         (None, every) => map(&mut sim, &loaded, every.unwrap_or(1.0), path)?,

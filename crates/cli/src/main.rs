@@ -22,10 +22,10 @@ mod sweep_folder;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use soilcut_io::{
-    read_case, record_kept, write_run_into, InputError, LoadedCase, OutputDir, OutputError,
+    read_case, record_case, write_run_into, InputError, LoadedCase, OutputDir, OutputError,
     Override, PictureError, RecordedRun,
 };
-use soilcut_model::{Case, Simulation};
+use soilcut_model::Case;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -439,14 +439,13 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let claim = target.claim(&out)?;
 
     warn_accuracy(case, quiet);
-    let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
     let RecordedRun {
         files,
         summary,
         stopped,
         ..
-    } = record_kept(&loaded, &mut sim, || bar.inc(1));
+    } = record_case(&loaded, || bar.inc(1));
     bar.finish_and_clear();
     if let Some(e) = stopped {
         return Err(stopped_run(path, &out, summary.steps, e, || {

@@ -155,7 +155,8 @@ impl Common {
             .load(&[])
             .map_err(|e| Failure::input(path, e))?
             .case
-            .name;
+            .name
+            .clone();
         Ok((base, self.target.out_or(&format!("{name}-{study}"))))
     }
 
@@ -298,7 +299,11 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         .map_err(fail)?;
     let compare: Compare = args.objective.parse().map_err(fail)?;
     let method: Method = args.method.parse().map_err(fail)?;
-    let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
+    let case = base
+        .load(&[])
+        .map_err(|e| Failure::input(path, e))?
+        .case
+        .into_case();
     let width = measured_width(args.width, &case, "--width").map_err(fail)?;
     let title = case.title;
     let tests = tests_of(&args, base, width)?;

@@ -291,7 +291,7 @@ unsafe fn simulation(
     // SAFETY: by the caller's contract.
     let overrides = unsafe { overrides(sets, n_sets) }?;
     let loaded = read(arg, &overrides)?;
-    let sim = Simulation::new(&loaded.case).map_err(|e| input(&e.into()))?;
+    let sim = Simulation::start(&loaded.case);
     Ok((sim, Some(loaded)))
 }
 
@@ -884,7 +884,7 @@ mod tests {
     #[test]
     fn a_panic_on_a_handle_poisons_it_for_every_later_call() {
         let text = include_str!("../../../cases/paper/original.toml");
-        let sim = Simulation::new(&parse_case(text, &[]).unwrap().case).unwrap();
+        let sim = Simulation::start(&parse_case(text, &[]).unwrap().case);
         let handle = Box::into_raw(Box::new(SoilcutSimulation::new((sim, None))));
         unsafe {
             let code = with_handle(handle, |_| panic!("inside the lock"));

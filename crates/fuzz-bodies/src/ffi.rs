@@ -328,7 +328,7 @@ impl Calls<'_> {
             Ok(loaded) => {
                 let what = "soilcut_new_from_toml of a case Rust reads";
                 self.expect(code, &[SOILCUT_OK], null(), what);
-                self.keep(i, sim, loaded.case);
+                self.keep(i, sim, loaded.case.into_case());
             }
             Err(e) => {
                 let what = format!("soilcut_new_from_toml of a case Rust refuses ({e})");
@@ -572,7 +572,7 @@ impl Calls<'_> {
         }
         self.expect(code, &[allowed], null(), "soilcut_restore");
         if let Ok(restored) = model {
-            let case = restored.case().clone();
+            let case = restored.case().clone().into_case();
             self.keep(i, sim, case);
             self.reach(Outcome::Restored);
         }

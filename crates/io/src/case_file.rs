@@ -11,7 +11,7 @@ use run::RunFile;
 use serde::{Deserialize, Serialize};
 use soilcut_model::{
     AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade, Case, CaseError, Choices,
-    Class, FaceFrictionRule, Model, SnapshotError, Soil, UnitWeightRule,
+    Class, FaceFrictionRule, Model, SnapshotError, Soil, UnitWeightRule, ValidCase,
 };
 use std::path::Path;
 
@@ -231,8 +231,9 @@ struct AngleFile {
 /// A case read from a file: the model's [`Case`] and its resolved file form.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoadedCase {
-    /// The case as the model takes it, every default filled in.
-    pub case: Case,
+    /// The case as the model takes it, every default filled in, validated
+    /// once here with the keys named as the file wrote them.
+    pub case: ValidCase,
     resolved: CaseFile,
     /// What the file wrote in the form of an earlier version, and what to
     /// write instead: one line each, for the front ends to show.
@@ -241,13 +242,12 @@ pub struct LoadedCase {
 
 impl LoadedCase {
     /// The case as a running simulation has steered it
-    /// (`Simulation::advance_to`): `case`'s depth path and travel, in both
-    /// forms; every other key stays this case's.
-    pub fn steered(&self, case: &Case) -> LoadedCase {
+    /// (`Simulation::advance_to`): `case`, the case of a simulation started
+    /// from this one, with its depth path and travel in both forms.
+    pub fn steered(&self, case: &ValidCase) -> LoadedCase {
         let mut loaded = self.clone();
         let path = &case.blade.depth_path;
-        loaded.case.blade.depth_path = path.clone();
-        loaded.case.run.travel = case.run.travel;
+        loaded.case = case.clone();
         loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone());
         loaded.resolved.run.travel = case.run.travel;
         loaded
@@ -292,7 +292,7 @@ pub fn case_from_note(note: &[u8], case: &Case) -> Result<Option<LoadedCase>, Sn
     // The note is under the checksum: only bytes made by hand get here.
     let text = std::str::from_utf8(note).map_err(|e| invalid(format!("not UTF-8: {e}")))?;
     let loaded = parse_case(text, &[]).map_err(|e| invalid(e.to_string()))?;
-    if loaded.case != *case {
+    if *loaded.case != *case {
         return Err(invalid("not the case of its state".into()));
     }
     Ok(Some(loaded))
@@ -605,7 +605,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         },
         choices,
     };
-    case.validate().map_err(|e| key_as_written(e, &file))?;
+    let case = case.validated().map_err(|e| key_as_written(e, &file))?;
     Ok(LoadedCase {
         case,
         resolved: file,
@@ -1001,13 +1001,11 @@ mod tests {
     #[test]
     fn a_steered_case_reads_back_as_steered() {
         let loaded = parse_case(ORIGINAL, &[]).unwrap();
-        let mut case = loaded.case.clone();
+        let mut case = loaded.case.clone().into_case();
         case.blade.depth_path = vec![[0.0, 20.0], [31.5, 12.25]];
         case.run.travel = 123.5;
-        case.soil.cohesion = 7.0; // not steered: stays the case's
-        let steered = loaded.steered(&case);
+        let steered = loaded.steered(&case.clone().validated().unwrap());
         assert_eq!(steered.case.blade.depth_path, case.blade.depth_path);
-        assert_eq!(steered.case.soil.cohesion, loaded.case.soil.cohesion);
         let again = parse_case(&steered.resolved_toml(), &[]).unwrap();
         assert_eq!(again.case, steered.case);
     }

@@ -80,7 +80,8 @@ pub fn read_finished_run(dir: &Path) -> Result<FinishedRun, RunFilesError> {
     }
     let case = read_case(&case_path, &[])
         .map_err(|e| RunFilesError::new(&case_path, e))?
-        .case;
+        .case
+        .into_case();
     let frames_path = dir.join("frames.csv");
     let frames = if frames_path.exists() {
         Some(Columns::read(&frames_path)?)

@@ -15,8 +15,8 @@
 //! * [`read_measured_curve`]: a measured force-displacement curve (`u,force`,
 //!   optionally `weight`), read with the `csv` crate.
 //! * [`frames_csv`]: the surfaces captured during a run; [`read_finished_run`]
-//!   reads a finished run's files back for drawing; [`record_run`] runs a
-//!   simulation capturing the frames.
+//!   reads a finished run's files back for drawing; [`run_case`] runs a
+//!   case capturing the frames, [`record_case`] gives its files.
 //! * `write_run_dir`: a run's folder with its pictures (`draw_run_dir`),
 //!   the same from every front end (feature `pictures`).
 
@@ -75,4 +75,4 @@ pub use place::{
     abandon_outputs, check_output_dir, on_abandon, write_output_dir, write_output_dir_then,
     OutputDir, Published, Registered, MAX_NAME_BYTES, OUTPUT_MARKER,
 };
-pub use record::{record_files, record_kept, record_run, RecordedRun, ANIMATION_FRAMES};
+pub use record::{record_case, record_files, run_case, CaseRun, RecordedRun, ANIMATION_FRAMES};

@@ -25,7 +25,7 @@ fn case(name: &str, set: &[&str]) -> Case {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let file = root.join(format!("cases/validation/{name}.toml"));
     let set: Vec<Override> = set.iter().map(|s| s.parse().unwrap()).collect();
-    read_case(&file, &set).unwrap().case
+    read_case(&file, &set).unwrap().case.into_case()
 }
 
 fn column(r: &StepRecord, name: &str) -> f64 {

@@ -16,7 +16,7 @@ fn shortened(name: &str, per_depth: f64, travel_depths: Option<f64>) -> Case {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../cases")
         .join(name);
-    let mut case = read_case(&path, &[]).unwrap().case;
+    let mut case = read_case(&path, &[]).unwrap().case.into_case();
     let d = case.blade.depth;
     case.run.increment = d / per_depth;
     if let Some(depths) = travel_depths {

@@ -29,7 +29,7 @@ fn soilcut_stays_in_the_band_the_validation_page_claims_against_the_dem() {
             band["high"].as_f64().unwrap(),
         );
         let file = root.join(format!("cases/validation/{name}.toml"));
-        let mut case = read_case(&file, &[]).unwrap().case;
+        let mut case = read_case(&file, &[]).unwrap().case.into_case();
         case.run.travel = case.blade.depth;
         let history = Simulation::new(&case).unwrap().run_to_end(|_| {}).unwrap();
         let inside: Vec<f64> = history

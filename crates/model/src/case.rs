@@ -8,6 +8,7 @@
 
 mod defaults;
 mod error;
+mod valid;
 mod validate;
 mod warnings;
 
@@ -18,6 +19,7 @@ pub use defaults::{
     VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH, VERTEX_INCREMENTS_PER_DEPTH, VERTICES_PER_DEPTH,
 };
 pub use error::CaseError;
+pub use valid::ValidCase;
 pub use validate::{
     MAGNITUDE, MAX_MERGE_TOLERANCE, MAX_NODES, MAX_SAMPLES_PER_BAND, MAX_SAMPLES_PER_DEPTH,
     MAX_STEPS, MAX_VERTICES, ROUND_OFF, THINNEST_WIDTH,

@@ -7,7 +7,7 @@
 //! caller owns the loop, so the model can sit inside a robot simulator or
 //! a notebook; `run_to_end` is the whole case.
 
-use crate::case::{Case, CaseError, Ground};
+use crate::case::{Case, CaseError, Ground, ValidCase};
 use crate::discretisation::{Context, Discretisation};
 use crate::landscape::Candidate;
 use crate::laws::Laws;
@@ -66,7 +66,7 @@ impl Discretised {
 /// A running simulation of one case.
 #[derive(Clone, Debug)]
 pub struct Simulation {
-    case: Case,
+    case: ValidCase,
     laws: Laws,
     ground: Discretised,
     /// Increments done.
@@ -82,19 +82,23 @@ pub struct Simulation {
 impl Simulation {
     /// Validates the case and sets up flat ground.
     pub fn new(case: &Case) -> Result<Self, CaseError> {
-        case.validate()?;
+        Ok(Simulation::start(&case.clone().validated()?))
+    }
+
+    /// Sets up flat ground for a case already validated.
+    pub fn start(case: &ValidCase) -> Self {
         let laws = Laws::new(case);
         let ground = Discretised::flat(case, &laws);
         // Per blade for a blade of finite width, as `mass` is.
         let initial_mass = ground.get().mass();
-        Ok(Simulation {
+        Simulation {
             case: case.clone(),
             laws,
             ground,
             done: 0,
             initial_mass,
             failed: None,
-        })
+        }
     }
 
     /// The ground and what it is given of the simulation's state.
@@ -116,8 +120,8 @@ impl Simulation {
         }
     }
 
-    /// The case being run.
-    pub fn case(&self) -> &Case {
+    /// The case being run (as steered so far).
+    pub fn case(&self) -> &ValidCase {
         &self.case
     }
 

@@ -23,7 +23,7 @@ fn controlled(case: &Case, travel_depths: f64) -> (Vec<StepRecord>, Case) {
             .unwrap_or_else(|e| panic!("tick {k}, x = {x}: {e}"));
         records.extend(made);
     }
-    (records, sim.case().clone())
+    (records, sim.case().clone().into_case())
 }
 
 #[test]

@@ -282,7 +282,7 @@ fn steering_past_the_travel_checks_what_the_travel_changes() {
     let before = steered.snapshot();
     let far = 5.0e7 * steered.case().run.spacing();
     let e = steered.advance_to(far, Some(0.8 * d)).unwrap_err();
-    let mut expected = steered.case().clone();
+    let mut expected = steered.case().clone().into_case();
     expected.run.travel = far;
     expected.blade.depth_path.push([far, 0.8 * d]);
     let expected = expected.validate().unwrap_err();

@@ -8,8 +8,7 @@ use crate::errors::{case_error, detached, step_error, stopped_error};
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use soilcut_io::{record_kept, Columns, LoadedCase, OutputError, RecordedRun, RunTables};
-use soilcut_model::Simulation;
+use soilcut_io::{record_case, Columns, LoadedCase, OutputError, RecordedRun, RunTables};
 use std::path::PathBuf;
 
 /// A finished run (the extension's side of `soilcut.RunResult`).
@@ -106,8 +105,7 @@ pub fn run(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<RunRecords> {
     let case = Case::extract(case)?;
     let loaded = &case.get().loaded;
     crate::errors::warn_accuracy(py, loaded)?;
-    let mut sim = Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
-    let run = detached(py, || Ok(record_kept(loaded, &mut sim, || {})))?;
+    let run = detached(py, || Ok(record_case(loaded, || {})))?;
     let records = RunRecords::new(loaded.clone(), &run);
     match run.stopped {
         None => Ok(records),

@@ -4,7 +4,7 @@
 
 use crate::case::Case;
 use crate::convert::arrays;
-use crate::errors::{advance_error, case_error, detached, detached_map, snapshot_error};
+use crate::errors::{advance_error, detached, detached_map, snapshot_error};
 use crate::step::Step;
 use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -31,8 +31,7 @@ impl Simulation {
     fn new(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<Self> {
         let loaded = Case::extract(case)?.get().loaded.clone();
         crate::errors::warn_accuracy(py, &loaded)?;
-        let sim =
-            soilcut_model::Simulation::new(&loaded.case).map_err(|e| case_error(py, &e.into()))?;
+        let sim = soilcut_model::Simulation::start(&loaded.case);
         Ok(Simulation {
             sim,
             loaded: Some(loaded),

@@ -336,7 +336,7 @@ pub fn landscape_map<'py>(
     let native = Case::extract(case)?;
     let case = &native.get().loaded.case;
     check_landscape_every(case, "every", every).map_err(PyValueError::new_err)?;
-    let mut sim = Simulation::new(case).map_err(|e| case_error(py, &e.into()))?;
+    let mut sim = Simulation::start(case);
     let columns = detached(py, || map_of(&mut sim, every))?;
     Ok((
         arrays(py, &landscape_map_columns(&columns))?,
@@ -356,7 +356,7 @@ pub fn landscape<'py>(
     let native = Case::extract(case)?;
     let case = &native.get().loaded.case;
     check_landscape_at(case, "at", at).map_err(PyValueError::new_err)?;
-    let mut sim = Simulation::new(case).map_err(|e| case_error(py, &e.into()))?;
+    let mut sim = Simulation::start(case);
     let candidates = detached(py, || landscape_at(&mut sim, at))?;
     let u = sim.blade_position();
     Ok((

@@ -1,12 +1,12 @@
 //! One run of a case with overrides: the unit every study is made of.
 
 use soilcut_io::{
-    load_case_table, parse_case_table, record_files, InputError, LoadedCase, Override, RecordedRun,
+    load_case_table, parse_case_table, record_case, run_case, InputError, LoadedCase, Override,
+    RecordedRun,
 };
-use soilcut_model::{ProfilePoint, Simulation, StepRecord, Summary};
+use soilcut_model::{ProfilePoint, StepRecord, Summary};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
-use std::time::Instant;
 
 /// The case a study starts from: the table of its file (parsed once) and
 /// the `--set` overrides given for every run.
@@ -97,37 +97,28 @@ pub fn resolved_number(loaded: &LoadedCase, key: &str) -> Result<f64, String> {
 
 /// Runs a loaded case to its end.
 pub fn run_loaded(loaded: LoadedCase) -> Result<RunResult, String> {
-    let (history, profile, summary, evaluations, wall_time_s) = caught(|| {
-        let mut sim = Simulation::new(&loaded.case).map_err(|e| e.to_string())?;
-        let start = Instant::now();
-        let history = sim.run_to_end(|_| {}).map_err(|e| e.to_string())?;
-        let wall_time_s = start.elapsed().as_secs_f64();
-        let summary = Summary::new(&loaded.case, &history, sim.initial_mass());
-        Ok((
-            history,
-            sim.profile(),
-            summary,
-            sim.evaluations(),
-            wall_time_s,
-        ))
-    })?;
+    let run = caught(|| Ok(run_case(&loaded, 0, || {})))?;
+    if let Some(e) = run.stopped {
+        return Err(e.to_string());
+    }
     Ok(RunResult {
         loaded,
-        history,
-        profile,
-        summary,
-        evaluations,
-        wall_time_s,
+        history: run.history,
+        profile: run.profile,
+        summary: run.summary,
+        evaluations: run.evaluations,
+        wall_time_s: run.wall_time_s,
     })
 }
 
 /// Runs a loaded case to its end as `soilcut run` does: every file of its
 /// output folder (frames.csv included) and its history.
 pub fn run_recorded(loaded: &LoadedCase) -> Result<RecordedRun, String> {
-    caught(|| {
-        let mut sim = Simulation::new(&loaded.case).map_err(|e| e.to_string())?;
-        record_files(loaded, &mut sim, || {}).map_err(|e| e.to_string())
-    })
+    let run = caught(|| Ok(record_case(loaded, || {})))?;
+    match run.stopped {
+        Some(e) => Err(e.to_string()),
+        None => Ok(run),
+    }
 }
 
 /// `f`'s result, with a panic of the model turned into its message.

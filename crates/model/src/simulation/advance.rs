@@ -138,7 +138,7 @@ impl Simulation {
             return Ok(());
         }
         let from = self.read_to();
-        let path = &mut self.case.blade.depth_path;
+        let path = &mut self.case.edit().blade.depth_path;
         let kept = path.partition_point(|p| p[0] < from);
         let ahead = match new_points {
             // What the increments made have read stays as run; the tip is
@@ -150,7 +150,7 @@ impl Simulation {
             }
             None => Vec::new(),
         };
-        self.case.run.travel = travel.max(x);
+        self.case.edit().run.travel = travel.max(x);
         // The rest of the case is as it was checked; the rules that read
         // the path beyond its points read its deepest point, which stays
         // within the ground's floor, the depth the case was checked for.
@@ -167,12 +167,12 @@ impl Simulation {
             }
         });
         if let Err(e) = checked {
-            let path = &mut self.case.blade.depth_path;
+            let path = &mut self.case.edit().blade.depth_path;
             if new_points.is_some() {
                 path.truncate(kept);
                 path.extend(ahead);
             }
-            self.case.run.travel = travel;
+            self.case.edit().run.travel = travel;
             return Err(AdvanceError::Case(e));
         }
         // The stopping bound and the face's least mobilisation hold for the

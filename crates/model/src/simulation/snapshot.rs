@@ -136,7 +136,6 @@ impl Simulation {
     /// `from_snapshot`, with the note given to `snapshot_with_note`.
     pub fn from_snapshot_with_note(bytes: &[u8]) -> Result<(Simulation, Vec<u8>), SnapshotError> {
         let body = decode(checked_body(bytes)?)?;
-        body.case.validate().map_err(SnapshotError::Case)?;
         let note = body.note.to_vec();
         Ok((Self::restore(body)?, note))
     }
@@ -157,7 +156,11 @@ impl Simulation {
     /// The simulation a decoded body describes, once its numbers are
     /// finite and its state one that runs reach (`check_state`).
     fn restore(b: Body) -> Result<Simulation, SnapshotError> {
-        let case = b.case.into_owned();
+        let case = b
+            .case
+            .into_owned()
+            .validated()
+            .map_err(SnapshotError::Case)?;
         let initial_mass = finite("initial mass", b.initial_mass)?;
         let laws = laws_for(&case, b.steepest_climb)?;
         let side = side_heaps(&case, b.side.into_owned())?;
@@ -470,7 +473,7 @@ mod tests {
         assert_eq!(about(e), "search seed");
         let e = restored(|s| nodes(s).side.area = vec![0.0; 3]);
         assert_eq!(about(e), "side heaps");
-        let e = restored(|s| s.case.soil.unit_weight = -1.0);
+        let e = restored(|s| s.case.edit().soil.unit_weight = -1.0);
         assert_eq!(about(e), "case");
         // Bounds made for less than the case's own climb would not bound.
         let e = restored(|s| s.laws.steepest_climb = -0.5);

@@ -92,9 +92,9 @@ impl EnsembleConverge {
         }
         levels.reverse();
         Ok(EnsembleConvergeResult {
-            title: loaded.case.title,
+            title: loaded.case.title.clone(),
             refine: self.refine,
-            ground: loaded.case.run.ground,
+            ground: loaded.case.run.ground.clone(),
             levels,
         })
     }
