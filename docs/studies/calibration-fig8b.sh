@@ -26,5 +26,10 @@ python3 "$here/synthetic_curve.py" "$tmp/truth/history.csv" "$here/$out.measured
     --measured "$here/$out.measured.csv" $fixed \
     --set soil.friction.initial=26.4 --set soil.friction.peak=40.8 --set soil.peak_shear=0.96 \
     --free soil.friction.initial,soil.friction.peak,soil.peak_shear \
-    --seed 1 --jobs 2 --quiet --out "$here/$out" --force "$@"
+    --seed 1 --jobs 2 --quiet --out "$tmp/$out" "$@"
+# The fresh folder replaces the study's (soilcut replaces only folders it
+# marked as its own, and the committed one carries no mark).
+rm -rf "${here:?}/$out"
+mv "$tmp/$out" "$here/$out"
+rm -f "$here/$out/.soilcut"
 rm -r "$tmp"

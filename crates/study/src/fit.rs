@@ -16,6 +16,7 @@
 
 pub mod bounds;
 pub mod calibrate;
+pub mod chaos;
 pub mod cmaes;
 pub mod objective;
 pub mod problem;
@@ -29,6 +30,7 @@ pub use objective::{interpolate, measured_width, Compare, Test};
 use crate::error::StudyError;
 use crate::run::RunResult;
 use crate::Progress;
+use chaos::Chaos;
 use problem::{Point, Problem};
 use profile::{Noise, Profile, Residuals};
 use search::{best_of, evolve, polish, Budget, Generation, Search};
@@ -147,8 +149,12 @@ pub struct FitResult {
     pub noise: Option<Noise>,
     /// One per free key (empty without profiles).
     pub profiles: Vec<Profile>,
-    /// The calibrated Δχ² of the intervals ([`calibrate`]).
+    /// The calibrated Δχ² of the intervals ([`calibrate`]), at least the
+    /// chaos's ([`chaos`]).
     pub threshold: Option<f64>,
+    /// The best values' ensemble members and the Δχ² they span (None
+    /// without profiles, or where a member cannot run).
+    pub chaos: Option<Chaos>,
     /// Correlation of the keys near the optimum.
     pub correlation: Option<Vec<Vec<f64>>>,
     /// Each test's run at the start (None if it fails) and at the best values.
@@ -246,8 +252,7 @@ impl Fit {
                 search.generations,
                 problem.evaluations(),
                 noise,
-                (profiled.profiles, profiled.threshold),
-                profiled.correlation,
+                profiled,
             )
         })
     }
@@ -291,7 +296,12 @@ impl Fit {
         (points, best): (&mut Vec<Point>, &mut Point),
         tick: &(dyn Fn() + Sync),
     ) -> Profiled {
-        let mut threshold = calibrate::threshold(problem, points, best, noise, self.seed);
+        let chaos = Chaos::of(problem, best, noise);
+        let floor = chaos.as_ref().map_or(0.0, |c| c.threshold);
+        let threshold_at = |points: &[Point], best: &Point| {
+            calibrate::threshold(problem, points, best, noise, self.seed).max(floor)
+        };
+        let mut threshold = threshold_at(points, best);
         let mut rounds = 0;
         let mut profiles = loop {
             let profiles =
@@ -303,7 +313,7 @@ impl Fit {
             let gain = noise.chi2(best) - noise.chi2(&better);
             *best = better;
             rounds += 1;
-            threshold = calibrate::threshold(problem, points, best, noise, self.seed);
+            threshold = threshold_at(points, best);
             if gain <= REPROFILE_GAIN || rounds == PROFILE_ROUNDS {
                 break profiles;
             }
@@ -315,6 +325,7 @@ impl Fit {
             correlation: profile::correlation(points, noise, threshold, params.len()),
             profiles,
             threshold: Some(threshold),
+            chaos,
         }
     }
 
@@ -362,8 +373,7 @@ impl Fit {
         generations: Vec<Generation>,
         evaluations: usize,
         noise: Option<Noise>,
-        (profiles, threshold): (Vec<Profile>, Option<f64>),
-        correlation: Option<Vec<Vec<f64>>>,
+        profiled: Profiled,
     ) -> Result<FitResult, StudyError> {
         let keys: Vec<String> = params.iter().map(|p| p.key.clone()).collect();
         let best_runs = self
@@ -388,9 +398,10 @@ impl Fit {
             generations,
             evaluations,
             noise,
-            profiles,
-            threshold,
-            correlation,
+            profiles: profiled.profiles,
+            threshold: profiled.threshold,
+            chaos: profiled.chaos,
+            correlation: profiled.correlation,
             start_runs,
             best_runs,
         })
@@ -402,5 +413,6 @@ impl Fit {
 struct Profiled {
     profiles: Vec<Profile>,
     threshold: Option<f64>,
+    chaos: Option<Chaos>,
     correlation: Option<Vec<Vec<f64>>>,
 }

@@ -18,6 +18,7 @@
 
 use crate::error::StudyError;
 use crate::run::{override_of, BaseCase, RunResult};
+use soilcut_io::Override;
 use soilcut_model::Case;
 use std::str::FromStr;
 
@@ -158,12 +159,7 @@ impl Test {
 
     /// Runs the test's case with the free keys at `values`.
     pub fn run_at(&self, keys: &[String], values: &[f64]) -> Result<RunResult, String> {
-        let overrides = keys
-            .iter()
-            .zip(values)
-            .map(|(k, &x)| override_of(k, &toml::Value::Float(x)))
-            .collect::<Result<Vec<_>, _>>()?;
-        self.base.run(&overrides)
+        self.base.run(&overrides_of(keys, values)?)
     }
 
     /// (weight, residual) of the run against the measured curve.
@@ -178,6 +174,14 @@ impl Test {
             .map(|r| r.0)
             .sum()
     }
+}
+
+/// The `--set` overrides that give the keys `keys` the values `values`.
+pub fn overrides_of(keys: &[String], values: &[f64]) -> Result<Vec<Override>, String> {
+    keys.iter()
+        .zip(values)
+        .map(|(k, &x)| override_of(k, &toml::Value::Float(x)))
+        .collect()
 }
 
 /// The (u, force) curve of a run.

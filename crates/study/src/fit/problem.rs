@@ -95,24 +95,36 @@ impl<'a> Problem<'a> {
                 t.run_at(&self.keys, x)
                     .map(|run| t.residuals(self.compare, &run))
             })
-            .collect::<Result<Vec<Vec<(f64, f64)>>, String>>()
-            .ok();
-        let sums = all
-            .as_ref()
-            .map(|all| all.iter().map(|r| sum_of_squares(r)).collect::<Vec<f64>>());
-        let residuals = all.map(|all| {
-            all.iter()
-                .map(|r| r.iter().map(|&(_, r)| r).collect())
-                .collect()
-        });
-        let rms = match &sums {
-            Some(s) => (s.iter().sum::<f64>() / self.total_weight).sqrt(),
-            None => f64::INFINITY,
-        };
+            .collect::<Result<Vec<Vec<(f64, f64)>>, String>>();
+        match all {
+            Ok(all) => self.point_of(x, all),
+            Err(_) => Point {
+                x: x.to_vec(),
+                sums: None,
+                residuals: None,
+                rms: f64::INFINITY,
+            },
+        }
+    }
+
+    /// The free keys, in the order of a point's values.
+    pub fn keys(&self) -> &[String] {
+        &self.keys
+    }
+
+    /// The point at `x` whose tests gave the (weight, residual) pairs
+    /// `all`.
+    pub fn point_of(&self, x: &[f64], all: Vec<Vec<(f64, f64)>>) -> Point {
+        let sums: Vec<f64> = all.iter().map(|r| sum_of_squares(r)).collect();
+        let rms = (sums.iter().sum::<f64>() / self.total_weight).sqrt();
         Point {
             x: x.to_vec(),
-            sums,
-            residuals,
+            sums: Some(sums),
+            residuals: Some(
+                all.iter()
+                    .map(|r| r.iter().map(|&(_, r)| r).collect())
+                    .collect(),
+            ),
             rms,
         }
     }

@@ -2,6 +2,7 @@
 //! first), `fit.csv`, `curves.csv`, `profiles.csv`, `search.csv`,
 //! `best.toml`, and the pictures `fit.png`, `profiles.png`, `search.png`.
 
+use super::chaos;
 use super::objective::{force_curve, interpolate};
 use super::FitResult;
 use crate::error::StudyError;
@@ -233,7 +234,10 @@ impl FitResult {
             return;
         };
         match self.threshold {
-            Some(threshold) => intervals_text(w, threshold),
+            Some(threshold) => {
+                intervals_text(w, threshold);
+                self.chaos_text(w);
+            }
             None => {
                 let _ = writeln!(
                     w,
@@ -415,11 +419,52 @@ fn significant(x: f64) -> String {
     }
 }
 
+impl FitResult {
+    /// The chaos's share of the threshold: the best values' members.
+    fn chaos_text(&self, w: &mut String) {
+        let Some(chaos) = &self.chaos else {
+            let _ = writeln!(w, "The chaos's share could not be measured (a member of the best values did not run); the threshold is the bootstrap's alone.\n");
+            return;
+        };
+        let (Some(noise), best) = (&self.noise, &self.best) else {
+            return;
+        };
+        let above: Vec<String> = chaos
+            .chi2
+            .iter()
+            .map(|c| delta_text(c - noise.chi2(best)))
+            .collect();
+        let _ = writeln!(
+            w,
+            "The model is chaotic: the best values' own ensemble members (k = {} of the ensembles' rule, docs/guide/ensembles.md) fit the curves with Δχ² = {} from the best point by chance alone, so the threshold is at least the spread of χ² over the best point and its members, {} ({}).\n",
+            chaos::MEMBERS.map(|k| k.to_string()).join(", "),
+            above.join(", "),
+            delta_text(chaos.threshold),
+            if self.threshold.is_some_and(|t| t <= chaos.threshold) {
+                "the chaos sets it"
+            } else {
+                "the bootstrap's is larger"
+            }
+        );
+    }
+}
+
+/// A Δχ² for `fit.md`: two decimals, or three significant digits where
+/// it is huge (a fit that is exact to round-off has a tiny noise level).
+fn delta_text(x: f64) -> String {
+    if x.abs() < 1e6 {
+        format!("{x:.2}")
+    } else {
+        format!("{x:.2e}")
+    }
+}
+
 /// How `fit.md`'s intervals were found, with their threshold of Δχ².
 fn intervals_text(w: &mut String, threshold: f64) {
     let _ = writeln!(
         w,
-        "\nIntervals by profile likelihood: χ² = Σ_t S_t/(w̄_t σ_t²) with each test's noise level σ_t (at its mean weight w̄_t) estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {threshold:.2}: the threshold, calibrated for the roughness of the objective by a wild bootstrap (replicate curves made of the best fit's curve plus its residuals with random signs, and how far the evaluated points and short refits undercut each replicate's truth), at least the χ²ₚ 95 % quantile of a smooth model with p free keys: the intervals are the projections of the joint 95 % region. A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n"
+        "\nIntervals by profile likelihood: χ² = Σ_t S_t/(w̄_t σ_t²) with each test's noise level σ_t (at its mean weight w̄_t) estimated from the residuals at the best values; for each key the profile of χ² across its bounds, the other keys re-optimised. The 95 % interval spans the key's values over every evaluated point with Δχ² ≤ {}: the threshold, calibrated for the roughness of the objective by a wild bootstrap (replicate curves made of the best fit's curve plus its residuals with random signs, and how far the evaluated points and short refits undercut each replicate's truth), at least the χ²ₚ 95 % quantile of a smooth model with p free keys and at least the chaos's share below: the intervals are the projections of the joint 95 % region. A key is **determined** when its interval ends inside its bounds and lies within ± 1° (angles) or ± 10 % (other keys) of the best value, **weakly determined** when it ends inside its bounds but is wider, **undetermined** when it reaches a bound: the curves do not fix it within its bounds.\n",
+        delta_text(threshold)
     );
 }
 
