@@ -47,7 +47,9 @@ impl TimeSchemeName {
     expecting = "a table { travel, increment, ground, vertex_spacing, samples_per_band, time_scheme, merge_tolerance }"
 )]
 pub(super) struct RunFile {
-    pub(super) travel: f64,
+    /// Absent where a tool's motion gives the travel (`[tool]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) travel: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) increment: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -69,8 +71,25 @@ pub(super) struct RunFile {
 impl RunFile {
     /// The run this file describes for a case of `class`, the resolved
     /// keys written back into it, and the notices of any form of an
-    /// earlier version it was read in.
-    pub(super) fn resolve(&mut self, class: Class<'_>) -> Result<(Run, Vec<String>), InputError> {
+    /// earlier version it was read in; `tool_travel` is the travel a
+    /// tool's motion gives, which `run.travel` must then leave out.
+    pub(super) fn resolve(
+        &mut self,
+        class: Class<'_>,
+        tool_travel: Option<f64>,
+    ) -> Result<(Run, Vec<String>), InputError> {
+        let travel =
+            match (self.travel, tool_travel) {
+                (Some(travel), None) | (None, Some(travel)) => travel,
+                (None, None) => {
+                    return Err(CaseError::new("run.travel", "required key is missing").into())
+                }
+                (Some(_), Some(_)) => return Err(CaseError::new(
+                    "run.travel",
+                    "is given by tool.motion (its last pose's s) in a case with a tool: remove it",
+                )
+                .into()),
+            };
         let mut notices = Vec::new();
         if self.ground.is_none() && self.vertex_spacing == Some(0.0) {
             notices.push(
@@ -80,7 +99,7 @@ impl RunFile {
             );
             self.read_old_node_grid();
         }
-        let run = Run::resolve(&self.keys(), class)?;
+        let run = Run::resolve(&self.keys(travel), class)?;
         if let Some(h) = self.node_spacing.take() {
             notices.push(self.old_node_spacing(h, &run)?);
         }
@@ -126,9 +145,9 @@ impl RunFile {
         .into())
     }
 
-    fn keys(&self) -> RunKeys {
+    fn keys(&self, travel: f64) -> RunKeys {
         RunKeys {
-            travel: self.travel,
+            travel,
             increment: self.increment,
             ground: self.ground.map(|g| match g {
                 GroundName::Vertices => GroundKind::Vertices,
