@@ -135,7 +135,8 @@ impl Sensitivity {
     }
 
     /// Refuses what would make the study fail or mean nothing, before
-    /// any run: see [`runs::check`].
+    /// any run: a range with lo ≥ hi, a key the case cannot hold, a sample
+    /// size below the method's least, an odd number of levels, too many runs.
     pub fn check(&self) -> Result<(), StudyError> {
         runs::check(self)
     }

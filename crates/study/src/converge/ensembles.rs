@@ -94,7 +94,7 @@ impl EnsembleConverge {
         Ok(EnsembleConvergeResult {
             title: loaded.case.title.clone(),
             refine: self.refine,
-            ground: loaded.case.run.ground.clone(),
+            ground: loaded.case.run.ground,
             levels,
         })
     }

@@ -4,7 +4,7 @@
 use crate::figures::mean;
 use crate::run::RunResult;
 
-/// The outputs of a run of a case, in the order of [`outputs_of`].
+/// The outputs of a run of a case, in the order of `outputs_of`.
 pub const OUTPUTS: [&str; 3] = ["initial_force_norm", "max_force_norm", "mean_force_norm"];
 
 /// What each output is (all P/(γ0 d²), dimensionless).
