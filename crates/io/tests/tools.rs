@@ -114,12 +114,26 @@ fn a_straight_profile_on_a_path_is_the_depth_path_and_a_raked_one_the_rake() {
 }
 
 #[test]
+fn a_run_travel_shortens_a_tool_s_motion() {
+    let tool = shipped("tools/straight-profile.toml");
+    let blade = shipped("paper/fig5.toml");
+    let short = ["run.travel=10".parse().unwrap()];
+    let a = parse_case(&tool, &short).unwrap();
+    let b = parse_case(&blade, &short).unwrap();
+    assert_eq!(a.case.run.travel, 10.0);
+    let again = parse_case(&a.resolved_toml(), &[]).unwrap();
+    assert_eq!(again.case, a.case);
+    let history = |l: &soilcut_io::LoadedCase| record_case(l, || {}).history;
+    assert_eq!(history(&a), history(&b));
+}
+
+#[test]
 fn keys_of_the_blade_a_tool_gives_are_refused_naming_them() {
     let tool = shipped("tools/straight-profile.toml");
     for (set, key) in [
         ("blade.rake=80", "blade.rake"),
         ("blade.depth_path=[[0.0, 20.0]]", "blade.depth_path"),
-        ("run.travel=50", "run.travel"),
+        ("run.travel=150", "run.travel"),
         ("tool.radius=5", "tool.radius"),
         (
             "tool.motion=[[0.0, 0.0, -20.0, 0.0], [0.0, 1.0, -20.0, 0.0]]",

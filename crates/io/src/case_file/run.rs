@@ -72,24 +72,13 @@ impl RunFile {
     /// The run this file describes for a case of `class`, the resolved
     /// keys written back into it, and the notices of any form of an
     /// earlier version it was read in; `tool_travel` is the travel a
-    /// tool's motion gives, which `run.travel` must then leave out.
+    /// tool's motion gives, which `run.travel` may shorten.
     pub(super) fn resolve(
         &mut self,
         class: Class<'_>,
         tool_travel: Option<f64>,
     ) -> Result<(Run, Vec<String>), InputError> {
-        let travel =
-            match (self.travel, tool_travel) {
-                (Some(travel), None) | (None, Some(travel)) => travel,
-                (None, None) => {
-                    return Err(CaseError::new("run.travel", "required key is missing").into())
-                }
-                (Some(_), Some(_)) => return Err(CaseError::new(
-                    "run.travel",
-                    "is given by tool.motion (its last pose's s) in a case with a tool: remove it",
-                )
-                .into()),
-            };
+        let travel = travel_of(self.travel, tool_travel)?;
         let mut notices = Vec::new();
         if self.ground.is_none() && self.vertex_spacing == Some(0.0) {
             notices.push(
@@ -173,5 +162,23 @@ impl RunFile {
             }
             Ground::Nodes => self.ground = Some(GroundName::Nodes),
         }
+    }
+}
+
+/// The run's travel: `run.travel`, or the last s of a tool's motion
+/// (`tool_travel`), which `run.travel` may shorten but not exceed.
+fn travel_of(given: Option<f64>, tool_travel: Option<f64>) -> Result<f64, InputError> {
+    match (given, tool_travel) {
+        (Some(travel), None) | (None, Some(travel)) => Ok(travel),
+        (None, None) => Err(CaseError::new("run.travel", "required key is missing").into()),
+        (Some(travel), Some(last)) if travel <= last => Ok(travel),
+        (Some(travel), Some(last)) => Err(CaseError::new(
+            "run.travel",
+            format!(
+                "must be at most the last s of tool.motion, {last}, in a case with a tool (got \
+                 {travel}): the motion ends there; leave run.travel out to run all of it"
+            ),
+        )
+        .into()),
     }
 }
