@@ -9,13 +9,16 @@ use crate::error::InputError;
 use crate::overrides::Override;
 use run::RunFile;
 use serde::{Deserialize, Serialize};
+use soilcut_model::tool::StraightCut;
 use soilcut_model::{
     AngleLaw, BandAngleRule, BandShearRule, BandStrengthRule, Bin, Blade, Case, CaseError, Choices,
     Class, FaceFrictionRule, Model, SnapshotError, Soil, UnitWeightRule, ValidCase,
 };
 use std::path::Path;
+use tool::ToolFile;
 
 mod run;
+mod tool;
 
 const REFINED_ONLY: &str = "applies to model = \"refined\" only";
 const REFINED_REQUIRED: &str = "required for model = \"refined\"";
@@ -36,6 +39,8 @@ struct CaseFile {
     title: Option<String>,
     model: ModelName,
     blade: BladeFile,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    tool: Option<ToolFile>,
     soil: SoilFile,
     run: RunFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -248,8 +253,12 @@ impl LoadedCase {
         let mut loaded = self.clone();
         let path = &case.blade.depth_path;
         loaded.case = case.clone();
+        // A steered tool is the blade it reduces to (M55), written so.
+        if loaded.resolved.tool.take().is_some() {
+            loaded.resolved.blade.rake = Some(case.blade.rake);
+        }
         loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone());
-        loaded.resolved.run.travel = case.run.travel;
+        loaded.resolved.run.travel = Some(case.run.travel);
         loaded
     }
 
@@ -565,9 +574,17 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
 fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     check_name(&file.name)?;
     let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
-    let rake = *file.blade.rake.get_or_insert(90.0);
     let adhesion = *file.blade.adhesion.get_or_insert(0.0);
     let depth = file.blade.depth;
+    let by_tool = blade_motion(&mut file)?;
+    let tool_travel = by_tool.as_ref().map(|cut| cut.travel);
+    let (rake, depth_path) = match by_tool {
+        Some(cut) => (cut.rake, cut.depth_path),
+        None => (
+            file.blade.rake.unwrap_or(90.0),
+            file.blade.depth_path.clone().unwrap_or_default(),
+        ),
+    };
     let model = match file.model {
         ModelName::Original => Model::Original,
         ModelName::Refined => Model::Refined,
@@ -583,7 +600,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         wall_friction: file.blade.wall_friction,
         rake,
         adhesion,
-        depth_path: file.blade.depth_path.clone().unwrap_or_default(),
+        depth_path,
         width: file.blade.width,
     };
     let class = Class {
@@ -592,7 +609,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         blade: &blade,
         face_friction: choices.face_friction,
     };
-    let (run, notices) = file.run.resolve(class)?;
+    let (run, notices) = file.run.resolve(class, tool_travel)?;
     let case = Case {
         name: file.name.clone(),
         title,
@@ -611,6 +628,29 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         resolved: file,
         notices,
     })
+}
+
+/// The blade's rake, depth path and travel as a tool gives them: none
+/// where the case has no tool (`blade.rake`, its default written in,
+/// and `blade.depth_path` as written), else the tool's (M55).
+fn blade_motion(file: &mut CaseFile) -> Result<Option<StraightCut>, InputError> {
+    let Some(tool_file) = file.tool.as_mut() else {
+        file.blade.rake.get_or_insert(90.0);
+        return Ok(None);
+    };
+    for (key, given) in [
+        ("blade.rake", file.blade.rake.is_some()),
+        ("blade.depth_path", file.blade.depth_path.is_some()),
+    ] {
+        if given {
+            return Err(CaseError::new(
+                key,
+                "is given by the tool in a case with [tool] (its profile and tool.motion): remove it",
+            )
+            .into());
+        }
+    }
+    Ok(Some(tool_file.tool()?.straight_cut(file.blade.depth)?))
 }
 
 /// The soil of a case file, its defaults written into `soil`: the repose

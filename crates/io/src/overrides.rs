@@ -241,7 +241,7 @@ mod tests {
         assert!(e.to_string().starts_with("a\\tb.c.d: cannot set"), "{e}");
         assert_eq!(
             crate::parse_case("[\"x\\ny\"]\n", &[]).unwrap_err().to_string(),
-            "\"x\\ny\": unknown key (nearest: `run`, `bin`; expected one of: `name`, `title`, `model`, `blade`, `soil`, `run`, `bin`, `choices`)"
+            "\"x\\ny\": unknown key (nearest: `run`, `bin`; expected one of: `name`, `title`, `model`, `blade`, `tool`, `soil`, `run`, `bin`, `choices`)"
         );
     }
 }

@@ -7,4 +7,5 @@ mod mechanism_columns;
 mod shipped_cases;
 mod snapshots;
 mod tables;
+mod tools;
 mod validation;

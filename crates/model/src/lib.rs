@@ -38,6 +38,7 @@ pub mod simulation;
 pub mod step;
 mod stopping;
 pub mod summary;
+pub mod tool;
 pub mod trig;
 pub mod vertices;
 

@@ -47,7 +47,9 @@ impl TimeSchemeName {
     expecting = "a table { travel, increment, ground, vertex_spacing, samples_per_band, time_scheme, merge_tolerance }"
 )]
 pub(super) struct RunFile {
-    pub(super) travel: f64,
+    /// Absent where a tool's motion gives the travel (`[tool]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) travel: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) increment: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -69,8 +71,14 @@ pub(super) struct RunFile {
 impl RunFile {
     /// The run this file describes for a case of `class`, the resolved
     /// keys written back into it, and the notices of any form of an
-    /// earlier version it was read in.
-    pub(super) fn resolve(&mut self, class: Class<'_>) -> Result<(Run, Vec<String>), InputError> {
+    /// earlier version it was read in; `tool_travel` is the travel a
+    /// tool's motion gives, which `run.travel` may shorten.
+    pub(super) fn resolve(
+        &mut self,
+        class: Class<'_>,
+        tool_travel: Option<f64>,
+    ) -> Result<(Run, Vec<String>), InputError> {
+        let travel = travel_of(self.travel, tool_travel)?;
         let mut notices = Vec::new();
         if self.ground.is_none() && self.vertex_spacing == Some(0.0) {
             notices.push(
@@ -80,7 +88,7 @@ impl RunFile {
             );
             self.read_old_node_grid();
         }
-        let run = Run::resolve(&self.keys(), class)?;
+        let run = Run::resolve(&self.keys(travel), class)?;
         if let Some(h) = self.node_spacing.take() {
             notices.push(self.old_node_spacing(h, &run)?);
         }
@@ -126,9 +134,9 @@ impl RunFile {
         .into())
     }
 
-    fn keys(&self) -> RunKeys {
+    fn keys(&self, travel: f64) -> RunKeys {
         RunKeys {
-            travel: self.travel,
+            travel,
             increment: self.increment,
             ground: self.ground.map(|g| match g {
                 GroundName::Vertices => GroundKind::Vertices,
@@ -154,5 +162,23 @@ impl RunFile {
             }
             Ground::Nodes => self.ground = Some(GroundName::Nodes),
         }
+    }
+}
+
+/// The run's travel: `run.travel`, or the last s of a tool's motion
+/// (`tool_travel`), which `run.travel` may shorten but not exceed.
+fn travel_of(given: Option<f64>, tool_travel: Option<f64>) -> Result<f64, InputError> {
+    match (given, tool_travel) {
+        (Some(travel), None) | (None, Some(travel)) => Ok(travel),
+        (None, None) => Err(CaseError::new("run.travel", "required key is missing").into()),
+        (Some(travel), Some(last)) if travel <= last => Ok(travel),
+        (Some(travel), Some(last)) => Err(CaseError::new(
+            "run.travel",
+            format!(
+                "must be at most the last s of tool.motion, {last}, in a case with a tool (got \
+                 {travel}): the motion ends there; leave run.travel out to run all of it"
+            ),
+        )
+        .into()),
     }
 }

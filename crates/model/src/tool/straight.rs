@@ -1,0 +1,210 @@
+//! The tools today's mechanism takes, (M55): a straight profile whose
+//! rotation θ is constant and whose cutting edge moves forward at unit
+//! rate in s, x_edge(s) = s, is the paper's blade of rake α = α0 − θ (α0
+//! the profile's face angle at rotation 0; a counter-clockwise rotation
+//! leans a vertical blade back) on the depth path of its edge,
+//! d(u) = −y_edge(u) at u = s. Nothing else about such a tool enters the
+//! mechanism: the face is the straight line through the edge, and where
+//! the profile ends above the soil does not matter to it (a straight
+//! blade is taller than its pile).
+
+use super::{Pose, Shape, Tool};
+use crate::case::CaseError;
+
+/// A straight blade's keys, as a translating straight tool gives them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StraightCut {
+    /// α, degrees.
+    pub rake: f64,
+    /// [u, d] at every pose; empty where every pose is at the reference
+    /// depth (a blade at constant depth).
+    pub depth_path: Vec<[f64; 2]>,
+    /// The last pose's s.
+    pub travel: f64,
+}
+
+impl Tool {
+    /// The tool as today's blade (M55), with `depth` the reference depth
+    /// of normalised forces; the error says, naming the key, why this tool
+    /// needs a mechanism not built yet.
+    pub fn straight_cut(&self, depth: f64) -> Result<StraightCut, CaseError> {
+        let profile = self.profile()?;
+        if !profile.is_straight() {
+            return Err(unbuilt(
+                "tool.shape",
+                "a curved or bent profile: soilcut cuts with straight profiles so far",
+            ));
+        }
+        let poses = self.motion.poses();
+        let rotation = poses[0].1.rotation;
+        if let Some(i) = poses.iter().position(|(_, p)| p.rotation != rotation) {
+            return Err(unbuilt(
+                "tool.motion",
+                &format!("pose {i} rotates the tool: soilcut's tools translate so far"),
+            ));
+        }
+        // A straight shape's own rake, exactly as given; else the angle of
+        // the profile's first piece.
+        let face = match &self.shape {
+            Shape::Straight { rake, .. } => *rake,
+            _ => profile.edge_angle(),
+        };
+        let rake = face - rotation;
+        if rake <= 0.0 || rake > 90.0 {
+            return Err(CaseError::new(
+                "tool.motion",
+                format!(
+                    "the face at rotation {rotation}° stands at α = {rake}° from the horizontal: \
+                     soilcut's mechanism takes faces in (0°, 90°] (vertical or leaning back)"
+                ),
+            ));
+        }
+        let edge = profile.points()[0];
+        let path = poses
+            .iter()
+            .enumerate()
+            .map(|(i, (s, pose))| self.edge_depth(i, *s, pose, edge))
+            .collect::<Result<Vec<_>, _>>()?;
+        let constant = path.iter().all(|p| p[1] == depth);
+        Ok(StraightCut {
+            rake,
+            depth_path: if constant { Vec::new() } else { path },
+            travel: self.motion.travel(),
+        })
+    }
+
+    /// [s, d] of the cutting edge at pose `i`, which today's blade needs
+    /// at x = s and in the ground.
+    fn edge_depth(
+        &self,
+        i: usize,
+        s: f64,
+        pose: &Pose,
+        edge: [f64; 2],
+    ) -> Result<[f64; 2], CaseError> {
+        let [x, y] = pose.place(self.pivot, edge);
+        if (x - s).abs() > 1e-9 * s.abs().max(1.0) {
+            return Err(unbuilt(
+                "tool.motion",
+                &format!(
+                    "pose {i} puts the cutting edge at x = {x} where s = {s}: soilcut's tools \
+                     move forward at the rate of s from x = 0 so far"
+                ),
+            ));
+        }
+        if y >= 0.0 {
+            return Err(CaseError::new(
+                "tool.motion",
+                format!(
+                    "pose {i} puts the cutting edge at y = {y}, not below the surface: a \
+                     translating blade cuts from within the ground"
+                ),
+            ));
+        }
+        Ok([s, -y])
+    }
+
+    /// The tool's profile.
+    pub fn profile(&self) -> Result<super::Profile, CaseError> {
+        self.shape.profile()
+    }
+}
+
+/// The error of a tool whose mechanism is not built yet.
+fn unbuilt(key: &str, what: &str) -> CaseError {
+    CaseError::new(
+        key,
+        format!(
+            "{what} (docs/model.md §21: the chord of a curved face, rotation and the soil \
+             a bucket carries are the next steps)"
+        ),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tool::Motion;
+
+    fn tool(shape: Shape, pivot: [f64; 2], rows: &[[f64; 4]]) -> Tool {
+        Tool {
+            shape,
+            pivot,
+            motion: Motion::new(rows, "tool.motion").unwrap(),
+        }
+    }
+
+    const VERTICAL: Shape = Shape::Straight {
+        rake: 90.0,
+        height: 70.0,
+    };
+
+    #[test]
+    fn a_vertical_blade_at_constant_depth_is_the_paper_s_blade() {
+        let t = tool(
+            VERTICAL,
+            [0.0, 0.0],
+            &[[0.0, 0.0, -20.0, 0.0], [100.0, 100.0, -20.0, 0.0]],
+        );
+        let cut = t.straight_cut(20.0).unwrap();
+        assert_eq!(cut.rake, 90.0);
+        assert!(cut.depth_path.is_empty());
+        assert_eq!(cut.travel, 100.0);
+        // At another depth than the reference it is a (flat) depth path.
+        let deeper = t.straight_cut(25.0).unwrap();
+        assert_eq!(deeper.depth_path, vec![[0.0, 20.0], [100.0, 20.0]]);
+    }
+
+    #[test]
+    fn a_pivot_above_the_edge_and_a_rotation_lean_the_face_back() {
+        let rows = [[0.0, 0.0, 50.0, 30.0], [10.0, 10.0, 50.0, 30.0]];
+        // Pivot 70 above the edge: rotated 30° counter-clockwise, the edge is
+        // 70 sin 30° = 35 ahead of the pivot... which is not x = s.
+        let e = tool(VERTICAL, [0.0, 70.0], &rows)
+            .straight_cut(20.0)
+            .unwrap_err();
+        assert!(e.message.contains("cutting edge at x = 34.9"), "{e}");
+        let rows = [[0.0, -35.0, 50.0, 30.0], [10.0, -25.0, 50.0, 30.0]];
+        let cut = tool(VERTICAL, [0.0, 70.0], &rows)
+            .straight_cut(20.0)
+            .unwrap();
+        assert!((cut.rake - 60.0).abs() < 1e-12);
+        let d = 70.0 * 30f64.to_radians().cos() - 50.0;
+        assert!((cut.depth_path[0][1] - d).abs() < 1e-12);
+    }
+
+    #[test]
+    fn what_the_mechanism_cannot_take_yet_is_refused_by_name() {
+        let curved = Shape::Curved {
+            edge_angle: 60.0,
+            radius: 40.0,
+            sweep: 60.0,
+        };
+        let flat = [[0.0, 0.0, -20.0, 0.0], [10.0, 10.0, -20.0, 0.0]];
+        let e = tool(curved, [0.0, 0.0], &flat)
+            .straight_cut(20.0)
+            .unwrap_err();
+        assert_eq!(e.key, "tool.shape");
+        let curl = [[0.0, 0.0, -20.0, 0.0], [10.0, 10.0, -20.0, 5.0]];
+        assert_eq!(
+            tool(VERTICAL, [0.0, 0.0], &curl)
+                .straight_cut(20.0)
+                .unwrap_err()
+                .key,
+            "tool.motion"
+        );
+        let above = [[0.0, 0.0, 1.0, 0.0], [10.0, 10.0, -20.0, 0.0]];
+        assert_eq!(
+            tool(VERTICAL, [0.0, 0.0], &above)
+                .straight_cut(20.0)
+                .unwrap_err()
+                .key,
+            "tool.motion"
+        );
+        let forward = [[0.0, 0.0, -20.0, -10.0], [10.0, 10.0, -20.0, -10.0]];
+        let e = tool(VERTICAL, [0.0, 0.0], &forward)
+            .straight_cut(20.0)
+            .unwrap_err();
+        assert!(e.message.contains("α = 100°"), "{e}");
+    }
+}
