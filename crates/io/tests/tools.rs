@@ -146,3 +146,18 @@ fn keys_of_the_blade_a_tool_gives_are_refused_naming_them() {
         assert!(e.starts_with(&format!("{key}:")), "{set}: {e}");
     }
 }
+
+/// A tool steered from Python or C (`Simulation::advance_to`) is written
+/// back as the blade it reduces to, which reads back to the steered case.
+#[test]
+fn a_steered_tool_is_written_as_its_blade() {
+    let loaded = read_case(&root().join("cases/tools/straight-profile.toml"), &[]).unwrap();
+    let mut sim = soilcut_model::Simulation::start(&loaded.case);
+    sim.advance_to(150.0, Some(15.0)).unwrap();
+    let steered = loaded.steered(sim.case());
+    let text = steered.resolved_toml();
+    assert!(!text.contains("[tool]"), "{text}");
+    let again = parse_case(&text, &[]).unwrap();
+    assert_eq!(again.case, steered.case);
+    assert_eq!(again.case.run.travel, 150.0);
+}
