@@ -89,7 +89,7 @@ enum Command {
         /// Do not draw the pictures (plots/ and animation.gif); `soilcut plot` can draw them later.
         #[arg(long)]
         no_plots: bool,
-        /// No progress bar and no summary line.
+        /// No progress bar and no summary line (warnings are still printed).
         #[arg(long, short)]
         quiet: bool,
         /// Run N members with imperceptible perturbations (soil.d50 × (1 + 0.001 k), or
@@ -409,7 +409,7 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     // Loading validates the case.
     let case = load(path, set)?.case;
-    warn_accuracy(&case, false);
+    warn_accuracy(&case);
     println!(
         "ok: {}: name {}, model {}, {} steps",
         path.display(),
@@ -421,11 +421,9 @@ fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     Ok(())
 }
 
-/// A case that runs but whose grid is known to cost accuracy.
-fn warn_accuracy(case: &Case, quiet: bool) {
-    if quiet {
-        return;
-    }
+/// A case that runs but is known to cost accuracy: shown even with
+/// --quiet, which hides progress only (summary.json lists them too).
+fn warn_accuracy(case: &Case) {
     for warning in case.accuracy_warnings() {
         eprintln!("warning: {warning}");
     }
@@ -438,7 +436,7 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let out = target.out_or(&case.name);
     let claim = target.claim(&out)?;
 
-    warn_accuracy(case, quiet);
+    warn_accuracy(case);
     let mut sim = Simulation::new(case).map_err(|e| Failure::input(path, e))?;
     let bar = progress_bar(case.steps(), quiet);
     let RecordedRun {

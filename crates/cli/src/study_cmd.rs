@@ -43,7 +43,7 @@ pub struct Common {
     /// Worker threads [default: one per core]. Results do not depend on it.
     #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
     pub jobs: usize,
-    /// No progress bar (it is shown only when stderr is a terminal).
+    /// No progress bar (it is shown only when stderr is a terminal); warnings are still printed.
     #[arg(long, short)]
     pub quiet: bool,
 }

@@ -675,6 +675,36 @@ fn a_narrow_tine_is_warned_about() {
     assert_eq!(check(tine, &[]), "");
 }
 
+/// `--quiet` hides progress, not the warnings: a narrow tine's run warns
+/// on stderr with -q, and its summary.json lists the warning (an empty
+/// list where nothing is known against the case).
+#[test]
+fn warnings_survive_quiet_and_are_in_summary_json() {
+    let sandbox = Sandbox::new(BASE);
+    let tine = workspace().join("cases/tools/tine.toml");
+    let tine = tine.to_str().unwrap();
+    let short = ["--set", "run.travel=15", "--no-plots", "-q"];
+    let run = |out: &str, width: &str| {
+        let width = format!("blade.width={width}");
+        let mut args = vec!["run", tine, "--set", &width, "--out", out];
+        args.extend(short);
+        let o = sandbox.soilcut(&args);
+        assert_ok(&o);
+        assert_eq!(stdout(&o), "", "-q: no result line");
+        let text = fs::read_to_string(sandbox.path(&format!("{out}/summary.json"))).unwrap();
+        let s: serde_json::Value = serde_json::from_str(&text).unwrap();
+        (stderr(&o), s["warnings"].clone())
+    };
+    let (err, warnings) = run("narrow", "20");
+    assert!(err.starts_with("warning: blade.width = 20"), "{err}");
+    let listed = warnings.as_array().expect("a list of warnings");
+    assert_eq!(listed.len(), 1, "{warnings}");
+    assert_eq!(format!("warning: {}\n", listed[0].as_str().unwrap()), err);
+    let (err, warnings) = run("wide", "50");
+    assert_eq!(err, "");
+    assert_eq!(warnings, serde_json::json!([]));
+}
+
 /// A width that is not a length > 0 is refused with exit code 2, naming
 /// the key.
 #[test]

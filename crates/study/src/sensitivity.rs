@@ -21,15 +21,15 @@ use crate::sample::Vary;
 pub mod bootstrap;
 pub mod design;
 mod files;
-mod outputs;
 pub mod function;
 pub mod morris;
+mod outputs;
 mod runs;
 pub mod sequence;
 pub mod sobol;
 
-pub use outputs::{MEANINGS, OUTPUTS};
 pub use function::Function;
+pub use outputs::{MEANINGS, OUTPUTS};
 pub use runs::{RunRow, SensitivityResult};
 
 /// The name of the input that no run reads (`dummy`).
