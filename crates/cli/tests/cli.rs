@@ -368,6 +368,46 @@ fn missing_case_file() {
     assert_eq!(sandbox.entries(), ["case.toml"]);
 }
 
+/// `check` prints a fine increment in exponent form (it read "0"), the
+/// count and the size of history.csv it would write; a run that long
+/// says so on stderr before it starts.
+#[test]
+fn check_and_a_long_run_tell_the_increments_and_their_cost() {
+    let sandbox = Sandbox::new(REFINED);
+    let fine = ["--set", "run.travel=0.3", "--set", "run.increment=3e-7"];
+    let mut args = vec!["check", "case.toml"];
+    args.extend(fine);
+    let o = sandbox.soilcut(&args);
+    assert_ok(&o);
+    let text = stdout(&o);
+    assert!(
+        text.contains("1000000 steps (history.csv about 300 MB)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("; increment 3e-7 (d/66666666.67); "),
+        "{text}"
+    );
+    let long = ["--set", "run.increment=2e-4", "--out", "o", "--no-plots"];
+    let mut run = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+        .args(["run", "case.toml"])
+        .args(long)
+        .current_dir(sandbox.dir.path())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    let mut err = std::io::BufReader::new(run.stderr.take().unwrap());
+    std::io::BufRead::read_line(&mut err, &mut line).unwrap();
+    run.kill().unwrap();
+    run.wait().unwrap();
+    assert!(
+        line.starts_with("note: case.toml: 100000 steps (history.csv about 30 MB); ")
+            && line.contains("increment 2e-4 (d/100000)"),
+        "{line}"
+    );
+}
+
 #[test]
 fn refined_case_checks() {
     let sandbox = Sandbox::new(REFINED);
@@ -375,7 +415,7 @@ fn refined_case_checks() {
     assert_ok(&o);
     assert_eq!(
         stdout(&o).trim(),
-        "ok: case.toml: name refined, model refined, 100 steps\n  \
+        "ok: case.toml: name refined, model refined, 100 steps (history.csv about 30 kB)\n  \
          vertex ground, vertices every 0.4 (d/50); increment 0.2 (d/100); \
          time scheme midpoint-force; 8 samples per band"
     );
