@@ -761,6 +761,24 @@ fn a_bad_blade_width_names_the_key() {
     }
 }
 
+/// `soil.d50` beyond the range of lengths is refused where the band width
+/// is a length too (which does not use d50), and an empty
+/// `blade.depth_path`, each naming the key and what it takes.
+#[test]
+fn a_grain_size_out_of_range_and_an_empty_depth_path_name_their_key() {
+    let length = REFINED.replace("band_width_d50 = 7", "band_width = 4.2");
+    for d50 in ["1e300", "1e-300"] {
+        let set = format!("soil.d50={d50}");
+        let line = assert_bad_input(&length, &[&set], "soil.d50: ");
+        assert!(line.contains("a length in [1e-20, 1e20]"), "{line}");
+    }
+    let line = assert_bad_input(REFINED, &["blade.depth_path=[]"], "blade.depth_path: ");
+    assert!(line.contains("at least one point"), "{line}");
+    let one = ["blade.depth_path=[[0, 20]]"];
+    let o = Sandbox::new(REFINED).soilcut(&["check", "case.toml", "--set", one[0]]);
+    assert_ok(&o);
+}
+
 #[test]
 fn check_accepts_every_case_file() {
     let mut found = Vec::new();

@@ -525,6 +525,32 @@ fn positive(value: f64, key: &str) -> Result<(), InputError> {
     }
 }
 
+/// A length the model never sees, in the model's range of lengths
+/// ([`soilcut_model::MAGNITUDE`]): d50 only scales a band width given as
+/// N·d50, so 1e300 was taken where the band width was a length.
+fn length(value: f64, key: &str) -> Result<(), InputError> {
+    let [least, greatest] = soilcut_model::MAGNITUDE;
+    if (least..=greatest).contains(&value) {
+        return Ok(());
+    }
+    Err(InputError::key(
+        key,
+        format!("must be a length in [{least:e}, {greatest:e}] (got {value})"),
+    ))
+}
+
+/// `blade.depth_path` as written: an empty list is refused rather than
+/// read as no path (a list meant to hold points).
+fn depth_path(path: Option<&Vec<[f64; 2]>>) -> Result<Vec<[f64; 2]>, InputError> {
+    match path {
+        Some(points) if points.is_empty() => Err(InputError::key(
+            "blade.depth_path",
+            "give at least one point [u, d] (leave the key out for the constant depth blade.depth)",
+        )),
+        given => Ok(given.cloned().unwrap_or_default()),
+    }
+}
+
 /// The refined model's own keys: (friction.initial, dilation, peak_shear,
 /// band width). Fills in the resolved file in place.
 fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), InputError> {
@@ -532,7 +558,7 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
     let dilation = required(soil.dilation, "soil.dilation")?;
     let peak_shear = required(soil.peak_shear, "soil.peak_shear")?;
     let d50 = required(soil.d50, "soil.d50")?;
-    positive(d50, "soil.d50")?;
+    length(d50, "soil.d50")?;
     let band_width = match (soil.band_width, soil.band_width_d50) {
         (Some(width), None) => width,
         (None, Some(n)) => {
@@ -583,7 +609,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         wall_friction: file.blade.wall_friction,
         rake,
         adhesion,
-        depth_path: file.blade.depth_path.clone().unwrap_or_default(),
+        depth_path: depth_path(file.blade.depth_path.as_ref())?,
         width: file.blade.width,
     };
     let class = Class {
