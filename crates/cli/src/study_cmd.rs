@@ -315,6 +315,11 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         profile_grid: args.profile_points,
         jobs: c.jobs,
     };
+    // The free keys and their bounds, before the folder is claimed.
+    fit.params().map_err(|e| match e {
+        StudyError::Key(e) => Failure::argument(path, "--free", &args.free, e),
+        e => fail(e),
+    })?;
     let mut summary = String::new();
     write_study(c.claim(&out)?, |dir| {
         let r = fit.run(&c.progress("runs"))?;

@@ -112,6 +112,38 @@ fn an_unknown_varied_key_is_refused_before_any_run() {
     assert!(o.stdout.is_empty() && !tmp.path().join("x").exists());
 }
 
+/// A `--free` key no run can set is refused as a `--vary` key is: named
+/// as the argument, with the nearest key, before any run.
+#[test]
+fn an_unknown_free_key_names_the_nearest_before_any_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("x").display().to_string();
+    let lab = tmp.path().join("lab.csv");
+    std::fs::write(&lab, "u,force\n0,1\n10,2\n").unwrap();
+    let (case, lab) = (refined(), lab.display().to_string());
+    let free = "soil.friction.peak,soil.friction.peek";
+    let args = [
+        "fit",
+        &case,
+        "--measured",
+        &lab,
+        "--free",
+        free,
+        "--out",
+        &out,
+    ];
+    let o = soilcut(&args);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with(
+            "error: --free soil.friction.peek: soil.friction.peek: unknown key (nearest: `soil.friction.peak`;"
+        ),
+        "{err}"
+    );
+    assert!(o.stdout.is_empty() && !tmp.path().join("x").exists());
+}
+
 #[test]
 fn a_sweep_whose_every_run_fails_exits_2_with_its_files() {
     let tmp = tempfile::tempdir().unwrap();
