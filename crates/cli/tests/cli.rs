@@ -779,6 +779,27 @@ fn a_grain_size_out_of_range_and_an_empty_depth_path_name_their_key() {
     assert_ok(&o);
 }
 
+/// A title past 200 characters is refused naming `title` (or `name`, which
+/// it defaults to), as it heads every picture; 200 are taken.
+#[test]
+fn a_title_past_200_characters_is_refused() {
+    let titled = |title: &str| BASE.replacen("\n", &format!("\ntitle = \"{title}\"\n"), 1);
+    let long = "é".repeat(201);
+    let line = assert_bad_input(&titled(&long), &[], "title: ");
+    assert!(
+        line.contains("at most 200 characters") && line.contains("(got 201)"),
+        "{line}"
+    );
+    let named = BASE.replacen(
+        "name = \"base\"",
+        &format!("name = \"{}\"", "n".repeat(201)),
+        1,
+    );
+    assert_bad_input(&named, &[], "name: the title is at most 200");
+    let o = Sandbox::new(&titled(&"é".repeat(200))).soilcut(&["check", "case.toml"]);
+    assert_ok(&o);
+}
+
 #[test]
 fn check_accepts_every_case_file() {
     let mut found = Vec::new();

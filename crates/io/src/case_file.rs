@@ -513,6 +513,23 @@ fn check_name(name: &str) -> Result<(), InputError> {
     Ok(())
 }
 
+/// Most characters of a case's title: it heads every picture, whose
+/// drawing took seconds for a title of 1e5 characters (issue 50).
+const MAX_TITLE: usize = 200;
+
+/// The title (given as `key`, `title` or the `name` it defaults to) within
+/// [`MAX_TITLE`] characters.
+fn check_title(title: &str, key: &str) -> Result<(), InputError> {
+    let n = title.chars().count();
+    if n <= MAX_TITLE {
+        return Ok(());
+    }
+    Err(InputError::key(
+        key,
+        format!("the title is at most {MAX_TITLE} characters, as it heads every picture (got {n})"),
+    ))
+}
+
 /// A positive, finite number the model never sees (so it cannot check it).
 fn positive(value: f64, key: &str) -> Result<(), InputError> {
     if value.is_finite() && value > 0.0 {
@@ -590,7 +607,13 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
 /// resolved file), validated.
 fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     check_name(&file.name)?;
+    let key = if file.title.is_some() {
+        "title"
+    } else {
+        "name"
+    };
     let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
+    check_title(&title, key)?;
     let rake = *file.blade.rake.get_or_insert(90.0);
     let adhesion = *file.blade.adhesion.get_or_insert(0.0);
     let depth = file.blade.depth;
