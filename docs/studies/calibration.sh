@@ -19,7 +19,7 @@ seed=1
 for depth in shallow deep; do
     # shellcheck disable=SC2086
     "$soilcut" run "$case_dir/$depth.toml" $truth --no-plots -q --out "$tmp/$depth"
-    python3 "$here/synthetic_curve.py" "$tmp/$depth/history.csv" "$case_dir/$depth.measured.csv" \
+    python3 "$here/synthetic_curve.py" "$tmp/$depth/history.csv" "$case_dir/$depth.synthetic.csv" \
         --points 100 --noise 0.02 --seed $seed --weights
     seed=$((seed + 1))
 done
@@ -36,8 +36,8 @@ fit() {
     mv "$tmp/$out" "$here/$out"
     rm -f "$here/$out/.soilcut"
 }
-fit calibration-shallow "$case_dir/shallow.toml" --measured "$case_dir/shallow.measured.csv" "$@"
-fit calibration-deep "$case_dir/deep.toml" --measured "$case_dir/deep.measured.csv" "$@"
-fit calibration-two-depths "$case_dir/shallow.toml" --measured "$case_dir/shallow.measured.csv" \
-    --also "$case_dir/deep.toml=$case_dir/deep.measured.csv" "$@"
+fit calibration-shallow "$case_dir/shallow.toml" --measured "$case_dir/shallow.synthetic.csv" "$@"
+fit calibration-deep "$case_dir/deep.toml" --measured "$case_dir/deep.synthetic.csv" "$@"
+fit calibration-two-depths "$case_dir/shallow.toml" --measured "$case_dir/shallow.synthetic.csv" \
+    --also "$case_dir/deep.toml=$case_dir/deep.synthetic.csv" "$@"
 rm -r "$tmp"

@@ -15,7 +15,10 @@ nbformat = pytest.importorskip("nbformat")
 nbclient = pytest.importorskip("nbclient")
 
 
-def test_the_notebook_runs():
+def test_the_notebook_runs(monkeypatch):
+    # Headless here; the notebook itself picks no backend, so that Jupyter
+    # shows its figures inline.
+    monkeypatch.setenv("MPLBACKEND", "Agg")
     path = ROOT / "examples" / "soilcut.ipynb"
     notebook = nbformat.read(path, as_version=4)
     client = nbclient.NotebookClient(
@@ -29,6 +32,13 @@ def test_the_notebook_runs():
     assert not [o for o in outputs if o.output_type == "error"]
     text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
     assert "200 runs" in text and "FitResult" in text
+
+
+def test_the_notebook_leaves_the_backend_to_jupyter():
+    cells = json.loads((ROOT / "examples" / "soilcut.ipynb").read_text(encoding="utf-8"))["cells"]
+    code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    assert "import matplotlib.pyplot as plt" in code
+    assert "matplotlib.use(" not in code, "a backend set in the notebook hides its figures"
 
 
 def test_the_examples_extra_installs_what_the_examples_import():

@@ -69,6 +69,14 @@ def test_save_refuses_an_occupied_folder(tmp_path, original):
     result.save(tmp_path / "a", pictures=False, force=True)
 
 
+def test_a_folder_save_cannot_use_is_named_in_python_words(tmp_path, original):
+    result = soilcut.run(original.set("run.travel", 1))
+    for folder in [f"{tmp_path}/..", str(tmp_path / ("n" * 256))]:
+        with pytest.raises(ValueError) as raised:
+            result.save(folder, pictures=False)
+        assert "--out" not in str(raised.value) and "folder" in str(raised.value)
+
+
 def test_force_replaces_only_a_folder_soilcut_wrote(tmp_path, original):
     result = soilcut.run(original.set("run.travel", 1))
     notes = tmp_path / "notes.txt"

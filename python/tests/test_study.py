@@ -201,8 +201,40 @@ def test_fit_by_cma_es_is_the_cli_fit(tmp_path, cli, refined):
     run_cli(cli, "fit", str(REFINED), *args, "--out", str(out))
     for name in ["fit.csv", "search.csv", "best.toml"]:
         assert result.files[name] == (out / name).read_text(), name
-    with pytest.raises(ValueError, match="--method pso: expected de .* or cmaes"):
+    with pytest.raises(ValueError, match="^method pso: expected de .* or cmaes"):
         soilcut.fit(case, measured, ["soil.friction.peak"], method="pso")
+
+
+@pytest.mark.parametrize(
+    "call, says",
+    [
+        (lambda c: soilcut.fit(c, ([0, 10], [1, 2]), []), "give at least one key in free"),
+        (
+            lambda c: soilcut.fit(
+                c, ([0, 10], [1, 2]), ["soil.friction.peak"], bounds={"x": (1, 2)}
+            ),
+            "bounds x: not one of the free keys",
+        ),
+        (
+            lambda c: soilcut.fit(c, ([0, 10], [1, 2]), ["run.travel"]),
+            'give bounds={"run.travel": (lo, hi)}',
+        ),
+        (
+            lambda c: soilcut.fit(c, ([0, 10], [1, 2]), ["soil.friction.peak"], objective="x"),
+            "objective x: expected raw",
+        ),
+        (lambda c: soilcut.sweep(c, {}), "give at least one key in vary"),
+        (lambda c: soilcut.sweep(c, {"soil.friction.peak": "30:40"}, sample="lhs"), "sample lhs: "),
+        (lambda c: soilcut.sweep(c, {"soil.friction.peak": "30:40"}), 'is for sample="lhs:N"'),
+    ],
+)
+def test_study_errors_name_the_python_arguments(refined, call, says):
+    """The study crate's messages name the command line's options; Python's
+    name its own arguments instead."""
+    with pytest.raises(ValueError) as raised:
+        call(refined)
+    assert says in str(raised.value)
+    assert "--" not in str(raised.value)
 
 
 def test_fit_width_divides_the_measured_force(refined):

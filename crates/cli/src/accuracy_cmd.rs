@@ -2,7 +2,7 @@
 //! another by the ensemble rule (docs/model.md §12), from their files.
 
 use super::Failure;
-use soilcut_study::accuracy::{Agreement, Verdict};
+use soilcut_study::accuracy::{Agreement, Spread, Verdict};
 use soilcut_study::ensemble::{accuracy_rule, RecordedSpread};
 use std::path::PathBuf;
 
@@ -20,7 +20,7 @@ pub struct AccuracyArgs {
     scheme: PathBuf,
     /// The reference ensemble folder (the reference grid at a fine increment).
     reference: PathBuf,
-    /// Print one JSON object instead of the table.
+    /// Print one JSON object instead of the table, with every row of it.
     #[arg(long)]
     json: bool,
 }
@@ -43,31 +43,45 @@ pub fn accuracy(args: AccuracyArgs) -> Result<(), Failure> {
     }
     let a = scheme.agreement(&reference);
     if args.json {
-        println!("{}", json(&a));
+        println!("{}", json(&scheme, &reference, &a));
     } else {
         print_table(&scheme, &reference, &a);
     }
     Ok(())
 }
 
-/// The agreement as one JSON object.
-fn json(a: &Agreement) -> String {
-    let verdict = |v: &Verdict| {
-        format!(
-            "{{\"deviation\": {}, \"tolerance\": {}, \"within\": {}}}",
-            v.deviation,
-            v.tolerance,
-            v.ok()
-        )
+/// The agreement as one JSON object, every row of the table in it: each
+/// window's u/d range, both ensembles' mean and sd, the deviation, the
+/// tolerance and the verdict (numbers that are not finite are null).
+fn json(scheme: &RecordedSpread, reference: &RecordedSpread, a: &Agreement) -> String {
+    let row = |s: &Spread, r: &Spread, v: &Verdict| {
+        serde_json::json!({
+            "scheme": {"mean": s.mean, "std": s.std},
+            "reference": {"mean": r.mean, "std": r.std},
+            "deviation": v.deviation,
+            "tolerance": v.tolerance,
+            "within": v.ok(),
+        })
     };
-    let windows: Vec<String> = a.windows.iter().map(verdict).collect();
-    format!(
-        "{{\"accurate\": {}, \"worst_ratio\": {}, \"whole_run\": {}, \"windows\": [{}]}}",
-        a.accurate(),
-        a.worst_ratio(),
-        verdict(&a.whole_run),
-        windows.join(", ")
-    )
+    let windows: Vec<serde_json::Value> = a
+        .windows
+        .iter()
+        .enumerate()
+        .map(|(w, v)| {
+            let mut window = row(&scheme.windows[w], &reference.windows[w], v);
+            window["u_over_d_from"] = w.into();
+            window["u_over_d_to"] = (w + 1).into();
+            window
+        })
+        .collect();
+    serde_json::json!({
+        "accurate": a.accurate(),
+        "worst_ratio": a.worst_ratio(),
+        "whole_run": row(&scheme.whole_run, &reference.whole_run, &a.whole_run),
+        "windows": windows,
+        "rule": accuracy_rule(),
+    })
+    .to_string()
 }
 
 /// The table: a row a window and one for the whole run, then the verdict.

@@ -22,7 +22,7 @@ pub fn run_ensemble(
     let case = base.load(&[]).map_err(|e| Failure::input(path, e))?.case;
     let out = target.out_or(&case.name);
     let claim = target.claim(&out)?;
-    super::warn_accuracy(&case, quiet);
+    super::warn_accuracy(&case);
     let ensemble = Ensemble {
         base,
         members,

@@ -89,7 +89,7 @@ enum Command {
         /// Do not draw the pictures (plots/ and animation.gif); `soilcut plot` can draw them later.
         #[arg(long)]
         no_plots: bool,
-        /// No progress bar and no summary line.
+        /// No progress bar and no summary line (warnings are still printed).
         #[arg(long, short)]
         quiet: bool,
         /// Run N members with imperceptible perturbations (soil.d50 × (1 + 0.001 k), or
@@ -409,23 +409,43 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     // Loading validates the case.
     let case = load(path, set)?.case;
-    warn_accuracy(&case, false);
+    warn_accuracy(&case);
     println!(
-        "ok: {}: name {}, model {}, {} steps",
+        "ok: {}: name {}, model {}, {}",
         path.display(),
         case.name,
         case.model.name(),
-        case.steps()
+        extent(&case)
     );
     println!("  {}", case.run.describe(case.blade.depth));
     Ok(())
 }
 
-/// A case that runs but whose grid is known to cost accuracy.
-fn warn_accuracy(case: &Case, quiet: bool) {
-    if quiet {
-        return;
-    }
+/// Bytes of `history.csv` an increment, about: 297 in Fig. 5, 254 in the
+/// original model's case (`soilcut run cases/paper/fig5.toml`, its
+/// history.csv's size over its 1750 rows).
+const HISTORY_ROW_BYTES: f64 = 300.0;
+
+/// Runs from this many increments on say so before they start.
+const LONG_RUN: usize = 100_000;
+
+/// The increments of a run and what they write: `1750 steps (history.csv
+/// about 525 kB)`.
+fn extent(case: &Case) -> String {
+    let bytes = case.steps() as f64 * HISTORY_ROW_BYTES;
+    let (size, unit) = [(1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
+        .into_iter()
+        .find(|(scale, _)| bytes >= *scale)
+        .map_or((bytes, "B"), |(scale, unit)| (bytes / scale, unit));
+    format!(
+        "{} steps (history.csv about {size:.0} {unit})",
+        case.steps()
+    )
+}
+
+/// A case that runs but is known to cost accuracy: shown even with
+/// --quiet, which hides progress only (summary.json lists them too).
+fn warn_accuracy(case: &Case) {
     for warning in case.accuracy_warnings() {
         eprintln!("warning: {warning}");
     }
@@ -438,7 +458,15 @@ fn run(target: CaseOutput, plots: bool, quiet: bool) -> Result<(), Failure> {
     let out = target.out_or(&case.name);
     let claim = target.claim(&out)?;
 
-    warn_accuracy(case, quiet);
+    warn_accuracy(case);
+    if case.steps() >= LONG_RUN && !quiet {
+        eprintln!(
+            "note: {}: {}; {}",
+            path.display(),
+            extent(case),
+            case.run.describe(case.blade.depth)
+        );
+    }
     let bar = progress_bar(case.steps(), quiet);
     let RecordedRun {
         files,

@@ -43,7 +43,7 @@ pub struct Common {
     /// Worker threads [default: one per core]. Results do not depend on it.
     #[arg(long, value_name = "N", default_value_t = 0, hide_default_value = true)]
     pub jobs: usize,
-    /// No progress bar (it is shown only when stderr is a terminal).
+    /// No progress bar (it is shown only when stderr is a terminal); warnings are still printed.
     #[arg(long, short)]
     pub quiet: bool,
 }
@@ -320,6 +320,11 @@ pub fn fit(args: FitArgs) -> Result<(), Failure> {
         profile_grid: args.profile_points,
         jobs: c.jobs,
     };
+    // The free keys and their bounds, before the folder is claimed.
+    fit.params().map_err(|e| match e {
+        StudyError::Key(e) => Failure::argument(path, "--free", &args.free, e),
+        e => fail(e),
+    })?;
     let mut summary = String::new();
     write_study(c.claim(&out)?, |dir| {
         let r = fit.run(&c.progress("runs"))?;

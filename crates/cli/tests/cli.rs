@@ -368,6 +368,46 @@ fn missing_case_file() {
     assert_eq!(sandbox.entries(), ["case.toml"]);
 }
 
+/// `check` prints a fine increment in exponent form (it read "0"), the
+/// count and the size of history.csv it would write; a run that long
+/// says so on stderr before it starts.
+#[test]
+fn check_and_a_long_run_tell_the_increments_and_their_cost() {
+    let sandbox = Sandbox::new(REFINED);
+    let fine = ["--set", "run.travel=0.3", "--set", "run.increment=3e-7"];
+    let mut args = vec!["check", "case.toml"];
+    args.extend(fine);
+    let o = sandbox.soilcut(&args);
+    assert_ok(&o);
+    let text = stdout(&o);
+    assert!(
+        text.contains("1000000 steps (history.csv about 300 MB)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("; increment 3e-7 (d/66666666.67); "),
+        "{text}"
+    );
+    let long = ["--set", "run.increment=2e-4", "--out", "o", "--no-plots"];
+    let mut run = Command::new(env!("CARGO_BIN_EXE_soilcut"))
+        .args(["run", "case.toml"])
+        .args(long)
+        .current_dir(sandbox.dir.path())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    let mut err = std::io::BufReader::new(run.stderr.take().unwrap());
+    std::io::BufRead::read_line(&mut err, &mut line).unwrap();
+    run.kill().unwrap();
+    run.wait().unwrap();
+    assert!(
+        line.starts_with("note: case.toml: 100000 steps (history.csv about 30 MB); ")
+            && line.contains("increment 2e-4 (d/100000)"),
+        "{line}"
+    );
+}
+
 #[test]
 fn refined_case_checks() {
     let sandbox = Sandbox::new(REFINED);
@@ -375,7 +415,7 @@ fn refined_case_checks() {
     assert_ok(&o);
     assert_eq!(
         stdout(&o).trim(),
-        "ok: case.toml: name refined, model refined, 100 steps\n  \
+        "ok: case.toml: name refined, model refined, 100 steps (history.csv about 30 kB)\n  \
          vertex ground, vertices every 0.4 (d/50); increment 0.2 (d/100); \
          time scheme midpoint-force; 8 samples per band"
     );
@@ -675,6 +715,36 @@ fn a_narrow_tine_is_warned_about() {
     assert_eq!(check(tine, &[]), "");
 }
 
+/// `--quiet` hides progress, not the warnings: a narrow tine's run warns
+/// on stderr with -q, and its summary.json lists the warning (an empty
+/// list where nothing is known against the case).
+#[test]
+fn warnings_survive_quiet_and_are_in_summary_json() {
+    let sandbox = Sandbox::new(BASE);
+    let tine = workspace().join("cases/tools/tine.toml");
+    let tine = tine.to_str().unwrap();
+    let short = ["--set", "run.travel=15", "--no-plots", "-q"];
+    let run = |out: &str, width: &str| {
+        let width = format!("blade.width={width}");
+        let mut args = vec!["run", tine, "--set", &width, "--out", out];
+        args.extend(short);
+        let o = sandbox.soilcut(&args);
+        assert_ok(&o);
+        assert_eq!(stdout(&o), "", "-q: no result line");
+        let text = fs::read_to_string(sandbox.path(&format!("{out}/summary.json"))).unwrap();
+        let s: serde_json::Value = serde_json::from_str(&text).unwrap();
+        (stderr(&o), s["warnings"].clone())
+    };
+    let (err, warnings) = run("narrow", "20");
+    assert!(err.starts_with("warning: blade.width = 20"), "{err}");
+    let listed = warnings.as_array().expect("a list of warnings");
+    assert_eq!(listed.len(), 1, "{warnings}");
+    assert_eq!(format!("warning: {}\n", listed[0].as_str().unwrap()), err);
+    let (err, warnings) = run("wide", "50");
+    assert_eq!(err, "");
+    assert_eq!(warnings, serde_json::json!([]));
+}
+
 /// A width that is not a length > 0 is refused with exit code 2, naming
 /// the key.
 #[test]
@@ -689,6 +759,45 @@ fn a_bad_blade_width_names_the_key() {
         assert_eq!(o.status.code(), Some(2), "{bad}");
         assert!(stderr(&o).contains("blade.width"), "{bad}: {}", stderr(&o));
     }
+}
+
+/// `soil.d50` beyond the range of lengths is refused where the band width
+/// is a length too (which does not use d50), and an empty
+/// `blade.depth_path`, each naming the key and what it takes.
+#[test]
+fn a_grain_size_out_of_range_and_an_empty_depth_path_name_their_key() {
+    let length = REFINED.replace("band_width_d50 = 7", "band_width = 4.2");
+    for d50 in ["1e300", "1e-300"] {
+        let set = format!("soil.d50={d50}");
+        let line = assert_bad_input(&length, &[&set], "soil.d50: ");
+        assert!(line.contains("a length in [1e-20, 1e20]"), "{line}");
+    }
+    let line = assert_bad_input(REFINED, &["blade.depth_path=[]"], "blade.depth_path: ");
+    assert!(line.contains("at least one point"), "{line}");
+    let one = ["blade.depth_path=[[0, 20]]"];
+    let o = Sandbox::new(REFINED).soilcut(&["check", "case.toml", "--set", one[0]]);
+    assert_ok(&o);
+}
+
+/// A title past 200 characters is refused naming `title` (or `name`, which
+/// it defaults to), as it heads every picture; 200 are taken.
+#[test]
+fn a_title_past_200_characters_is_refused() {
+    let titled = |title: &str| BASE.replacen("\n", &format!("\ntitle = \"{title}\"\n"), 1);
+    let long = "é".repeat(201);
+    let line = assert_bad_input(&titled(&long), &[], "title: ");
+    assert!(
+        line.contains("at most 200 characters") && line.contains("(got 201)"),
+        "{line}"
+    );
+    let named = BASE.replacen(
+        "name = \"base\"",
+        &format!("name = \"{}\"", "n".repeat(201)),
+        1,
+    );
+    assert_bad_input(&named, &[], "name: the title is at most 200");
+    let o = Sandbox::new(&titled(&"é".repeat(200))).soilcut(&["check", "case.toml"]);
+    assert_ok(&o);
 }
 
 #[test]

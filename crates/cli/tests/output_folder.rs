@@ -339,6 +339,55 @@ fn a_destination_that_cannot_be_made_is_refused_before_running() {
     }
 }
 
+/// Every command that writes a folder at `--out` checks it before it runs
+/// (the run, the ensemble, landscape, bounds and the studies): exit 2,
+/// the error naming the file in the way, nothing made.
+#[test]
+fn every_command_with_out_checks_it_before_running() {
+    let vary = ["--vary", "soil.friction.peak=35,40"];
+    let commands: [&[&str]; 8] = [
+        &["run", "case.toml"],
+        &["run", "case.toml", "--ensemble", "3"],
+        &["landscape", "case.toml", "--at", "0.5"],
+        &["bounds", "case.toml", "--at", "0.5"],
+        &["sweep", "case.toml", vary[0], vary[1]],
+        &[
+            "fit",
+            "case.toml",
+            "--measured",
+            "m.csv",
+            "--free",
+            "soil.friction.peak",
+        ],
+        &["converge", "case.toml", "--levels", "2"],
+        &[
+            "sensitivity",
+            "case.toml",
+            "--method",
+            "morris",
+            "--vary",
+            "soil.friction.peak=35:40",
+        ],
+    ];
+    for command in commands {
+        let place = Place::new();
+        fs::write(place.path("afile.txt"), "mine").unwrap();
+        fs::write(place.path("m.csv"), "u,force\n0,1\n10,2\n").unwrap();
+        let mut args = command.to_vec();
+        args.extend(["--out", "afile.txt/sub"]);
+        // A long run's keys (not its flags, which are run's own).
+        args.extend(&LONG[..4]);
+        let o = place.output(&args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{command:?}: {err}");
+        assert!(
+            err.starts_with("error: afile.txt: ") && err.contains("choose another --out"),
+            "{command:?}: {err}"
+        );
+        assert_eq!(place.entries(), ["afile.txt", "case.toml", "m.csv"]);
+    }
+}
+
 #[test]
 fn a_folder_given_with_a_trailing_dot_is_that_folder() {
     let place = Place::new();

@@ -362,7 +362,18 @@ fn accuracy_judges_one_ensemble_folder_against_another() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["accurate"], true);
     assert_eq!(v["whole_run"]["deviation"], 0.0);
-    assert_eq!(v["windows"].as_array().unwrap().len(), 1);
+    let windows = v["windows"].as_array().unwrap();
+    assert_eq!(windows.len(), 1);
+    // Every row of the table: the window, both ensembles' mean and sd.
+    let w = &windows[0];
+    assert_eq!(
+        (&w["u_over_d_from"], &w["u_over_d_to"]),
+        (&0.into(), &1.into())
+    );
+    assert!(w["scheme"]["mean"].as_f64().unwrap() > 0.0, "{w}");
+    assert_eq!(w["scheme"], w["reference"], "{w}");
+    assert!(v["whole_run"]["reference"]["std"].is_f64(), "{v}");
+    assert!(v["rule"].is_string(), "{v}");
     // Against a finer ensemble: the table names the rule and a verdict.
     let o = soilcut(&["accuracy", "a", "fine"], tmp.path());
     assert_ok(&o);

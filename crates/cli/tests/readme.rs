@@ -313,3 +313,22 @@ fn ci_runs_ruff_over_every_python_file() {
     let config = std::fs::read_to_string(root().join("ruff.toml")).unwrap();
     assert!(!config.contains("exclude = [\"validation") && !config.contains("extend-exclude"));
 }
+
+/// Every page of docs/ and of the guide opens with its title: a bullet
+/// above validation.md's title contradicted the same bullet in its Limits.
+#[test]
+fn every_page_opens_with_its_title() {
+    let mut pages = 0;
+    for dir in ["docs", "docs/guide"] {
+        for entry in std::fs::read_dir(root().join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "md") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            assert!(text.starts_with("# "), "{}", path.display());
+            pages += 1;
+        }
+    }
+    assert!(pages >= 10, "{pages} pages");
+}

@@ -243,6 +243,15 @@ fn check_document(root: &Path, top: &[String], rel: &str, text: &str) -> Vec<Str
         .filter_map(|n| check_name(root, top, &dir, &bases, n))
         .collect();
     if rel.ends_with(".md") {
+        // `(../../`start_depth`)` was a link the guide's conversion broke.
+        let climbs = |n: &&Name| n.text.split('/').all(|c| c == ".." || c.is_empty());
+        for name in names(text)
+            .iter()
+            .filter(|n| n.text.starts_with(".."))
+            .filter(climbs)
+        {
+            problems.push(format!("{}: climbs folders but names none", name.text));
+        }
         for target in link_targets(text) {
             match resolve(root, &dir, &target) {
                 None => problems.push(format!("link {target}: outside the repository")),
@@ -306,6 +315,8 @@ fn the_checker_catches_missing_and_outside_names() {
     assert_eq!(check("docs/model.md", &link).len(), 1);
     let from_crate = ["join(\"", "..", "/", "..", "/nothing\")"].concat();
     assert_eq!(check("crates/io/tests/golden.rs", &from_crate).len(), 1);
+    let climbs = ["start (", "..", "/", "..", "/`start_depth`)"].concat();
+    assert_eq!(check("docs/guide/gym.md", &climbs).len(), 1, "{climbs}");
     // What exists passes; outputs and wildcards are not flagged.
     let fine = [
         "`docs/model.md` §2, crates/model/src/node_grid/node_search.rs, cases/tools/, ",
@@ -333,4 +344,34 @@ fn the_checker_catches_missing_and_outside_names() {
         check("crates/io/tests/golden.rs", &from_crate),
         Vec::<String>::new()
     );
+}
+
+/// Curves the studies' scripts make with `synthetic_curve.py` are named
+/// synthetic, and no document's data is named measured: none was measured
+/// (`docs/studies/calibration.md`).
+#[test]
+fn synthetic_curves_are_named_synthetic() {
+    let studies = root().join("docs/studies");
+    let not_measured = |name: &str| assert!(!name.ends_with(".measured.csv"), "{name}");
+    let mut made = 0;
+    for entry in fs::read_dir(&studies).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        not_measured(&name);
+        if !name.ends_with(".sh") {
+            continue;
+        }
+        for line in fs::read_to_string(&path).unwrap().lines() {
+            let mut words = line.split_whitespace();
+            if words.any(|w| w.ends_with("synthetic_curve.py\"")) {
+                let written = words.nth(1).unwrap_or_default();
+                assert!(written.ends_with(".synthetic.csv\""), "{name}: {line}");
+                made += 1;
+            }
+        }
+    }
+    assert!(made >= 2, "{made} curves made");
+    for entry in fs::read_dir(studies.join("calibration-cases")).unwrap() {
+        not_measured(&entry.unwrap().file_name().to_string_lossy());
+    }
 }

@@ -157,6 +157,10 @@ fn bad_designs_exit_2_naming_the_argument_before_any_run() {
             "--vary soil.friction.peak=45:45",
         ),
         (
+            ["--vary", "soil.friction.peak=abc:45", "--samples", "16"],
+            "--vary soil.friction.peak=abc:45",
+        ),
+        (
             ["--vary", "soil.frict=30:40", "--samples", "16"],
             "--vary soil.frict=30:40",
         ),

@@ -86,30 +86,40 @@ fn sweep_files_do_not_depend_on_the_thread_count() {
     assert_eq!(leftovers, 2, "no staging folders left behind");
 }
 
+/// A `--vary` or `--free` key no run can set is refused before any run,
+/// named as the argument, with the nearest key; no folder made.
 #[test]
-fn an_unknown_varied_key_is_refused_before_any_run() {
+fn an_unknown_study_key_names_the_nearest_before_any_run() {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("x").display().to_string();
-    let case = refined();
-    let mut args = vec![
-        "sweep",
-        &case,
-        "--vary",
-        "soil.frict=30:40:2",
-        "--out",
-        &out,
-    ];
-    args.extend(SHORT);
-    let o = soilcut(&args);
-    assert_eq!(o.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.starts_with(
-            "error: --vary soil.frict=30:40:2: soil.frict: unknown key (nearest: `soil.friction`;"
+    let lab = tmp.path().join("lab.csv");
+    std::fs::write(&lab, "u,force\n0,1\n10,2\n").unwrap();
+    let (case, lab) = (refined(), lab.display().to_string());
+    let free = "soil.friction.peak,soil.friction.peek";
+    let fit = ["fit", &case, "--measured", &lab, "--free", free];
+    let sweep = ["sweep", &case, "--vary", "soil.frict=30:40:2", "", ""];
+    for (command, named, nearest) in [
+        (
+            sweep,
+            "--vary soil.frict=30:40:2: soil.frict",
+            "soil.friction",
         ),
-        "{err}"
-    );
-    assert!(o.stdout.is_empty() && !tmp.path().join("x").exists());
+        (
+            fit,
+            "--free soil.friction.peek: soil.friction.peek",
+            "soil.friction.peak",
+        ),
+    ] {
+        let mut args: Vec<&str> = command.into_iter().filter(|a| !a.is_empty()).collect();
+        args.extend(["--out", &out]);
+        args.extend(SHORT);
+        let o = soilcut(&args);
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        let expected = format!("error: {named}: unknown key (nearest: `{nearest}`;");
+        assert!(err.starts_with(&expected), "{err}");
+        assert!(o.stdout.is_empty() && !tmp.path().join("x").exists());
+    }
 }
 
 #[test]

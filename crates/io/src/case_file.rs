@@ -522,6 +522,23 @@ fn check_name(name: &str) -> Result<(), InputError> {
     Ok(())
 }
 
+/// Most characters of a case's title: it heads every picture, whose
+/// drawing took seconds for a title of 1e5 characters (issue 50).
+const MAX_TITLE: usize = 200;
+
+/// The title (given as `key`, `title` or the `name` it defaults to) within
+/// [`MAX_TITLE`] characters.
+fn check_title(title: &str, key: &str) -> Result<(), InputError> {
+    let n = title.chars().count();
+    if n <= MAX_TITLE {
+        return Ok(());
+    }
+    Err(InputError::key(
+        key,
+        format!("the title is at most {MAX_TITLE} characters, as it heads every picture (got {n})"),
+    ))
+}
+
 /// A positive, finite number the model never sees (so it cannot check it).
 fn positive(value: f64, key: &str) -> Result<(), InputError> {
     if value.is_finite() && value > 0.0 {
@@ -534,6 +551,32 @@ fn positive(value: f64, key: &str) -> Result<(), InputError> {
     }
 }
 
+/// A length the model never sees, in the model's range of lengths
+/// ([`soilcut_model::MAGNITUDE`]): d50 only scales a band width given as
+/// N·d50, so 1e300 was taken where the band width was a length.
+fn length(value: f64, key: &str) -> Result<(), InputError> {
+    let [least, greatest] = soilcut_model::MAGNITUDE;
+    if (least..=greatest).contains(&value) {
+        return Ok(());
+    }
+    Err(InputError::key(
+        key,
+        format!("must be a length in [{least:e}, {greatest:e}] (got {value})"),
+    ))
+}
+
+/// `blade.depth_path` as written: an empty list is refused rather than
+/// read as no path (a list meant to hold points).
+fn depth_path(path: Option<&Vec<[f64; 2]>>) -> Result<Vec<[f64; 2]>, InputError> {
+    match path {
+        Some(points) if points.is_empty() => Err(InputError::key(
+            "blade.depth_path",
+            "give at least one point [u, d] (leave the key out for the constant depth blade.depth)",
+        )),
+        given => Ok(given.cloned().unwrap_or_default()),
+    }
+}
+
 /// The refined model's own keys: (friction.initial, dilation, peak_shear,
 /// band width). Fills in the resolved file in place.
 fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), InputError> {
@@ -541,7 +584,7 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
     let dilation = required(soil.dilation, "soil.dilation")?;
     let peak_shear = required(soil.peak_shear, "soil.peak_shear")?;
     let d50 = required(soil.d50, "soil.d50")?;
-    positive(d50, "soil.d50")?;
+    length(d50, "soil.d50")?;
     let band_width = match (soil.band_width, soil.band_width_d50) {
         (Some(width), None) => width,
         (None, Some(n)) => {
@@ -573,7 +616,13 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
 /// resolved file), validated.
 fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     check_name(&file.name)?;
+    let key = if file.title.is_some() {
+        "title"
+    } else {
+        "name"
+    };
     let title = file.title.get_or_insert_with(|| file.name.clone()).clone();
+    check_title(&title, key)?;
     let adhesion = *file.blade.adhesion.get_or_insert(0.0);
     let depth = file.blade.depth;
     let by_tool = blade_motion(&mut file)?;
@@ -582,7 +631,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         Some(cut) => (cut.rake, cut.depth_path),
         None => (
             file.blade.rake.unwrap_or(90.0),
-            file.blade.depth_path.clone().unwrap_or_default(),
+            depth_path(file.blade.depth_path.as_ref())?,
         ),
     };
     let model = match file.model {

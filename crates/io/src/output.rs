@@ -114,6 +114,7 @@ impl RunOutput<'_> {
             steps: s.steps,
             candidate_evaluations: self.candidate_evaluations,
             wall_time_s: self.wall_time_s,
+            warnings: case.accuracy_warnings(),
             stopped: self.stopped.map(|e| StoppedJson::new(e, case.blade.depth)),
         }
     }
@@ -213,6 +214,10 @@ struct SummaryJson<'a> {
     steps: usize,
     candidate_evaluations: u64,
     wall_time_s: f64,
+    /// What is known against the case's accuracy (`Case::accuracy_warnings`),
+    /// as the front ends warn of it: in the file too, where no terminal
+    /// kept them.
+    warnings: Vec<String>,
     // Only in the summary of a run that stopped: a finished run's file is
     // as it was before runs could stop and keep their files.
     #[serde(skip_serializing_if = "Option::is_none")]

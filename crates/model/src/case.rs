@@ -208,8 +208,7 @@ impl Run {
     /// and as a fraction of the blade depth `depth` (`soilcut check`).
     pub fn describe(&self, depth: f64) -> String {
         let of_depth = |length: f64| {
-            let short = format!("{length:.6}");
-            let short = short.trim_end_matches('0').trim_end_matches('.');
+            let short = significant(length);
             let n = depth / length;
             if (n - n.round()).abs() <= 1e-9 * n {
                 format!("{short} (d/{n:.0})")
@@ -241,6 +240,23 @@ impl Run {
             Ground::Vertices(v) => Some(v),
             Ground::Nodes => None,
         }
+    }
+}
+
+/// `length` to 6 decimals from 0.01 up, below in exponent form to 6
+/// significant digits (1e-7 read "0"), trailing zeros dropped.
+fn significant(length: f64) -> String {
+    let trim = |digits: &str| {
+        let digits = digits.trim_end_matches('0');
+        digits.trim_end_matches('.').to_string()
+    };
+    if length >= 0.01 {
+        return trim(&format!("{length:.6}"));
+    }
+    let text = format!("{length:.5e}");
+    match text.split_once('e') {
+        Some((mantissa, exponent)) => format!("{}e{exponent}", trim(mantissa)),
+        None => text,
     }
 }
 

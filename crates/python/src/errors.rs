@@ -11,6 +11,59 @@ use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 
+/// The command line's options that messages of the study and io crates
+/// name, and the Python arguments that stand for them (`soilcut.sweep`'s
+/// and `soilcut.fit`'s keywords, `save`'s folder), longest first.
+const ARGUMENTS: [(&str, &str); 12] = [
+    (
+        "give at least one --free key",
+        "give at least one key in free",
+    ),
+    (
+        "give at least one --vary key=SPEC",
+        "give at least one key in vary",
+    ),
+    ("--sample lhs:N", "sample=\"lhs:N\""),
+    ("e.g. --out out/NAME", "e.g. \"out/NAME\""),
+    ("with --set", "with Case.set"),
+    ("--objective", "objective"),
+    ("--bounds", "bounds"),
+    ("--sample", "sample"),
+    ("--free", "free"),
+    ("--vary", "vary"),
+    ("--method", "method"),
+    ("--out", "folder"),
+];
+
+/// A message of the study or io crates in the Python arguments' words:
+/// they name the command line's options (`--free`, `--sample lhs:N`,
+/// `give --bounds key=lo:hi`), which Python takes as keyword arguments.
+pub fn python_words(message: &str) -> String {
+    let mut text = bounds_hint(message);
+    for (option, argument) in ARGUMENTS {
+        text = text.replace(option, argument);
+    }
+    text
+}
+
+/// `give --bounds KEY=lo:hi` as Python writes it, `give bounds={"KEY": (lo, hi)}`.
+fn bounds_hint(message: &str) -> String {
+    let (hint, end) = ("give --bounds ", "=lo:hi");
+    let Some(at) = message.find(hint) else {
+        return message.to_string();
+    };
+    let rest = &message[at + hint.len()..];
+    let Some(key_end) = rest.find(end) else {
+        return message.to_string();
+    };
+    let key = &rest[..key_end];
+    let after = &rest[key_end + end.len()..];
+    format!(
+        "{}give bounds={{\"{key}\": (lo, hi)}}{after}",
+        &message[..at]
+    )
+}
+
 /// An instance of the package's exception `class`: `class(message, key)`.
 fn raise(py: Python<'_>, class: &str, message: String, key: Option<String>) -> PyErr {
     let made = package_class(py, class).and_then(|c| c.call1((message, key)));

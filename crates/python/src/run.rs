@@ -4,7 +4,7 @@
 
 use crate::case::Case;
 use crate::convert::{arrays, json};
-use crate::errors::{case_error, detached, step_error, stopped_error};
+use crate::errors::{case_error, detached, python_words, step_error, stopped_error};
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -136,6 +136,8 @@ pub fn csv_columns<'py>(py: Python<'py>, name: &str, text: &str) -> PyResult<Bou
 /// for I/O.
 pub fn output_error(e: OutputError) -> PyErr {
     let path = e.path().display();
+    // The io crate's own message, in the words of `save(folder)`.
+    let told = format!("{path}: {}", python_words(&e.to_string()));
     match e {
         OutputError::Exists(_) => PyFileExistsError::new_err(format!(
             "{path}: the folder exists and is not empty; pass force=True to replace it (only a folder soilcut wrote)"
@@ -148,13 +150,13 @@ pub fn output_error(e: OutputError) -> PyErr {
             soilcut_io::OUTPUT_MARKER
         )),
         OutputError::Unnamed(_) | OutputError::NameTooLong(..) => {
-            PyValueError::new_err(format!("{path}: {e}"))
+            PyValueError::new_err(told)
         }
         OutputError::Busy(..) | OutputError::Appeared { .. } => {
-            PyFileExistsError::new_err(format!("{path}: {e}"))
+            PyFileExistsError::new_err(told)
         }
         OutputError::Unusable { .. } | OutputError::Io { .. } => {
-            PyOSError::new_err(format!("{path}: {e}"))
+            PyOSError::new_err(told)
         }
     }
 }

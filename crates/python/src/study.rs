@@ -2,7 +2,7 @@
 
 use crate::case::Case;
 use crate::convert::{arrays, from_toml, to_toml};
-use crate::errors::{case_error, case_message, detached};
+use crate::errors::{case_error, case_message, detached, python_words};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
@@ -17,11 +17,13 @@ use soilcut_study::sample::{Sample, Vary};
 use soilcut_study::sweep::{check_keys, Sweep, SweepResult};
 use soilcut_study::{no_progress, StudyError};
 
+/// A study's error as Python's: a key's as `soilcut.CaseError`, the rest
+/// in the Python arguments' words (`python_words`).
 pub fn study_error(py: Python<'_>, e: StudyError) -> PyErr {
     match e {
-        StudyError::Case(message) => case_message(py, message),
+        StudyError::Case(message) => case_message(py, python_words(&message)),
         StudyError::Key(e) => case_error(py, &e),
-        e => PyValueError::new_err(e.to_string()),
+        e => PyValueError::new_err(python_words(&e.to_string())),
     }
 }
 
@@ -247,12 +249,8 @@ pub fn fit<'py>(
     let case = case.get();
     let title = case.loaded.case.title.clone();
     let w = measured_width(width, &case.loaded.case, "width").map_err(|e| study_error(py, e))?;
-    let compare: Compare = objective
-        .parse()
-        .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
-    let method: Method = method
-        .parse()
-        .map_err(|e: StudyError| PyValueError::new_err(e.to_string()))?;
+    let compare: Compare = objective.parse().map_err(|e| study_error(py, e))?;
+    let method: Method = method.parse().map_err(|e| study_error(py, e))?;
     let (evaluations, population, polish_iterations, profile_grid) = budget;
     let weights = vec![1.0; measured.len()];
     let fit = Fit {

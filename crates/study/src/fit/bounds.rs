@@ -160,6 +160,11 @@ pub fn free_keys(
         if free[..i].contains(key) {
             return Err(StudyError::Spec(format!("--free {key}: given twice")));
         }
+        // A key no run can set, named with the nearest one that can, as
+        // a sweep's --vary is (a free key takes numbers).
+        if let Some(e) = base.unknown_key(key, &toml::Value::Float(0.0)) {
+            return Err(StudyError::Key(e));
+        }
         let start = base.number(key).map_err(StudyError::Spec)?;
         let p = match bounds.iter().rev().find(|b| &b.0 == key) {
             Some(&(_, lo, hi)) => Free {
