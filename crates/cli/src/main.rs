@@ -408,16 +408,20 @@ fn load(path: &Path, set: &[String]) -> Result<LoadedCase, Failure> {
 
 fn check(path: &Path, set: &[String]) -> Result<(), Failure> {
     // Loading validates the case.
-    let case = load(path, set)?.case;
-    warn_accuracy(&case);
+    let loaded = load(path, set)?;
+    let case = &loaded.case;
+    warn_accuracy(case);
     println!(
         "ok: {}: name {}, model {}, {}",
         path.display(),
         case.name,
         case.model.name(),
-        extent(&case)
+        extent(case)
     );
     println!("  {}", case.run.describe(case.blade.depth));
+    if let Some(line) = loaded.tool_line() {
+        println!("  {line}");
+    }
     Ok(())
 }
 

@@ -1087,3 +1087,51 @@ fn landscape_needs_one_valid_moment() {
     }
     assert_eq!(sandbox.entries(), ["case.toml"], "no output folder");
 }
+
+/// A tool (docs/model.md §21): `check` says which blade it is (M55); a
+/// profile that crosses itself, a pose path going backwards and a tool
+/// the mechanism cannot take yet exit 2 naming their key, before any
+/// folder.
+#[test]
+fn a_tool_is_checked_by_its_keys_and_told_as_its_blade() {
+    let file = workspace().join("cases/tools/straight-profile.toml");
+    let tool = fs::read_to_string(&file).unwrap();
+    let sandbox = Sandbox::new(&tool);
+    let o = sandbox.soilcut(&["check", "case.toml"]);
+    assert_ok(&o);
+    assert!(
+        stdout(&o).contains("tool: a straight profile, pivot [0.0, 0.0], 2 poses over s = 0 to 100: the blade of rake 90° at constant depth"),
+        "{}",
+        stdout(&o)
+    );
+    let points = "tool.points=[[0.0, 0.0], [0.0, 10.0], [-5.0, 2.0], [5.0, 5.0]]";
+    assert_bad_input(
+        &tool,
+        &["tool.shape=\"points\"", "tool.rake=90", points],
+        "tool.rake: is not a key",
+    );
+    let crossing = tool
+        .replace("shape = \"straight\"", "shape = \"points\"")
+        .replace(
+            "rake = 90.0           # α at rotation 0, degrees (90: vertical)\n",
+            "",
+        )
+        .replace(
+            "height = 70.0",
+            "points = [[0.0, 0.0], [0.0, 10.0], [-5.0, 2.0], [5.0, 5.0]]",
+        );
+    assert_bad_input(&crossing, &[], "tool.points: crosses itself: piece 0");
+    let back =
+        "tool.motion=[[0.0, 0.0, -20.0, 0.0], [50.0, 50.0, -20.0, 0.0], [40.0, 60.0, -20.0, 0.0]]";
+    assert_bad_input(&tool, &[back], "tool.motion: goes backwards in s: pose 2");
+    let curl = "tool.motion=[[0.0, 0.0, -20.0, 0.0], [50.0, 50.0, -20.0, 10.0]]";
+    assert_bad_input(&tool, &[curl], "tool.motion: pose 1 rotates the tool");
+    let bucket = tool
+        .replace("shape = \"straight\"", "shape = \"bucket\"")
+        .replace(
+            "rake = 90.0           # α at rotation 0, degrees (90: vertical)\n",
+            "",
+        )
+        .replace("height = 70.0", "floor = 40.0\nback_radius = 30.0");
+    assert_bad_input(&bucket, &[], "tool.shape: a curved or bent profile");
+}

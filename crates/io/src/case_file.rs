@@ -262,6 +262,23 @@ impl LoadedCase {
         loaded
     }
 
+    /// `soilcut check`'s line for a case with a tool: the tool and the
+    /// blade it is (M55); None for a case without one.
+    pub fn tool_line(&self) -> Option<String> {
+        let tool = self.resolved.tool.as_ref()?;
+        let blade = &self.case.blade;
+        let path = if blade.depth_path.is_empty() {
+            "at constant depth"
+        } else {
+            "along its cutting edge's depth path"
+        };
+        Some(format!(
+            "{}: the blade of rake {}° {path} (docs/model.md §21, (M55))",
+            tool.describe(),
+            blade.rake
+        ))
+    }
+
     /// The notices of keys written in the form of an earlier version,
     /// one line each (the command line prints them on stderr, Python warns
     /// with them).

@@ -114,6 +114,17 @@ impl ToolFile {
         })
     }
 
+    /// The tool in a few words: its shape, pivot and poses.
+    pub(super) fn describe(&self) -> String {
+        let last = self.motion.last().map_or(0.0, |row| row[0]);
+        format!(
+            "tool: a {} profile, pivot {:?}, {} poses over s = 0 to {last}",
+            self.shape.word(),
+            self.pivot.unwrap_or([0.0, 0.0]),
+            self.motion.len()
+        )
+    }
+
     /// Refuses a key of another shape, naming it and its shape.
     fn check_keys(&self) -> Result<(), InputError> {
         let given = [
