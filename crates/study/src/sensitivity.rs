@@ -18,6 +18,7 @@ use crate::error::StudyError;
 use crate::run::BaseCase;
 use crate::sample::Vary;
 
+mod analysis;
 pub mod bootstrap;
 pub mod design;
 mod files;
@@ -28,8 +29,9 @@ mod runs;
 pub mod sequence;
 pub mod sobol;
 
+pub use analysis::{Indices, OutputIndices};
 pub use function::Function;
-pub use outputs::{MEANINGS, OUTPUTS};
+pub use outputs::{MEANINGS, OUTPUTS, UNITS};
 pub use runs::{RunRow, SensitivityResult};
 
 /// The name of the input that no run reads (`dummy`).

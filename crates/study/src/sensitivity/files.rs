@@ -1,16 +1,17 @@
 //! The files of a sensitivity study: `indices.csv`, `samples.csv`,
 //! `summary.json`, `sensitivity.md`, `timing.csv`.
 
-use super::runs::{Indices, OutputIndices, SensitivityResult};
-use super::{bootstrap, Method};
+use super::analysis::{Indices, OutputIndices};
+use super::runs::SensitivityResult;
+use super::{bootstrap, outputs, Method};
 use crate::field::number;
 use soilcut_io::CsvText;
 
 impl SensitivityResult {
     /// `indices.csv`: Sobol `output,key,S1,S1_low,S1_high,ST,ST_low,ST_high`;
     /// Morris `output,key,mu_star,mu_star_low,mu_star_high,sigma,mu`.
-    /// Empty fields for an output that does not vary; no rows if a run
-    /// failed.
+    /// Empty fields for an output that does not vary or that a run does
+    /// not have; no rows if a run failed.
     pub fn indices_csv(&self) -> String {
         let header = match self.study.method {
             Method::Sobol => "output,key,S1,S1_low,S1_high,ST,ST_low,ST_high",
@@ -20,7 +21,11 @@ impl SensitivityResult {
         for o in self.analysis.as_deref().unwrap_or(&[]) {
             for (j, key) in self.keys.iter().enumerate() {
                 let mut fields = vec![o.name.clone(), key.clone()];
-                fields.extend(index_fields(&o.indices, j).iter().map(|&x| number(x)));
+                fields.extend(
+                    index_fields(self.study.method, &o.indices, j)
+                        .iter()
+                        .map(|&x| number(x)),
+                );
                 out.fields(&fields);
             }
         }
@@ -68,7 +73,7 @@ impl SensitivityResult {
     }
 
     /// `summary.json`: the study, whether it is complete, each output's
-    /// chaos share.
+    /// unit, chaos share and the runs that lack it.
     pub fn summary_json(&self) -> String {
         let s = &self.study;
         let (method, levels) = match s.method {
@@ -85,7 +90,16 @@ impl SensitivityResult {
             .as_deref()
             .unwrap_or(&[])
             .iter()
-            .map(|o| serde_json::json!({"output": o.name, "chaos_share": o.chaos_share}))
+            .map(|o| {
+                let undefined = match o.indices {
+                    Indices::Undefined { runs } => runs,
+                    _ => 0,
+                };
+                serde_json::json!({
+                    "output": o.name, "unit": outputs::unit_of(&o.name),
+                    "chaos_share": o.chaos_share, "undefined_runs": undefined,
+                })
+            })
             .collect();
         let failed = self.runs.iter().filter(|r| r.outcome.is_err()).count();
         let json = serde_json::json!({
@@ -114,9 +128,13 @@ impl SensitivityResult {
     }
 }
 
-/// The numbers of input `j`'s row of `indices.csv`.
-fn index_fields(indices: &Indices, j: usize) -> Vec<f64> {
+/// The numbers of input `j`'s row of `indices.csv` (NaN: empty).
+fn index_fields(method: Method, indices: &Indices, j: usize) -> Vec<f64> {
     match indices {
+        Indices::Undefined { .. } => match method {
+            Method::Sobol => vec![f64::NAN; 6],
+            Method::Morris { .. } => vec![f64::NAN; 5],
+        },
         Indices::Sobol(Some(all)) => {
             let i = &all[j];
             vec![
@@ -165,14 +183,24 @@ impl SensitivityResult {
             .map_or("not measured (one member a point)".to_string(), |c| {
                 format!("{c:.4}")
             });
-        let mut md = format!("\n## {}\n\nChaos share: {share}.\n\n", o.name);
-        let head = match o.indices {
-            Indices::Sobol(_) => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
-            Indices::Morris(_) => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
+        let unit = outputs::unit_of(&o.name);
+        let mut md = format!("\n## {} ({unit})\n\n", o.name);
+        if let Indices::Undefined { runs } = o.indices {
+            return md
+                + &format!(
+                "Not defined in {runs} of {} runs (see the guide's output table): no indices.\n",
+                self.runs.len()
+            );
+        }
+        md += &format!("Chaos share: {share}.\n\n");
+        let method = self.study.method;
+        let head = match method {
+            Method::Sobol => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
+            Method::Morris { .. } => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
         };
         md += head;
         for (j, key) in self.keys.iter().enumerate() {
-            let f = index_fields(&o.indices, j);
+            let f = index_fields(method, &o.indices, j);
             let n = |x: f64| {
                 if x.is_finite() {
                     format!("{x:.4}")
@@ -180,14 +208,14 @@ impl SensitivityResult {
                     "–".into()
                 }
             };
-            let cells = match o.indices {
-                Indices::Sobol(_) => [
+            let cells = match method {
+                Method::Sobol => [
                     n(f[0]),
                     format!("{} to {}", n(f[1]), n(f[2])),
                     n(f[3]),
                     format!("{} to {}", n(f[4]), n(f[5])),
                 ],
-                Indices::Morris(_) => [
+                Method::Morris { .. } => [
                     n(f[0]),
                     format!("{} to {}", n(f[1]), n(f[2])),
                     n(f[3]),

@@ -1,12 +1,10 @@
 //! The runs of a sensitivity study and the indices of their outputs.
 
-use super::morris::{morris_indices, MorrisIndex};
-use super::sobol::{sobol_indices, SobolIndex};
-use super::{bootstrap, design, outputs, Method, Model, Sensitivity};
+use super::analysis::{output_indices, OutputIndices};
+use super::{design, outputs, Method, Model, Sensitivity};
 use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
 use crate::ensemble::{member_offsets, Perturbation};
 use crate::error::StudyError;
-use crate::figures::mean;
 use crate::run::override_of;
 use crate::sample::MAX_RUNS;
 use crate::Progress;
@@ -20,31 +18,10 @@ pub struct RunRow {
     pub point: usize,
     /// Member k (0 without members).
     pub k: i32,
-    /// The outputs ([`outputs::OUTPUTS`] or `f`), or why the run failed.
+    /// The outputs ([`outputs::names`] or `f`), or why the run failed.
     pub outcome: Result<Vec<f64>, String>,
     /// Wall time of the simulation, s.
     pub wall_time_s: f64,
-}
-
-/// The indices of every input for one output.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Indices {
-    /// μ*, μ, σ per input.
-    Morris(Vec<MorrisIndex>),
-    /// S1, ST per input; `None` for an output that does not vary.
-    Sobol(Option<Vec<SobolIndex>>),
-}
-
-/// One output's analysis.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OutputIndices {
-    /// The output's name.
-    pub name: String,
-    /// Indices of its ensemble mean.
-    pub indices: Indices,
-    /// Mean within-point variance of the members / variance of every
-    /// run's output (None with one member, or no variance).
-    pub chaos_share: Option<f64>,
 }
 
 /// A finished sensitivity study.
@@ -197,10 +174,13 @@ impl Sensitivity {
                 wall_time_s,
             }
         };
-        let runs: Vec<RunRow> =
+        let mut runs: Vec<RunRow> =
             crate::pool(self.jobs)?.install(|| jobs.par_iter().map(one).collect());
-        let outputs = self.output_names();
-        let analysis = analyse(self, &unit, &runs, outputs.len(), &outputs);
+        let outputs = match self.model {
+            Model::Case(_) => outputs::names(common_windows(&mut runs)),
+            Model::Function(_) => vec!["f".to_string()],
+        };
+        let analysis = analyse(self, &unit, &runs, &outputs);
         Ok(SensitivityResult {
             study: self.clone(),
             keys: self.keys(),
@@ -211,13 +191,6 @@ impl Sensitivity {
             perturbation: perturbation.map(|p| p.rule()),
             analysis,
         })
-    }
-
-    fn output_names(&self) -> Vec<String> {
-        match self.model {
-            Model::Case(_) => outputs::OUTPUTS.iter().map(|s| s.to_string()).collect(),
-            Model::Function(_) => vec!["f".to_string()],
-        }
     }
 
     /// The ensembles' rule at the case's own values (for summary.json);
@@ -254,7 +227,7 @@ impl Sensitivity {
             }
         }
         match base.run(&overrides) {
-            Ok(run) => (Ok(outputs::outputs_of(&run).to_vec()), run.wall_time_s),
+            Ok(run) => (Ok(outputs::outputs_of(&run)), run.wall_time_s),
             Err(e) => (Err(e), 0.0),
         }
     }
@@ -267,59 +240,41 @@ fn analyse(
     s: &Sensitivity,
     unit: &[Vec<f64>],
     runs: &[RunRow],
-    count: usize,
     names: &[String],
 ) -> Result<Vec<OutputIndices>, String> {
-    if let Some((row, e)) = runs
-        .iter()
-        .find_map(|r| r.outcome.as_ref().err().map(|e| (r, e)))
-    {
-        return Err(format!(
-            "design point {} (member k = {}) failed: {e}",
-            row.point + 1,
-            row.k
-        ));
-    }
-    let d = s.keys().len();
-    let members = runs.len() / unit.len();
-    let output = |o: usize| {
-        let all: Vec<f64> = runs
-            .iter()
-            .map(|r| r.outcome.as_ref().map_or(f64::NAN, |v| v[o]))
-            .collect();
-        let means: Vec<f64> = all.chunks(members).map(mean).collect();
-        let indices = match s.method {
-            Method::Morris { levels } => Indices::Morris(morris_indices(
-                unit,
-                &means,
-                d,
-                levels,
-                bootstrap::RESAMPLES,
-                s.seed,
-            )),
-            Method::Sobol => Indices::Sobol(sobol_indices(&means, d, bootstrap::RESAMPLES, s.seed)),
-        };
-        OutputIndices {
-            name: names[o].clone(),
-            indices,
-            chaos_share: chaos_share(&all, members),
+    let mut values = Vec::with_capacity(runs.len());
+    for row in runs {
+        match &row.outcome {
+            Ok(v) => values.push(v.as_slice()),
+            Err(e) => {
+                return Err(format!(
+                    "design point {} (member k = {}) failed: {e}",
+                    row.point + 1,
+                    row.k
+                ))
+            }
         }
-    };
-    Ok((0..count).map(output).collect())
+    }
+    let output = |(o, name): (usize, &String)| output_indices(s, unit, &values, o, name);
+    Ok(names.iter().enumerate().map(output).collect())
 }
 
-/// Mean over the points of the members' variance (n − 1) over the
-/// variance (n) of every run (`all`, `members` runs a point); None for
-/// one member or outputs that do not vary.
-pub fn chaos_share(all: &[f64], members: usize) -> Option<f64> {
-    if members < 2 {
-        return None;
+/// The unit windows every run covers: the fewest of any (a case whose
+/// travel or depth is varied covers fewer windows in some runs); the
+/// longer runs' further windows are dropped, so that every run has the
+/// same outputs.
+fn common_windows(runs: &mut [RunRow]) -> usize {
+    let fixed = outputs::OUTPUTS.len();
+    let windows = runs
+        .iter()
+        .filter_map(|r| r.outcome.as_ref().ok())
+        .map(|v| v.len().saturating_sub(fixed))
+        .min()
+        .unwrap_or(0);
+    for row in runs {
+        if let Ok(v) = &mut row.outcome {
+            v.truncate(fixed + windows);
+        }
     }
-    let within: Vec<f64> = all
-        .chunks(members)
-        .map(|m| bootstrap::sd(m).powi(2))
-        .collect();
-    let m = mean(all);
-    let total = all.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / all.len() as f64;
-    (total > 0.0).then(|| mean(&within) / total)
+    windows
 }
