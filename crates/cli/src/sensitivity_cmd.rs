@@ -15,7 +15,8 @@ pub const EXAMPLES: &str = "\
 Examples:
   soilcut sensitivity cases/paper/fig5.toml --method morris --samples 10 \\
       --vary soil.friction.peak=35:45 --vary soil.peak_shear=1:3 --vary blade.wall_friction=5:15
-      writes out/fig5-sensitivity/{indices.csv,samples.csv,summary.json,sensitivity.md,timing.csv}
+      writes out/fig5-sensitivity/{indices.csv,samples.csv,tornado.csv,summary.json,sensitivity.md,
+      timing.csv,indices.png,morris.png,tornado.png}
   soilcut sensitivity cases/paper/fig5.toml --method sobol --samples 256 --members 3 --dummy \\
       --vary soil.friction.peak=35:45 --vary soil.peak_shear=1:3 --seed 2 --jobs 2";
 
@@ -113,6 +114,7 @@ pub fn sensitivity(args: SensitivityArgs) -> Result<(), Failure> {
     write_study(c.claim(&out)?, |dir| {
         let r = study.run(&c.progress("runs"))?;
         text_files(dir, &r.files())?;
+        r.draw(dir)?;
         result = Some(r);
         Ok(())
     })
@@ -132,8 +134,8 @@ pub fn sensitivity(args: SensitivityArgs) -> Result<(), Failure> {
         let seconds = start.elapsed().as_secs_f64();
         println!(
             "sensitivity: {} runs in {seconds:.1} s ({:.1} runs/s), outputs in {}",
-            r.runs.len(),
-            r.runs.len() as f64 / seconds,
+            r.runs.len() + r.tornado_runs.len(),
+            (r.runs.len() + r.tornado_runs.len()) as f64 / seconds,
             out.display()
         );
     }

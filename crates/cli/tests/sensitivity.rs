@@ -93,11 +93,16 @@ fn indices_do_not_depend_on_threads_and_the_dummy_s_are_zero() {
     for name in [
         "indices.csv",
         "samples.csv",
+        "tornado.csv",
         "summary.json",
         "sensitivity.md",
+        "indices.png",
+        "tornado.png",
     ] {
-        assert_eq!(read(&one, name), read(&two, name), "{name}");
+        let bytes = |dir: &Path| std::fs::read(dir.join(name)).unwrap();
+        assert_eq!(bytes(&one), bytes(&two), "{name}");
     }
+    assert!(!one.join("morris.png").exists(), "μ*-σ is Morris's");
     assert_ne!(read(&one, "indices.csv"), read(&other, "indices.csv"));
     let indices = read(&one, "indices.csv");
     let rows: Vec<Vec<&str>> = indices
@@ -127,6 +132,10 @@ fn indices_do_not_depend_on_threads_and_the_dummy_s_are_zero() {
     }
     let samples = read(&one, "samples.csv");
     assert_eq!(samples.lines().count(), 1 + 16 * 5 + 16);
+    // The tornado: the case and three keys at two ends, the dummy not.
+    let tornado = read(&one, "tornado.csv");
+    assert_eq!(tornado.lines().count(), 1 + 7);
+    assert_eq!(read(&one, "timing.csv").lines().count(), 1 + 96 + 7);
     assert!(read(&one, "summary.json").contains("\"complete\": true"));
 }
 
@@ -149,6 +158,10 @@ fn members_give_each_output_a_chaos_share() {
     );
     let summary: serde_json::Value = serde_json::from_str(&read(&out, "summary.json")).unwrap();
     assert_eq!(summary["runs"], 3 * 3 * 3);
+    assert_eq!(summary["tornado_runs"], (2 * 2 + 1) * 3);
+    for picture in ["indices.png", "morris.png", "tornado.png"] {
+        assert!(out.join(picture).exists(), "{picture}");
+    }
     for o in summary["outputs"].as_array().unwrap() {
         if o["undefined_runs"] == 0 {
             let share = o["chaos_share"].as_f64().unwrap();
@@ -300,5 +313,24 @@ fn outputs_are_those_of_each_run_s_own_files() {
     );
     let top = heights.iter().copied().fold(0.0, f64::max);
     assert_eq!(value("pile_height"), top / 20.0);
+    // The tornado's run of φp at its lower end, the travel the case's.
+    let tornado = columns(&read(&out, "tornado.csv"));
+    assert_eq!(tornado["end"], ["case", "lo", "hi", "lo", "hi"]);
+    assert_eq!(tornado["key"][1], "soil.friction.peak");
+    assert_eq!(tornado["value"][1], "35");
+    let alone = tmp.path().join("alone");
+    let a = alone.display().to_string();
+    let mut args = vec!["run", &case, "--no-plots", "-q", "--out", &a];
+    args.extend(COARSE);
+    args.extend(["--set", "soil.friction.peak=35"]);
+    let done = soilcut(&args);
+    assert!(
+        done.status.success(),
+        "{}",
+        String::from_utf8_lossy(&done.stderr)
+    );
+    let forces = numbers(&columns(&read(&alone, "history.csv"))["force_norm"]);
+    let at_lo: f64 = tornado["mean_force_norm"][1].parse().unwrap();
+    assert!(close(at_lo, mean(&forces)));
     assert!(value("pile_area") > 0.0 && value("pile_area") < top / 20.0 * 70.0 / 20.0);
 }

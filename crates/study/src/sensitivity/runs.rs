@@ -1,11 +1,12 @@
 //! The runs of a sensitivity study and the indices of their outputs.
 
 use super::analysis::{output_indices, OutputIndices};
+use super::tornado::{self, TornadoPoint};
 use super::{design, outputs, Method, Model, Sensitivity};
 use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
 use crate::ensemble::{member_offsets, Perturbation};
 use crate::error::StudyError;
-use crate::run::override_of;
+use crate::run::{override_of, BaseCase};
 use crate::sample::MAX_RUNS;
 use crate::Progress;
 use rayon::prelude::*;
@@ -39,6 +40,10 @@ pub struct SensitivityResult {
     pub values: Vec<Vec<f64>>,
     /// Every run, point by point, members in the order of k.
     pub runs: Vec<RunRow>,
+    /// The tornado's points (none for a test function).
+    pub tornado: Vec<TornadoPoint>,
+    /// Their runs, point by point, members in the order of k.
+    pub tornado_runs: Vec<RunRow>,
     /// The ensembles' rule, if K > 1.
     pub perturbation: Option<String>,
     /// The indices per output, or the first failed run.
@@ -148,8 +153,8 @@ impl Sensitivity {
         (unit, values)
     }
 
-    /// Runs every design point's members on `jobs` threads and computes
-    /// the indices of every output.
+    /// Runs every design point's members, and the tornado's of a case, on
+    /// `jobs` threads, and computes the indices of every output.
     pub fn run(&self, progress: Progress) -> Result<SensitivityResult, StudyError> {
         self.check()?;
         let (unit, values) = self.design();
@@ -159,13 +164,19 @@ impl Sensitivity {
         } else {
             vec![0]
         };
-        let jobs: Vec<(usize, i32)> = (0..values.len())
+        let tornado = self.tornado_points();
+        let points = (0..values.len()).map(Job::Design);
+        let points = points.chain((0..tornado.len()).map(Job::Tornado));
+        let jobs: Vec<(Job, i32)> = points
             .flat_map(|p| ks.iter().map(move |&k| (p, k)))
             .collect();
         let finished = AtomicUsize::new(0);
         progress(0, jobs.len());
-        let one = |&(point, k): &(usize, i32)| {
-            let (outcome, wall_time_s) = self.run_one(&values[point], k);
+        let one = |&(job, k): &(Job, i32)| {
+            let (point, (outcome, wall_time_s)) = match job {
+                Job::Design(p) => (p, self.run_point(&values[p], k)),
+                Job::Tornado(t) => (t, self.run_tornado(&tornado[t], k)),
+            };
             progress(finished.fetch_add(1, Ordering::Relaxed) + 1, jobs.len());
             RunRow {
                 point,
@@ -176,11 +187,22 @@ impl Sensitivity {
         };
         let mut runs: Vec<RunRow> =
             crate::pool(self.jobs)?.install(|| jobs.par_iter().map(one).collect());
+        let mut tornado_runs = runs.split_off(values.len() * ks.len());
         let outputs = match self.model {
-            Model::Case(_) => outputs::names(common_windows(&mut runs)),
+            Model::Case(_) => {
+                let windows = common_windows(&runs);
+                fit_windows(&mut runs, windows);
+                fit_windows(&mut tornado_runs, windows);
+                outputs::names(windows)
+            }
             Model::Function(_) => vec!["f".to_string()],
         };
-        let analysis = analyse(self, &unit, &runs, &outputs);
+        let analysis = analyse(self, &unit, &runs, &outputs).and_then(|a| {
+            failure(&tornado_runs, |row| {
+                self.tornado_run_named(&tornado[row.point], row.k)
+            })?;
+            Ok(a)
+        });
         Ok(SensitivityResult {
             study: self.clone(),
             keys: self.keys(),
@@ -188,9 +210,27 @@ impl Sensitivity {
             design: unit,
             values,
             runs,
+            tornado,
+            tornado_runs,
             perturbation: perturbation.map(|p| p.rule()),
             analysis,
         })
+    }
+
+    /// The tornado's points: a case's (none for a test function, which
+    /// has no values of its own).
+    fn tornado_points(&self) -> Vec<TornadoPoint> {
+        match self.model {
+            Model::Case(_) => tornado::points(self.ranges.len()),
+            Model::Function(_) => Vec::new(),
+        }
+    }
+
+    fn tornado_run_named(&self, point: &TornadoPoint, k: i32) -> String {
+        match point.setting(&self.ranges) {
+            Some((key, value)) => format!("tornado run {key} = {value} (member k = {k})"),
+            None => format!("tornado run of the case (member k = {k})"),
+        }
     }
 
     /// The ensembles' rule at the case's own values (for summary.json);
@@ -202,35 +242,74 @@ impl Sensitivity {
         }
     }
 
-    /// Member k of the point `values`: its outputs and wall time.
-    fn run_one(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
-        let base = match &self.model {
-            Model::Function(f) => return (Ok(vec![f.value(values)]), 0.0),
-            Model::Case(base) => base,
-        };
-        let mut overrides = Vec::new();
-        for (r, v) in self.ranges.iter().zip(values) {
-            match override_of(&r.key, &toml::Value::Float(*v)) {
-                Ok(o) => overrides.push(o),
-                Err(e) => return (Err(e), 0.0),
+    /// Member k of the design point `values`: its outputs and wall time.
+    fn run_point(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
+        match &self.model {
+            Model::Function(f) => (Ok(vec![f.value(values)]), 0.0),
+            Model::Case(base) => {
+                let keys = self.ranges.iter().map(|r| r.key.as_str());
+                let set: Vec<(&str, f64)> = keys.zip(values.iter().copied()).collect();
+                run_member(base, &set, k)
             }
-        }
-        if k != 0 {
-            let member = base
-                .load(&overrides)
-                .map_err(|e| e.to_string())
-                .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
-                .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
-            match member {
-                Ok(o) => overrides.push(o),
-                Err(e) => return (Err(e), 0.0),
-            }
-        }
-        match base.run(&overrides) {
-            Ok(run) => (Ok(outputs::outputs_of(&run)), run.wall_time_s),
-            Err(e) => (Err(e), 0.0),
         }
     }
+
+    /// Member k of a tornado point (a case's only).
+    fn run_tornado(&self, point: &TornadoPoint, k: i32) -> (Result<Vec<f64>, String>, f64) {
+        match &self.model {
+            Model::Case(base) => run_member(
+                base,
+                &point.setting(&self.ranges).into_iter().collect::<Vec<_>>(),
+                k,
+            ),
+            Model::Function(_) => (Err("a test function has no tornado".into()), 0.0),
+        }
+    }
+}
+
+/// What a run is: a design point, or a tornado point (their indices).
+#[derive(Clone, Copy, Debug)]
+enum Job {
+    Design(usize),
+    Tornado(usize),
+}
+
+/// Member k of the case with the keys `set` to their values: its outputs
+/// and wall time.
+fn run_member(base: &BaseCase, set: &[(&str, f64)], k: i32) -> (Result<Vec<f64>, String>, f64) {
+    let mut overrides = Vec::new();
+    for (key, v) in set {
+        match override_of(key, &toml::Value::Float(*v)) {
+            Ok(o) => overrides.push(o),
+            Err(e) => return (Err(e), 0.0),
+        }
+    }
+    if k != 0 {
+        let member = base
+            .load(&overrides)
+            .map_err(|e| e.to_string())
+            .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
+            .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
+        match member {
+            Ok(o) => overrides.push(o),
+            Err(e) => return (Err(e), 0.0),
+        }
+    }
+    match base.run(&overrides) {
+        Ok(run) => (Ok(outputs::outputs_of(&run)), run.wall_time_s),
+        Err(e) => (Err(e), 0.0),
+    }
+}
+
+/// The first failed run of `rows`, as "`named(row)` failed: why", or every
+/// row's outputs.
+fn failure(rows: &[RunRow], named: impl Fn(&RunRow) -> String) -> Result<Vec<&[f64]>, String> {
+    rows.iter()
+        .map(|row| match &row.outcome {
+            Ok(v) => Ok(v.as_slice()),
+            Err(e) => Err(format!("{} failed: {e}", named(row))),
+        })
+        .collect()
 }
 
 /// The indices of each output's ensemble mean, and its chaos share; the
@@ -242,39 +321,45 @@ fn analyse(
     runs: &[RunRow],
     names: &[String],
 ) -> Result<Vec<OutputIndices>, String> {
-    let mut values = Vec::with_capacity(runs.len());
-    for row in runs {
-        match &row.outcome {
-            Ok(v) => values.push(v.as_slice()),
-            Err(e) => {
-                return Err(format!(
-                    "design point {} (member k = {}) failed: {e}",
-                    row.point + 1,
-                    row.k
-                ))
-            }
-        }
-    }
+    let named = |row: &RunRow| format!("design point {} (member k = {})", row.point + 1, row.k);
+    let values = failure(runs, named)?;
     let output = |(o, name): (usize, &String)| output_indices(s, unit, &values, o, name);
     Ok(names.iter().enumerate().map(output).collect())
 }
 
-/// The unit windows every run covers: the fewest of any (a case whose
-/// travel or depth is varied covers fewer windows in some runs); the
-/// longer runs' further windows are dropped, so that every run has the
-/// same outputs.
-fn common_windows(runs: &mut [RunRow]) -> usize {
+/// The unit windows every design run covers: the fewest of any (a case
+/// whose travel or depth is varied covers fewer windows in some runs).
+fn common_windows(runs: &[RunRow]) -> usize {
     let fixed = outputs::OUTPUTS.len();
-    let windows = runs
-        .iter()
+    runs.iter()
         .filter_map(|r| r.outcome.as_ref().ok())
         .map(|v| v.len().saturating_sub(fixed))
         .min()
-        .unwrap_or(0);
-    for row in runs {
+        .unwrap_or(0)
+}
+
+/// Gives every run of `rows` `windows` unit windows: the further ones
+/// dropped, those a tornado run does not cover NaN (the case's own travel
+/// may be shorter than a varied travel's range).
+fn fit_windows(rows: &mut [RunRow], windows: usize) {
+    for row in rows {
         if let Ok(v) = &mut row.outcome {
-            v.truncate(fixed + windows);
+            v.resize(outputs::OUTPUTS.len() + windows, f64::NAN);
         }
     }
-    windows
+}
+
+impl SensitivityResult {
+    /// Output `name`'s tornado (the case's value and each key's at its
+    /// ends), or None: no tornado (a test function), no such output, or a
+    /// run of it failed.
+    pub fn tornado_ranges(&self, name: &str) -> Option<tornado::Ranges> {
+        let o = self.outputs.iter().position(|n| n == name)?;
+        if self.tornado.is_empty() {
+            return None;
+        }
+        let values = failure(&self.tornado_runs, |_| String::new()).ok()?;
+        let means = tornado::means(&values, values.len() / self.tornado.len());
+        Some(tornado::ranges_of(&means, o))
+    }
 }
