@@ -46,6 +46,8 @@ fn sobol(out: &Path, jobs: &str, seed: &str) -> PathBuf {
         "--samples",
         "16",
         "--dummy",
+        "--members",
+        "1",
         "-q",
         "--vary",
         "soil.friction.peak=35:45",
@@ -252,6 +254,8 @@ fn outputs_are_those_of_each_run_s_own_files() {
         &[
             "--samples",
             "2",
+            "--members",
+            "1",
             "--vary",
             "soil.friction.peak=35:45",
             "--vary",
@@ -333,4 +337,30 @@ fn outputs_are_those_of_each_run_s_own_files() {
     let at_lo: f64 = tornado["mean_force_norm"][1].parse().unwrap();
     assert!(close(at_lo, mean(&forces)));
     assert!(value("pile_area") > 0.0 && value("pile_area") < top / 20.0 * 70.0 / 20.0);
+}
+
+/// Without --members a case's points are ensembles of the measured
+/// default K, and the help says so.
+#[test]
+fn a_case_s_points_are_ensembles_of_the_default_members() {
+    use soilcut_study::sensitivity::DEFAULT_MEMBERS;
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("k");
+    morris(
+        &out,
+        &["--samples", "2", "--vary", "blade.wall_friction=5:15"],
+    );
+    let summary: serde_json::Value = serde_json::from_str(&read(&out, "summary.json")).unwrap();
+    assert_eq!(summary["members"], DEFAULT_MEMBERS);
+    assert_eq!(summary["runs"], 2 * 2 * DEFAULT_MEMBERS);
+    assert_eq!(summary["tornado_runs"], 3 * DEFAULT_MEMBERS);
+    let help = soilcut(&["sensitivity", "--help"]);
+    let help = String::from_utf8_lossy(&help.stdout)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        help.contains(&format!("({DEFAULT_MEMBERS} when not given")),
+        "{help}"
+    );
 }

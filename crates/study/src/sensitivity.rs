@@ -47,6 +47,12 @@ pub const MIN_SOBOL_SAMPLES: usize = 16;
 pub const MIN_TRAJECTORIES: usize = 2;
 /// Morris levels by default.
 pub const DEFAULT_LEVELS: usize = 4;
+/// Members of each point of a case's study by default: the least K whose
+/// ensemble mean's chaos share is below 5 % of the design's variance for
+/// every force output of Fig. 5, as measured by
+/// `docs/studies/sensitivity_members.py` (docs/guide/sensitivity.md, "The
+/// chaos share").
+pub const DEFAULT_MEMBERS: usize = 6;
 
 /// The method and its design.
 #[derive(Clone, Copy, Debug, PartialEq)]
