@@ -10,7 +10,7 @@ use crate::run::RunResult;
 use soilcut_model::{ProfilePoint, StepRecord, Summary};
 
 /// The outputs every run of a case has, in order; the unit windows'
-/// (`mean_force_norm_w1` …, [`window_name`]) follow them.
+/// (`mean_force_norm_w1` …) follow them.
 pub const OUTPUTS: [&str; 7] = [
     "initial_force_norm",
     "max_force_norm",

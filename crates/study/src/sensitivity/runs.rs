@@ -19,7 +19,7 @@ pub struct RunRow {
     pub point: usize,
     /// Member k (0 without members).
     pub k: i32,
-    /// The outputs ([`outputs::names`] or `f`), or why the run failed.
+    /// The outputs ([`OUTPUTS`](super::OUTPUTS), then the unit windows', or `f`), or why the run failed.
     pub outcome: Result<Vec<f64>, String>,
     /// Wall time of the simulation, s.
     pub wall_time_s: f64,
