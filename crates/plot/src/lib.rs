@@ -16,6 +16,8 @@
 //!   increment after increment.
 //! * [`draw_panels`]: panels of points and lines (parameter studies).
 //! * [`draw_bounds`]: the limit-analysis bounds' fields at one instant.
+//! * [`draw_bars`]: horizontal bars by category, with intervals
+//!   (sensitivity indices, tornado ranges).
 //!
 //! Lengths are drawn divided by the blade depth d (the case's length unit
 //! is not stored with a run), so every axis is dimensionless.
@@ -27,12 +29,14 @@
 
 mod animation;
 mod axes;
+mod bars;
 mod blade;
 mod bounds;
 mod curves;
 mod deformation;
 mod envelope;
 mod error;
+mod grid;
 mod ground;
 mod landscape;
 mod legend;
@@ -43,6 +47,7 @@ mod theme;
 mod typeset;
 
 pub use animation::draw_animation;
+pub use bars::{draw_bars, Bar, BarPanel, BarSeries};
 pub use bounds::{draw_bounds, BoundsFields};
 pub use curves::{draw_beta, draw_compare, draw_force};
 pub use deformation::draw_deformation;

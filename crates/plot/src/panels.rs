@@ -2,9 +2,8 @@
 //! parameter studies (sweep, fit, convergence), which plot any quantity
 //! against any other.
 
-use crate::axes::{title_height, titled};
 use crate::error::{text, DrawResult};
-use crate::render::{save, Picture};
+use crate::grid::{draw_grid, Cell, DESC, LEGEND, TICK};
 use crate::theme::{font, GRID, SERIES};
 use crate::PlotError;
 use plotters::coord::types::RangedCoordf64;
@@ -12,17 +11,6 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// Panel size in pixels.
-const PANEL: (u32, u32) = (600, 450);
-/// The narrowest picture: a single column of panels is as wide as the
-/// run's pictures, so that its text is the same size beside them.
-const MIN_WIDTH: u32 = 1200;
-/// Title, axis descriptions, tick labels and legend entries, px: at 150
-/// dpi about 12, 9.5, 8 and 8 pt (the run's pictures: 14, 12.5, 10.5).
-const TITLE: u32 = 26;
-const DESC: u32 = 20;
-const TICK: u32 = 17;
-const LEGEND: u32 = 17;
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SeriesMark {
@@ -83,50 +71,17 @@ pub fn draw_panels(
     columns: usize,
     path: &Path,
 ) -> Result<(), PlotError> {
-    let columns = columns.clamp(1, panels.len().max(1));
-    save(
-        &Panels {
-            title,
-            panels,
-            columns,
-            rows: panels.len().div_ceil(columns).max(1),
-        },
-        path,
-    )
+    draw_grid(title, panels, columns, path)
 }
 
-struct Panels<'a> {
-    title: &'a str,
-    panels: &'a [Panel],
-    columns: usize,
-    rows: usize,
-}
-
-impl Picture for Panels<'_> {
-    fn size(&self) -> (u32, u32) {
-        (
-            (PANEL.0 * self.columns as u32).max(MIN_WIDTH),
-            PANEL.1 * self.rows as u32 + title_height(TITLE),
-        )
-    }
-
-    /// Row by row; a last row with fewer panels shares the whole width
-    /// among them, so that no panel is left empty.
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult {
-        root.fill(&WHITE).map_err(text)?;
-        let body = titled(root, self.title, TITLE)?;
-        let rows = body.split_evenly((self.rows, 1));
-        for (panels, row) in self.panels.chunks(self.columns).zip(&rows) {
-            for (panel, area) in panels.iter().zip(&row.split_evenly((1, panels.len()))) {
-                draw_panel(panel, area)?;
-            }
-        }
-        Ok(())
+impl Cell for Panel {
+    fn draw_cell<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> DrawResult {
+        draw_panel(self, area)
     }
 }
 
 /// (lo, hi) of `values` with a 5 % margin; a single value gets ±1 (or ±5 %).
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+pub(crate) fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values
         .filter(|v| v.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
@@ -400,7 +355,7 @@ fn legend_corner(
 /// A tick label on an axis spanning `span`: enough decimals to tell ticks
 /// apart and no trailing zeros (1, 2.5, not 1.00, 2.50), or scientific
 /// notation, with as many digits, for very small or large values.
-fn span_tick(value: f64, span: f64) -> String {
+pub(crate) fn span_tick(value: f64, span: f64) -> String {
     let magnitude = value.abs().max(span);
     if value.abs() < 1e-9 * span {
         "0".to_string()
@@ -423,6 +378,8 @@ fn span_tick(value: f64, span: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grid::Grid;
+    use crate::render::Picture;
 
     /// A panel of `series` on axes labelled x and y.
     fn xy(series: Vec<Series>) -> Panel {
@@ -535,12 +492,7 @@ mod tests {
     #[test]
     fn one_column_is_full_width_and_the_title_is_clear_of_the_top() {
         let panels = [xy(vec![Series::points("", vec![(1.0, 1.0), (2.0, 3.0)])])];
-        let picture = Panels {
-            title: "A title",
-            panels: &panels,
-            columns: 1,
-            rows: 1,
-        };
+        let picture = Grid::new("A title", &panels, 1);
         let (w, _) = picture.size();
         assert_eq!(w, 1200);
         let pixels = crate::render::rgb(&picture).unwrap();
@@ -559,12 +511,7 @@ mod tests {
             series: vec![Series::line(label, vec![(1.0, 1.0), (2.0, 3.0)])],
         };
         let panels = [panel("a"), panel("b"), panel("c")];
-        let picture = Panels {
-            title: "t",
-            panels: &panels,
-            columns: 2,
-            rows: 2,
-        };
+        let picture = Grid::new("t", &panels, 2);
         let (w, h) = picture.size();
         let pixels = crate::render::rgb(&picture).unwrap();
         let (w, h) = (w as usize, h as usize);

@@ -11,6 +11,9 @@
 //! is the members' mean variance within a point over the variance of every
 //! run's output: an index below it is below the noise.
 //!
+//! A study of a case also runs its tornado ([`tornado`]): each key at the
+//! ends of its range, the others at the case's values.
+//!
 //! Runs go through [`BaseCase::run`] in parallel; results are collected in
 //! the design's order, so any number of threads gives the same files.
 
@@ -18,18 +21,22 @@ use crate::error::StudyError;
 use crate::run::BaseCase;
 use crate::sample::Vary;
 
+mod analysis;
 pub mod bootstrap;
 pub mod design;
 mod files;
 pub mod function;
 pub mod morris;
 mod outputs;
+mod pictures;
 mod runs;
 pub mod sequence;
 pub mod sobol;
+pub mod tornado;
 
+pub use analysis::{Indices, OutputIndices};
 pub use function::Function;
-pub use outputs::{MEANINGS, OUTPUTS};
+pub use outputs::{MEANINGS, OUTPUTS, UNITS};
 pub use runs::{RunRow, SensitivityResult};
 
 /// The name of the input that no run reads (`dummy`).
@@ -40,6 +47,12 @@ pub const MIN_SOBOL_SAMPLES: usize = 16;
 pub const MIN_TRAJECTORIES: usize = 2;
 /// Morris levels by default.
 pub const DEFAULT_LEVELS: usize = 4;
+/// Members of each point of a case's study by default: the least K whose
+/// ensemble mean's chaos share is below 5 % of the design's variance for
+/// every force output of Fig. 5, as measured by
+/// `docs/studies/sensitivity_members.py` (docs/guide/sensitivity.md, "The
+/// chaos share").
+pub const DEFAULT_MEMBERS: usize = 6;
 
 /// The method and its design.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -124,14 +137,19 @@ impl Sensitivity {
         keys
     }
 
-    /// Runs the study will make: design points × members.
+    /// Runs the study will make: design points and, for a case, the
+    /// tornado's 2 k + 1 points (k keys), each × members.
     pub fn runs(&self) -> usize {
         let d = self.keys().len();
         let points = match self.method {
             Method::Morris { .. } => self.samples.saturating_mul(d + 1),
             Method::Sobol => self.samples.saturating_mul(d + 2),
         };
-        points.saturating_mul(self.members)
+        let tornado = match self.model {
+            Model::Case(_) => 2 * self.ranges.len() + 1,
+            Model::Function(_) => 0,
+        };
+        points.saturating_add(tornado).saturating_mul(self.members)
     }
 
     /// Refuses what would make the study fail or mean nothing, before

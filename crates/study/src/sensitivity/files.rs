@@ -1,16 +1,18 @@
 //! The files of a sensitivity study: `indices.csv`, `samples.csv`,
-//! `summary.json`, `sensitivity.md`, `timing.csv`.
+//! `tornado.csv` (a case's), `summary.json`, `sensitivity.md`,
+//! `timing.csv`.
 
-use super::runs::{Indices, OutputIndices, SensitivityResult};
-use super::{bootstrap, Method};
+use super::analysis::{Indices, OutputIndices};
+use super::runs::{RunRow, SensitivityResult};
+use super::{bootstrap, outputs, Method};
 use crate::field::number;
 use soilcut_io::CsvText;
 
 impl SensitivityResult {
     /// `indices.csv`: Sobol `output,key,S1,S1_low,S1_high,ST,ST_low,ST_high`;
     /// Morris `output,key,mu_star,mu_star_low,mu_star_high,sigma,mu`.
-    /// Empty fields for an output that does not vary; no rows if a run
-    /// failed.
+    /// Empty fields for an output that does not vary or that a run does
+    /// not have; no rows if a run failed.
     pub fn indices_csv(&self) -> String {
         let header = match self.study.method {
             Method::Sobol => "output,key,S1,S1_low,S1_high,ST,ST_low,ST_high",
@@ -20,7 +22,11 @@ impl SensitivityResult {
         for o in self.analysis.as_deref().unwrap_or(&[]) {
             for (j, key) in self.keys.iter().enumerate() {
                 let mut fields = vec![o.name.clone(), key.clone()];
-                fields.extend(index_fields(&o.indices, j).iter().map(|&x| number(x)));
+                fields.extend(
+                    index_fields(self.study.method, &o.indices, j)
+                        .iter()
+                        .map(|&x| number(x)),
+                );
                 out.fields(&fields);
             }
         }
@@ -42,33 +48,74 @@ impl SensitivityResult {
                 row.k.to_string(),
             ];
             fields.extend(self.values[row.point].iter().map(|x| x.to_string()));
-            match &row.outcome {
-                Ok(v) => {
-                    fields.extend(["ok".to_string(), String::new()]);
-                    fields.extend(v.iter().map(|&x| number(x)));
-                }
-                Err(e) => {
-                    fields.extend(["failed".to_string(), e.clone()]);
-                    fields.extend(self.outputs.iter().map(|_| String::new()));
-                }
-            }
+            fields.extend(self.outcome_fields(row));
             out.fields(&fields);
         }
         out.finish()
     }
 
-    /// `timing.csv`: `run,wall_time_s` (the only file that changes
-    /// between identical studies).
+    /// `tornado.csv`: `run,key,end,value,k,status,error`, the outputs:
+    /// every run of the tornado, the case's (key and value empty, end
+    /// `case`) first, then each key's at `lo` and `hi`; `run` goes on from
+    /// samples.csv's.
+    pub fn tornado_csv(&self) -> String {
+        let mut header: Vec<String> = ["run", "key", "end", "value", "k", "status", "error"]
+            .map(String::from)
+            .to_vec();
+        header.extend(self.outputs.iter().cloned());
+        let mut out = CsvText::named(&header);
+        for (i, row) in self.tornado_runs.iter().enumerate() {
+            let point = &self.tornado[row.point];
+            let (key, value) = match point.setting(&self.study.ranges) {
+                Some((key, value)) => (key.to_string(), value.to_string()),
+                None => (String::new(), String::new()),
+            };
+            let mut fields = vec![
+                (self.runs.len() + i + 1).to_string(),
+                key,
+                point.end.name().to_string(),
+                value,
+                row.k.to_string(),
+            ];
+            fields.extend(self.outcome_fields(row));
+            out.fields(&fields);
+        }
+        out.finish()
+    }
+
+    /// `status,error` and the outputs of a run.
+    fn outcome_fields(&self, row: &RunRow) -> Vec<String> {
+        match &row.outcome {
+            Ok(v) => {
+                let outputs = v.iter().map(|&x| number(x));
+                ["ok".to_string(), String::new()]
+                    .into_iter()
+                    .chain(outputs)
+                    .collect()
+            }
+            Err(e) => {
+                let outputs = self.outputs.iter().map(|_| String::new());
+                ["failed".to_string(), e.clone()]
+                    .into_iter()
+                    .chain(outputs)
+                    .collect()
+            }
+        }
+    }
+
+    /// `timing.csv`: `run,wall_time_s`, samples.csv's runs then
+    /// tornado.csv's (the only file that changes between identical
+    /// studies).
     pub fn timing_csv(&self) -> String {
         let mut out = CsvText::new("run,wall_time_s");
-        for (i, row) in self.runs.iter().enumerate() {
+        for (i, row) in self.runs.iter().chain(&self.tornado_runs).enumerate() {
             out.fields(&[(i + 1).to_string(), row.wall_time_s.to_string()]);
         }
         out.finish()
     }
 
     /// `summary.json`: the study, whether it is complete, each output's
-    /// chaos share.
+    /// unit, chaos share and the runs that lack it.
     pub fn summary_json(&self) -> String {
         let s = &self.study;
         let (method, levels) = match s.method {
@@ -85,13 +132,24 @@ impl SensitivityResult {
             .as_deref()
             .unwrap_or(&[])
             .iter()
-            .map(|o| serde_json::json!({"output": o.name, "chaos_share": o.chaos_share}))
+            .map(|o| {
+                let undefined = match o.indices {
+                    Indices::Undefined { runs } => runs,
+                    _ => 0,
+                };
+                serde_json::json!({
+                    "output": o.name, "unit": outputs::unit_of(&o.name),
+                    "chaos_share": o.chaos_share, "undefined_runs": undefined,
+                })
+            })
             .collect();
-        let failed = self.runs.iter().filter(|r| r.outcome.is_err()).count();
+        let all = self.runs.iter().chain(&self.tornado_runs);
+        let failed = all.filter(|r| r.outcome.is_err()).count();
         let json = serde_json::json!({
             "method": method, "levels": levels, "samples": s.samples, "members": s.members,
             "perturbation": self.perturbation, "seed": s.seed, "dummy": s.dummy,
             "keys": ranges, "design_points": self.design.len(), "runs": self.runs.len(),
+            "tornado_points": self.tornado.len(), "tornado_runs": self.tornado_runs.len(),
             "failed": failed, "complete": self.analysis.is_ok(),
             "stopped": self.analysis.as_ref().err(),
             "bootstrap": {"resamples": bootstrap::RESAMPLES, "confidence": 0.95, "interval": "normal"},
@@ -102,21 +160,32 @@ impl SensitivityResult {
         text
     }
 
-    /// The files, name and contents (timing.csv last).
+    /// The files, name and contents (timing.csv last; tornado.csv for a
+    /// case only).
     pub fn files(&self) -> Vec<(&'static str, String)> {
-        vec![
+        let mut files = vec![
             ("indices.csv", self.indices_csv()),
             ("samples.csv", self.samples_csv()),
+        ];
+        if !self.tornado.is_empty() {
+            files.push(("tornado.csv", self.tornado_csv()));
+        }
+        files.extend([
             ("summary.json", self.summary_json()),
             ("sensitivity.md", self.markdown()),
             ("timing.csv", self.timing_csv()),
-        ]
+        ]);
+        files
     }
 }
 
-/// The numbers of input `j`'s row of `indices.csv`.
-fn index_fields(indices: &Indices, j: usize) -> Vec<f64> {
+/// The numbers of input `j`'s row of `indices.csv` (NaN: empty).
+fn index_fields(method: Method, indices: &Indices, j: usize) -> Vec<f64> {
     match indices {
+        Indices::Undefined { .. } => match method {
+            Method::Sobol => vec![f64::NAN; 6],
+            Method::Morris { .. } => vec![f64::NAN; 5],
+        },
         Indices::Sobol(Some(all)) => {
             let i = &all[j];
             vec![
@@ -153,6 +222,14 @@ impl SensitivityResult {
             self.study.seed,
             bootstrap::RESAMPLES
         );
+        if !self.tornado.is_empty() {
+            md += &format!(
+                "The tornado: {} points (the case, each key at lo and hi) × {} member(s) = {} runs.\n",
+                self.tornado.len(),
+                self.study.members,
+                self.tornado_runs.len()
+            );
+        }
         for o in analysis {
             md += &self.output_table(o);
         }
@@ -165,14 +242,24 @@ impl SensitivityResult {
             .map_or("not measured (one member a point)".to_string(), |c| {
                 format!("{c:.4}")
             });
-        let mut md = format!("\n## {}\n\nChaos share: {share}.\n\n", o.name);
-        let head = match o.indices {
-            Indices::Sobol(_) => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
-            Indices::Morris(_) => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
+        let unit = outputs::unit_of(&o.name);
+        let mut md = format!("\n## {} ({unit})\n\n", o.name);
+        if let Indices::Undefined { runs } = o.indices {
+            return md
+                + &format!(
+                "Not defined in {runs} of {} runs (see the guide's output table): no indices.\n",
+                self.runs.len()
+            );
+        }
+        md += &format!("Chaos share: {share}.\n\n");
+        let method = self.study.method;
+        let head = match method {
+            Method::Sobol => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
+            Method::Morris { .. } => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
         };
         md += head;
         for (j, key) in self.keys.iter().enumerate() {
-            let f = index_fields(&o.indices, j);
+            let f = index_fields(method, &o.indices, j);
             let n = |x: f64| {
                 if x.is_finite() {
                     format!("{x:.4}")
@@ -180,14 +267,14 @@ impl SensitivityResult {
                     "–".into()
                 }
             };
-            let cells = match o.indices {
-                Indices::Sobol(_) => [
+            let cells = match method {
+                Method::Sobol => [
                     n(f[0]),
                     format!("{} to {}", n(f[1]), n(f[2])),
                     n(f[3]),
                     format!("{} to {}", n(f[4]), n(f[5])),
                 ],
-                Indices::Morris(_) => [
+                Method::Morris { .. } => [
                     n(f[0]),
                     format!("{} to {}", n(f[1]), n(f[2])),
                     n(f[3]),
@@ -195,6 +282,37 @@ impl SensitivityResult {
                 ],
             };
             md += &format!("| {key} | {} |\n", cells.join(" | "));
+        }
+        md + &self.tornado_table(o)
+    }
+
+    /// Output `o`'s tornado in words: the case's value, each key's at its
+    /// ends, widest range first (none for a test function).
+    fn tornado_table(&self, o: &OutputIndices) -> String {
+        let Some(ranges) = self.tornado_ranges(&o.name) else {
+            return String::new();
+        };
+        let n = |x: f64| {
+            if x.is_finite() {
+                format!("{x:.4}")
+            } else {
+                "–".into()
+            }
+        };
+        let mut md = format!(
+            "\nTornado, the others at the case's values (the case: {}):\n\n| key | lo | at lo | hi | at hi |\n|---|---|---|---|---|\n",
+            n(ranges.case)
+        );
+        for &(j, at_lo, at_hi) in &ranges.keys {
+            let r = &self.study.ranges[j];
+            md += &format!(
+                "| {} | {} | {} | {} | {} |\n",
+                r.key,
+                r.lo,
+                n(at_lo),
+                r.hi,
+                n(at_hi)
+            );
         }
         md
     }

@@ -1,13 +1,12 @@
 //! The runs of a sensitivity study and the indices of their outputs.
 
-use super::morris::{morris_indices, MorrisIndex};
-use super::sobol::{sobol_indices, SobolIndex};
-use super::{bootstrap, design, outputs, Method, Model, Sensitivity};
+use super::analysis::{output_indices, OutputIndices};
+use super::tornado::{self, TornadoPoint};
+use super::{design, outputs, Method, Model, Sensitivity};
 use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
 use crate::ensemble::{member_offsets, Perturbation};
 use crate::error::StudyError;
-use crate::figures::mean;
-use crate::run::override_of;
+use crate::run::{override_of, BaseCase};
 use crate::sample::MAX_RUNS;
 use crate::Progress;
 use rayon::prelude::*;
@@ -20,31 +19,10 @@ pub struct RunRow {
     pub point: usize,
     /// Member k (0 without members).
     pub k: i32,
-    /// The outputs ([`outputs::OUTPUTS`] or `f`), or why the run failed.
+    /// The outputs ([`OUTPUTS`](super::OUTPUTS), then the unit windows', or `f`), or why the run failed.
     pub outcome: Result<Vec<f64>, String>,
     /// Wall time of the simulation, s.
     pub wall_time_s: f64,
-}
-
-/// The indices of every input for one output.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Indices {
-    /// μ*, μ, σ per input.
-    Morris(Vec<MorrisIndex>),
-    /// S1, ST per input; `None` for an output that does not vary.
-    Sobol(Option<Vec<SobolIndex>>),
-}
-
-/// One output's analysis.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OutputIndices {
-    /// The output's name.
-    pub name: String,
-    /// Indices of its ensemble mean.
-    pub indices: Indices,
-    /// Mean within-point variance of the members / variance of every
-    /// run's output (None with one member, or no variance).
-    pub chaos_share: Option<f64>,
 }
 
 /// A finished sensitivity study.
@@ -62,6 +40,10 @@ pub struct SensitivityResult {
     pub values: Vec<Vec<f64>>,
     /// Every run, point by point, members in the order of k.
     pub runs: Vec<RunRow>,
+    /// The tornado's points (none for a test function).
+    pub tornado: Vec<TornadoPoint>,
+    /// Their runs, point by point, members in the order of k.
+    pub tornado_runs: Vec<RunRow>,
     /// The ensembles' rule, if K > 1.
     pub perturbation: Option<String>,
     /// The indices per output, or the first failed run.
@@ -171,8 +153,8 @@ impl Sensitivity {
         (unit, values)
     }
 
-    /// Runs every design point's members on `jobs` threads and computes
-    /// the indices of every output.
+    /// Runs every design point's members, and the tornado's of a case, on
+    /// `jobs` threads, and computes the indices of every output.
     pub fn run(&self, progress: Progress) -> Result<SensitivityResult, StudyError> {
         self.check()?;
         let (unit, values) = self.design();
@@ -182,13 +164,19 @@ impl Sensitivity {
         } else {
             vec![0]
         };
-        let jobs: Vec<(usize, i32)> = (0..values.len())
+        let tornado = self.tornado_points();
+        let points = (0..values.len()).map(Job::Design);
+        let points = points.chain((0..tornado.len()).map(Job::Tornado));
+        let jobs: Vec<(Job, i32)> = points
             .flat_map(|p| ks.iter().map(move |&k| (p, k)))
             .collect();
         let finished = AtomicUsize::new(0);
         progress(0, jobs.len());
-        let one = |&(point, k): &(usize, i32)| {
-            let (outcome, wall_time_s) = self.run_one(&values[point], k);
+        let one = |&(job, k): &(Job, i32)| {
+            let (point, (outcome, wall_time_s)) = match job {
+                Job::Design(p) => (p, self.run_point(&values[p], k)),
+                Job::Tornado(t) => (t, self.run_tornado(&tornado[t], k)),
+            };
             progress(finished.fetch_add(1, Ordering::Relaxed) + 1, jobs.len());
             RunRow {
                 point,
@@ -197,10 +185,24 @@ impl Sensitivity {
                 wall_time_s,
             }
         };
-        let runs: Vec<RunRow> =
+        let mut runs: Vec<RunRow> =
             crate::pool(self.jobs)?.install(|| jobs.par_iter().map(one).collect());
-        let outputs = self.output_names();
-        let analysis = analyse(self, &unit, &runs, outputs.len(), &outputs);
+        let mut tornado_runs = runs.split_off(values.len() * ks.len());
+        let outputs = match self.model {
+            Model::Case(_) => {
+                let windows = common_windows(&runs);
+                fit_windows(&mut runs, windows);
+                fit_windows(&mut tornado_runs, windows);
+                outputs::names(windows)
+            }
+            Model::Function(_) => vec!["f".to_string()],
+        };
+        let analysis = analyse(self, &unit, &runs, &outputs).and_then(|a| {
+            failure(&tornado_runs, |row| {
+                self.tornado_run_named(&tornado[row.point], row.k)
+            })?;
+            Ok(a)
+        });
         Ok(SensitivityResult {
             study: self.clone(),
             keys: self.keys(),
@@ -208,15 +210,26 @@ impl Sensitivity {
             design: unit,
             values,
             runs,
+            tornado,
+            tornado_runs,
             perturbation: perturbation.map(|p| p.rule()),
             analysis,
         })
     }
 
-    fn output_names(&self) -> Vec<String> {
+    /// The tornado's points: a case's (none for a test function, which
+    /// has no values of its own).
+    fn tornado_points(&self) -> Vec<TornadoPoint> {
         match self.model {
-            Model::Case(_) => outputs::OUTPUTS.iter().map(|s| s.to_string()).collect(),
-            Model::Function(_) => vec!["f".to_string()],
+            Model::Case(_) => tornado::points(self.ranges.len()),
+            Model::Function(_) => Vec::new(),
+        }
+    }
+
+    fn tornado_run_named(&self, point: &TornadoPoint, k: i32) -> String {
+        match point.setting(&self.ranges) {
+            Some((key, value)) => format!("tornado run {key} = {value} (member k = {k})"),
+            None => format!("tornado run of the case (member k = {k})"),
         }
     }
 
@@ -229,35 +242,74 @@ impl Sensitivity {
         }
     }
 
-    /// Member k of the point `values`: its outputs and wall time.
-    fn run_one(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
-        let base = match &self.model {
-            Model::Function(f) => return (Ok(vec![f.value(values)]), 0.0),
-            Model::Case(base) => base,
-        };
-        let mut overrides = Vec::new();
-        for (r, v) in self.ranges.iter().zip(values) {
-            match override_of(&r.key, &toml::Value::Float(*v)) {
-                Ok(o) => overrides.push(o),
-                Err(e) => return (Err(e), 0.0),
+    /// Member k of the design point `values`: its outputs and wall time.
+    fn run_point(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
+        match &self.model {
+            Model::Function(f) => (Ok(vec![f.value(values)]), 0.0),
+            Model::Case(base) => {
+                let keys = self.ranges.iter().map(|r| r.key.as_str());
+                let set: Vec<(&str, f64)> = keys.zip(values.iter().copied()).collect();
+                run_member(base, &set, k)
             }
-        }
-        if k != 0 {
-            let member = base
-                .load(&overrides)
-                .map_err(|e| e.to_string())
-                .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
-                .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
-            match member {
-                Ok(o) => overrides.push(o),
-                Err(e) => return (Err(e), 0.0),
-            }
-        }
-        match base.run(&overrides) {
-            Ok(run) => (Ok(outputs::outputs_of(&run).to_vec()), run.wall_time_s),
-            Err(e) => (Err(e), 0.0),
         }
     }
+
+    /// Member k of a tornado point (a case's only).
+    fn run_tornado(&self, point: &TornadoPoint, k: i32) -> (Result<Vec<f64>, String>, f64) {
+        match &self.model {
+            Model::Case(base) => run_member(
+                base,
+                &point.setting(&self.ranges).into_iter().collect::<Vec<_>>(),
+                k,
+            ),
+            Model::Function(_) => (Err("a test function has no tornado".into()), 0.0),
+        }
+    }
+}
+
+/// What a run is: a design point, or a tornado point (their indices).
+#[derive(Clone, Copy, Debug)]
+enum Job {
+    Design(usize),
+    Tornado(usize),
+}
+
+/// Member k of the case with the keys `set` to their values: its outputs
+/// and wall time.
+fn run_member(base: &BaseCase, set: &[(&str, f64)], k: i32) -> (Result<Vec<f64>, String>, f64) {
+    let mut overrides = Vec::new();
+    for (key, v) in set {
+        match override_of(key, &toml::Value::Float(*v)) {
+            Ok(o) => overrides.push(o),
+            Err(e) => return (Err(e), 0.0),
+        }
+    }
+    if k != 0 {
+        let member = base
+            .load(&overrides)
+            .map_err(|e| e.to_string())
+            .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
+            .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
+        match member {
+            Ok(o) => overrides.push(o),
+            Err(e) => return (Err(e), 0.0),
+        }
+    }
+    match base.run(&overrides) {
+        Ok(run) => (Ok(outputs::outputs_of(&run)), run.wall_time_s),
+        Err(e) => (Err(e), 0.0),
+    }
+}
+
+/// The first failed run of `rows`, as "`named(row)` failed: why", or every
+/// row's outputs.
+fn failure(rows: &[RunRow], named: impl Fn(&RunRow) -> String) -> Result<Vec<&[f64]>, String> {
+    rows.iter()
+        .map(|row| match &row.outcome {
+            Ok(v) => Ok(v.as_slice()),
+            Err(e) => Err(format!("{} failed: {e}", named(row))),
+        })
+        .collect()
 }
 
 /// The indices of each output's ensemble mean, and its chaos share; the
@@ -267,59 +319,47 @@ fn analyse(
     s: &Sensitivity,
     unit: &[Vec<f64>],
     runs: &[RunRow],
-    count: usize,
     names: &[String],
 ) -> Result<Vec<OutputIndices>, String> {
-    if let Some((row, e)) = runs
-        .iter()
-        .find_map(|r| r.outcome.as_ref().err().map(|e| (r, e)))
-    {
-        return Err(format!(
-            "design point {} (member k = {}) failed: {e}",
-            row.point + 1,
-            row.k
-        ));
-    }
-    let d = s.keys().len();
-    let members = runs.len() / unit.len();
-    let output = |o: usize| {
-        let all: Vec<f64> = runs
-            .iter()
-            .map(|r| r.outcome.as_ref().map_or(f64::NAN, |v| v[o]))
-            .collect();
-        let means: Vec<f64> = all.chunks(members).map(mean).collect();
-        let indices = match s.method {
-            Method::Morris { levels } => Indices::Morris(morris_indices(
-                unit,
-                &means,
-                d,
-                levels,
-                bootstrap::RESAMPLES,
-                s.seed,
-            )),
-            Method::Sobol => Indices::Sobol(sobol_indices(&means, d, bootstrap::RESAMPLES, s.seed)),
-        };
-        OutputIndices {
-            name: names[o].clone(),
-            indices,
-            chaos_share: chaos_share(&all, members),
-        }
-    };
-    Ok((0..count).map(output).collect())
+    let named = |row: &RunRow| format!("design point {} (member k = {})", row.point + 1, row.k);
+    let values = failure(runs, named)?;
+    let output = |(o, name): (usize, &String)| output_indices(s, unit, &values, o, name);
+    Ok(names.iter().enumerate().map(output).collect())
 }
 
-/// Mean over the points of the members' variance (n − 1) over the
-/// variance (n) of every run (`all`, `members` runs a point); None for
-/// one member or outputs that do not vary.
-pub fn chaos_share(all: &[f64], members: usize) -> Option<f64> {
-    if members < 2 {
-        return None;
+/// The unit windows every design run covers: the fewest of any (a case
+/// whose travel or depth is varied covers fewer windows in some runs).
+fn common_windows(runs: &[RunRow]) -> usize {
+    let fixed = outputs::OUTPUTS.len();
+    runs.iter()
+        .filter_map(|r| r.outcome.as_ref().ok())
+        .map(|v| v.len().saturating_sub(fixed))
+        .min()
+        .unwrap_or(0)
+}
+
+/// Gives every run of `rows` `windows` unit windows: the further ones
+/// dropped, those a tornado run does not cover NaN (the case's own travel
+/// may be shorter than a varied travel's range).
+fn fit_windows(rows: &mut [RunRow], windows: usize) {
+    for row in rows {
+        if let Ok(v) = &mut row.outcome {
+            v.resize(outputs::OUTPUTS.len() + windows, f64::NAN);
+        }
     }
-    let within: Vec<f64> = all
-        .chunks(members)
-        .map(|m| bootstrap::sd(m).powi(2))
-        .collect();
-    let m = mean(all);
-    let total = all.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / all.len() as f64;
-    (total > 0.0).then(|| mean(&within) / total)
+}
+
+impl SensitivityResult {
+    /// Output `name`'s tornado (the case's value and each key's at its
+    /// ends), or None: no tornado (a test function), no such output, or a
+    /// run of it failed.
+    pub fn tornado_ranges(&self, name: &str) -> Option<tornado::Ranges> {
+        let o = self.outputs.iter().position(|n| n == name)?;
+        if self.tornado.is_empty() {
+            return None;
+        }
+        let values = failure(&self.tornado_runs, |_| String::new()).ok()?;
+        let means = tornado::means(&values, values.len() / self.tornado.len());
+        Some(tornado::ranges_of(&means, o))
+    }
 }
