@@ -144,11 +144,22 @@ def main():
         with open(os.path.join(folder, group + "_summary.json"), "w") as f:
             json.dump(result, f, indent=1)
         print(group)
-        for name, p in result["phases"].items():
-            print(
-                f"  {p['phase']} {name:9s} n={p['seeds']}  peak F/(gd^2) {fig(p, 'peak_force_norm')}"
-                f"  peak M/(gd^3) {fig(p, 'peak_moment_norm')}  fill at end {fig(p, 'fill_end_area_mm2', 0)} mm^2"
-            )
+        for seed, v in result["seeds"].items():
+            done = "finished" if v["finished"] else "unfinished"
+            print(f"- seed {seed}: {done}, s/d reached {v['s_reached_over_d']:.2f}")
+        print_table(result["phases"])
+
+
+def print_table(phases):
+    """The phases' seed means ± standard deviations, as a Markdown table."""
+    print("\n| phase | seeds | peak F/(γd²) | at s/d | peak M/(γd³) | at s/d | fill at end (mm²) |")
+    print("|---|---|---|---|---|---|---|")
+    for name, p in phases.items():
+        cells = [f"{p['phase']} {name}", str(p["seeds"])]
+        cells += [fig(p, k) for k in ("peak_force_norm", "peak_force_at_s_over_d")]
+        cells += [fig(p, k) for k in ("peak_moment_norm", "peak_moment_at_s_over_d")]
+        cells.append(fig(p, "fill_end_area_mm2", 0))
+        print("| " + " | ".join(cells) + " |")
 
 
 def fig(p, key, digits=2):

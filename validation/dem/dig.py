@@ -134,6 +134,12 @@ def inside(dig, p):
     return beyond and math.hypot(p[0] - cx, p[1] - cy) <= pr["arc_radius"]
 
 
+def capacity(dig, arc_segments=3600):
+    """The area of the bucket's inside (mm^2): the profile closed by the chord rim-lip."""
+    p = profile(dig, arc_segments)
+    return abs(sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(p, p[1:] + p[:1]))) / 2
+
+
 def lip_length(dig, s0, s1, n=20000):
     """The lip's path length (mm) from s0 to s1, summed over n chords."""
     lip = dig["profile"]["lip"]
@@ -142,17 +148,21 @@ def lip_length(dig, s0, s1, n=20000):
 
 
 def cut_ground(lip_track, x):
-    """The ground the lip has cut to so far at x: the surface (0) or the lip's
-    lowest passage near x, whichever is lower (mm)."""
-    ys = [y for lx, y in lip_track if abs(lx - x) <= 0.5]
-    return min([0.0] + ys)
+    """The ground the lip has cut to so far at x: the surface (0) or the lowest
+    passage of the lip's path (a polyline) over x, whichever is lower (mm)."""
+    ys = [0.0]
+    for (ax, ay), (bx, by) in zip(lip_track, lip_track[1:]):
+        if min(ax, bx) <= x <= max(ax, bx) and ax != bx:
+            ys.append(ay + (by - ay) * (x - ax) / (bx - ax))
+    return min(ys)
 
 
 def check(dig, end_wall, floor, start_wall, start_wall_top, step=0.5):
     """Per phase: the lowest points of the profile and of its heel, and the
-    least relief behind the lip (the angle under which a point of the profile
-    behind the lip stands above the ground the lip has cut: > 0, no ploughing);
-    then the bin's margins. Returns the margins (mm)."""
+    least relief behind the lip (atan of a profile point's height above the
+    ground the lip has cut over its distance from the lip, for the points
+    behind the lip and below the surface: > 0, the bucket does not plough
+    behind its lip); then the bin's margins. Returns the margins (mm)."""
     lip0, heel0 = dig["profile"]["lip"], dig["profile"]["heel"]
     line = [p for p in densify(profile(dig, 36), 1.0) if math.dist(p, lip0) > 1.0]
     track, worst = [], {}
@@ -216,6 +226,7 @@ def main():
         print(f"{b.get('phase', '?')}: s {a['s']:g} -> {b['s']:g}, lip path {length:.3f} mm")
         lip = to_world(dig, (b["x"], b["y"], b["theta"]), dig["profile"]["lip"])
         print(f"  lip at ({lip[0]:.3f}, {lip[1]:.3f}), theta {b['theta']:g}")
+    print(f"the bucket's inside: {capacity(dig):.1f} mm^2")
     # the long bin (bed.py --long, 20 mm cut): end wall 300 mm ahead of the lip's
     # start, floor 75 mm below the surface, start wall at -40 mm cut down by
     # bucket.py to START_WALL_TOP above the surface
