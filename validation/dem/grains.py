@@ -287,11 +287,15 @@ def surface(omega, x0, x1, width):
     return [(x0 + (k + 0.5) * width, h) for k, h in enumerate(top) if h is not None]
 
 
-def engines(omega, yade, extra, gravity=True):
-    """The engine list: collider, sphere/box contacts with rolling resistance, integrator."""
+def engines(omega, yade, extra, gravity=True, facets=False):
+    """The engine list: collider, sphere/box contacts with rolling resistance, integrator;
+    with `facets`, sphere/facet contacts too (bucket.py's tool)."""
     g = (0.0, -GRAVITY, 0.0) if gravity else (0.0, 0.0, 0.0)
     bounds = [yade.Bo1_Sphere_Aabb(), yade.Bo1_Box_Aabb()]
     geoms = [yade.Ig2_Sphere_Sphere_ScGeom6D(), yade.Ig2_Box_Sphere_ScGeom6D()]
+    if facets:
+        bounds.append(yade.Bo1_Facet_Aabb())
+        geoms.append(yade.Ig2_Facet_Sphere_ScGeom6D())
     return (
         [
             yade.ForceResetter(),
