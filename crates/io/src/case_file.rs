@@ -647,7 +647,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     let (rake, depth_path) = match by_tool {
         Some(cut) => (cut.rake, cut.depth_path),
         None => (
-            file.blade.rake.unwrap_or(90.0),
+            *file.blade.rake.get_or_insert(90.0),
             depth_path(file.blade.depth_path.as_ref())?,
         ),
     };
@@ -697,11 +697,10 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
 }
 
 /// The blade's rake, depth path and travel as a tool gives them: none
-/// where the case has no tool (`blade.rake`, its default written in,
-/// and `blade.depth_path` as written), else the tool's (M55).
+/// where the case has no tool (`blade.rake` and `blade.depth_path` then
+/// give them), else the tool's (M55).
 fn blade_motion(file: &mut CaseFile) -> Result<Option<StraightCut>, InputError> {
     let Some(tool_file) = file.tool.as_mut() else {
-        file.blade.rake.get_or_insert(90.0);
         return Ok(None);
     };
     for (key, given) in [

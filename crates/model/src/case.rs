@@ -9,7 +9,7 @@
 mod defaults;
 mod error;
 mod valid;
-mod validate;
+pub(crate) mod validate;
 mod warnings;
 
 pub use defaults::{

@@ -32,3 +32,10 @@ pub struct Tool {
     /// The pose of the pivot along the progress s.
     pub motion: Motion,
 }
+
+impl Tool {
+    /// The tool's profile (its shape's).
+    pub fn profile(&self) -> Result<Profile, crate::case::CaseError> {
+        self.shape.profile()
+    }
+}

@@ -77,7 +77,7 @@ fn in_magnitude(key: &str, value: f64, zero: bool) -> Result<(), CaseError> {
     ))
 }
 
-fn positive(key: &str, value: f64) -> Result<(), CaseError> {
+pub(crate) fn positive(key: &str, value: f64) -> Result<(), CaseError> {
     if finite(key, value)? > 0.0 {
         in_magnitude(key, value, false)
     } else {
@@ -93,7 +93,13 @@ fn non_negative(key: &str, value: f64) -> Result<(), CaseError> {
     }
 }
 
-fn open_range(key: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<(), CaseError> {
+pub(crate) fn open_range(
+    key: &str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    unit: &str,
+) -> Result<(), CaseError> {
     let v = finite(key, value)?;
     if v > lo && v < hi {
         Ok(())

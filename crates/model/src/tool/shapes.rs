@@ -5,6 +5,7 @@
 //! arc).
 
 use super::profile::Profile;
+use crate::case::validate::{open_range, positive};
 use crate::case::CaseError;
 
 /// The largest turn of one piece of an arc, degrees.
@@ -51,7 +52,7 @@ impl Shape {
     pub fn profile(&self) -> Result<Profile, CaseError> {
         match self {
             Shape::Straight { rake, height } => {
-                open_angle("tool.rake", *rake, 0.0, 180.0)?;
+                open_range("tool.rake", *rake, 0.0, 180.0, "°")?;
                 positive("tool.height", *height)?;
                 // cot 90° is 0 exactly, so a vertical blade's top is above its edge.
                 let cot = if *rake == 90.0 {
@@ -66,9 +67,9 @@ impl Shape {
                 radius,
                 sweep,
             } => {
-                open_angle("tool.edge_angle", *edge_angle, 0.0, 180.0)?;
+                open_range("tool.edge_angle", *edge_angle, 0.0, 180.0, "°")?;
                 positive("tool.radius", *radius)?;
-                open_angle("tool.sweep", *sweep, 0.0, 180.0)?;
+                open_range("tool.sweep", *sweep, 0.0, 180.0, "°")?;
                 let mut points = vec![[0.0, 0.0]];
                 arc(&mut points, 180.0 - edge_angle, *radius, *sweep);
                 Profile::new(points, "tool.sweep")
@@ -80,7 +81,7 @@ impl Shape {
             } => {
                 positive("tool.floor", *floor)?;
                 positive("tool.back_radius", *back_radius)?;
-                open_angle("tool.back_sweep", *back_sweep, 0.0, 270.0)?;
+                open_range("tool.back_sweep", *back_sweep, 0.0, 270.0, "°")?;
                 let mut points = vec![[0.0, 0.0], [-floor, 0.0]];
                 arc(&mut points, 180.0, *back_radius, *back_sweep);
                 Profile::new(points, "tool.back_sweep")
@@ -105,28 +106,6 @@ fn arc(points: &mut Vec<[f64; 2]>, heading: f64, radius: f64, sweep: f64) {
             centre[0] - radius * turned.sin(),
             centre[1] + radius * turned.cos(),
         ]);
-    }
-}
-
-fn positive(key: &str, value: f64) -> Result<(), CaseError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(CaseError::new(
-            key,
-            format!("must be a finite length > 0 (got {value})"),
-        ))
-    }
-}
-
-fn open_angle(key: &str, value: f64, lo: f64, hi: f64) -> Result<(), CaseError> {
-    if value > lo && value < hi {
-        Ok(())
-    } else {
-        Err(CaseError::new(
-            key,
-            format!("must be in ({lo}°, {hi}°) (got {value}°)"),
-        ))
     }
 }
 

@@ -103,11 +103,6 @@ impl Tool {
         }
         Ok([s, -y])
     }
-
-    /// The tool's profile.
-    pub fn profile(&self) -> Result<super::Profile, CaseError> {
-        self.shape.profile()
-    }
 }
 
 /// The error of a tool whose mechanism is not built yet.
