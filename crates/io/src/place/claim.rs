@@ -95,8 +95,13 @@ fn make_folders(parent: &Path, dir: &Path) -> Result<Vec<PathBuf>, OutputError> 
     missing.reverse();
     let mut made = Made(Vec::new());
     for p in missing {
-        fs::create_dir(&p).map_err(unusable(dir))?;
-        made.0.push(p);
+        match fs::create_dir(&p) {
+            Ok(()) => made.0.push(p),
+            // Another command (or a sweep's other run) made it meanwhile:
+            // not ours to remove.
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && p.is_dir() => {}
+            Err(e) => return Err(unusable(dir)(e)),
+        }
     }
     Ok(std::mem::take(&mut made.0))
 }

@@ -144,3 +144,26 @@ fn a_long_name_is_refused_before_anything_is_made() {
     assert!(matches!(e, OutputError::NameTooLong(_, 238)), "{e:?}");
     assert_eq!(fs::read_dir(tmp.path()).unwrap().count(), 1);
 }
+
+#[test]
+fn runs_in_parallel_share_the_folder_they_make() {
+    // A sweep's runs each claim `runs/run-N` at once; the first to make
+    // `runs/` must not fail the others (CI lost a sweep to this race).
+    for round in 0..20 {
+        let tmp = tempfile::tempdir().unwrap();
+        let parent = tmp.path().join(format!("deep-{round}/runs"));
+        let written: Vec<_> = std::thread::scope(|s| {
+            let spawned: Vec<_> = (0..8)
+                .map(|i| {
+                    let dir = parent.join(format!("run-{i}"));
+                    s.spawn(move || write_output_dir(&dir, &files(), false))
+                })
+                .collect();
+            spawned.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        for w in written {
+            w.unwrap();
+        }
+        assert_eq!(fs::read_dir(&parent).unwrap().count(), 8);
+    }
+}
