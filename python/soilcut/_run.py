@@ -68,8 +68,10 @@ class RunResult:
             ``force_h``, ``force_v``, ``beta_deg``, ``x_emergence``, ``mass``,
             ``y_emergence``, ``friction_deg``, ``slip``, ``dilation_deg``,
             ``dilation_area``, ``depth``, ``mass_spilled``, ``weight``,
-            ``force_factor``, ``face_friction_deg``): forces and
-            masses per unit width (γ·length²), ``force_norm`` = P/(γ0 d²);
+            ``force_factor``, ``face_friction_deg``, ``moment``,
+            ``tool_x``, ``tool_y``, ``tool_rotation``): forces and
+            masses per unit width (γ·length²), ``moment`` per unit width
+            (γ·length³), ``force_norm`` = P/(γ0 d²);
             with ``blade.width`` per blade (γ·length³) and ``force_norm`` =
             P/(γ0 d² w); lengths in the case's unit, angles in degrees. The
             numbers are the file's exactly.

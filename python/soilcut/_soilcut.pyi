@@ -102,6 +102,21 @@ class Step:
         """The face force's angle from the face's normal, the wall friction
         the block mobilises (degrees; positive: the block rises along the
         face)."""
+    @property
+    def moment(self) -> float:
+        """M, the moment of the face force about the tool's pivot, the force
+        a third up its contact from the cutting edge (force × length per
+        unit width or per blade; counter-clockwise positive, the sense of a
+        bucket's curl)."""
+    @property
+    def tool_x(self) -> float:
+        """x of the tool's pivot (length; the cutting edge for a blade)."""
+    @property
+    def tool_y(self) -> float:
+        """y of the tool's pivot (length; y = 0 the undisturbed surface)."""
+    @property
+    def tool_rotation(self) -> float:
+        """The tool's rotation (degrees, counter-clockwise; 0 for a blade)."""
     def __getattr__(self, name: str) -> Any: ...
     def __dir__(self) -> list[str]: ...
     def __repr__(self) -> str: ...

@@ -19,7 +19,7 @@ import soilcut
 NAMES = ["step"] + (
     "u u_over_d force force_norm force_h force_v beta_deg x_emergence mass y_emergence "
     "friction_deg slip dilation_deg dilation_area depth mass_spilled weight force_factor "
-    "face_friction_deg"
+    "face_friction_deg moment tool_x tool_y tool_rotation"
 ).split()
 
 

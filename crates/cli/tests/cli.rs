@@ -502,13 +502,13 @@ fn history_csv_layout() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth,mass_spilled,weight,force_factor,face_friction_deg"
+        "step,u,u_over_d,force,force_norm,force_h,force_v,beta_deg,x_emergence,mass,y_emergence,friction_deg,slip,dilation_deg,dilation_area,depth,mass_spilled,weight,force_factor,face_friction_deg,moment,tool_x,tool_y,tool_rotation"
     );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 100, "one row per increment");
-    assert!(rows.iter().all(|r| r.len() == 20));
+    assert!(rows.iter().all(|r| r.len() == 24));
     assert_eq!(rows[0][0], 1.0);
     assert_eq!(rows[1][1], 0.2, "u of step 2");
     assert_eq!(rows[1][2], 0.2 / 20.0, "u_over_d");

@@ -181,6 +181,24 @@ typedef struct SoilcutStep {
    * face).
    */
   double face_friction_deg;
+  /**
+   * M, the moment of the face force about the tool's pivot, the force a
+   * third up its contact from the cutting edge (units of `force` ×
+   * length; counter-clockwise positive, the sense of a bucket's curl).
+   */
+  double moment;
+  /**
+   * x of the tool's pivot (length; the cutting edge for a blade).
+   */
+  double tool_x;
+  /**
+   * y of the tool's pivot (length).
+   */
+  double tool_y;
+  /**
+   * The tool's rotation (degrees, counter-clockwise; 0 for a blade).
+   */
+  double tool_rotation;
 } SoilcutStep;
 
 /**

@@ -71,6 +71,16 @@ pub struct SoilcutStep {
     /// the block mobilises (degrees; positive: the block rises along the
     /// face).
     pub face_friction_deg: f64,
+    /// M, the moment of the face force about the tool's pivot, the force a
+    /// third up its contact from the cutting edge (units of `force` ×
+    /// length; counter-clockwise positive, the sense of a bucket's curl).
+    pub moment: f64,
+    /// x of the tool's pivot (length; the cutting edge for a blade).
+    pub tool_x: f64,
+    /// y of the tool's pivot (length).
+    pub tool_y: f64,
+    /// The tool's rotation (degrees, counter-clockwise; 0 for a blade).
+    pub tool_rotation: f64,
 }
 
 impl SoilcutStep {

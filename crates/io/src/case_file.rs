@@ -253,11 +253,11 @@ impl LoadedCase {
         let mut loaded = self.clone();
         let path = &case.blade.depth_path;
         loaded.case = case.clone();
-        // A steered tool is the blade it reduces to (M55), written so.
-        if loaded.resolved.tool.take().is_some() {
-            loaded.resolved.blade.rake = Some(case.blade.rake);
+        // A steered tool moves as its blade was steered (M55).
+        match loaded.resolved.tool.as_mut() {
+            Some(tool) => tool.steer(case),
+            None => loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone()),
         }
-        loaded.resolved.blade.depth_path = (!path.is_empty()).then(|| path.clone());
         loaded.resolved.run.travel = Some(case.run.travel);
         loaded
     }
@@ -644,11 +644,13 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
     let depth = file.blade.depth;
     let by_tool = blade_motion(&mut file)?;
     let tool_travel = by_tool.as_ref().map(|cut| cut.travel);
-    let (rake, depth_path) = match by_tool {
-        Some(cut) => (cut.rake, cut.depth_path),
+    let (rake, depth_path, pivot, rotation) = match by_tool {
+        Some(cut) => (cut.rake, cut.depth_path, cut.pivot, cut.rotation),
         None => (
             *file.blade.rake.get_or_insert(90.0),
             depth_path(file.blade.depth_path.as_ref())?,
+            [0.0, 0.0],
+            0.0,
         ),
     };
     let model = match file.model {
@@ -668,6 +670,8 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         adhesion,
         depth_path,
         width: file.blade.width,
+        pivot,
+        rotation,
     };
     let class = Class {
         model,

@@ -10,7 +10,7 @@ pub type HistoryColumn = soilcut_model::step::Column;
 
 /// The columns of `history.csv`, in order (the model's
 /// `StepRecord::COLUMNS`, which its finiteness check reads too).
-pub const HISTORY: [HistoryColumn; 20] = StepRecord::COLUMNS;
+pub const HISTORY: [HistoryColumn; 24] = StepRecord::COLUMNS;
 
 /// Columns of `history.csv`, in order: the names of [`HISTORY`] joined by
 /// commas (at compile time).

@@ -100,6 +100,17 @@ pub struct Blade {
     /// unit width; with a width, forces are per blade and the mechanism has
     /// side crescents (docs/model.md §16).
     pub width: Option<f64>,
+    /// The tool's reference point (its pivot) from the cutting edge, in the
+    /// world's axes (x forward, y up; lengths): the point `moment` is taken
+    /// about, whose path is `tool_x`, `tool_y`. [0, 0]: the cutting edge.
+    /// A `[tool]` sets it from `tool.pivot` at the tool's rotation (M55).
+    #[serde(default)]
+    pub pivot: [f64; 2],
+    /// θ, the tool's rotation (degrees, counter-clockwise), reported as
+    /// `tool_rotation`: 0 for a blade, whose face stands at `rake`; a
+    /// straight tool's constant rotation, its face at α = α0 − θ (M55).
+    #[serde(default)]
+    pub rotation: f64,
 }
 
 /// The soil: unit weight, material laws (docs/model.md §4), band width,

@@ -33,6 +33,7 @@ use crate::node_grid::surface::Surface;
 use crate::rake::Rake;
 use crate::side_heaps::{Column, Edges, SideHeaps};
 use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
+use crate::tool::tool_state;
 use std::ops::Range;
 
 /// Depths the domain grows by when the search reaches its end.
@@ -328,6 +329,7 @@ impl Discretisation for NodeGrid {
             .find_mechanism(at, face, None)
             .ok_or_else(|| self.no_mechanism(at))?;
         let depth = self.tip_depth(c);
+        let face_top = self.surface.height[self.surface.face.node];
         let y_emergence = self.surface.height[choice.node];
         let x_emergence = self.rake.x(self.surface.x(choice.node), y_emergence, depth);
         let update = self.move_soil(at, &choice, (u, depth));
@@ -335,16 +337,18 @@ impl Discretisation for NodeGrid {
         let mobilisation = face.mobilisation(choice.tan_beta, choice.dilation);
         let omega = at.laws.face.angle(mobilisation);
         let force = choice.force * self.per_blade;
+        // The reaction is at ω = m φw + α − 90° from the horizontal,
+        // the ω of the chosen mechanism's Eq. (1) (M12, M41).
+        let (force_h, force_v) = (force * omega.cos(), force * omega.sin());
+        let tool = tool_state(&c.blade, u, depth, face_top, [force_h, force_v]);
         Ok(StepRecord {
             step: at.done + 1,
             u,
             u_over_d: u / c.blade.depth,
             force,
             force_norm: choice.force / c.force_scale(),
-            // The reaction is at ω = m φw + α − 90° from the horizontal,
-            // the ω of the chosen mechanism's Eq. (1) (M12, M41).
-            force_h: force * omega.cos(),
-            force_v: force * omega.sin(),
+            force_h,
+            force_v,
             beta_deg: choice.tan_beta.atan().to_degrees(),
             friction_deg: choice.friction.to_degrees(),
             dilation_deg: choice.dilation.to_degrees(),
@@ -358,6 +362,10 @@ impl Discretisation for NodeGrid {
             weight: choice.weight * self.per_blade,
             force_factor: force_factor(choice.force, choice.weight),
             face_friction_deg: mobilisation * c.blade.wall_friction,
+            moment: tool.moment,
+            tool_x: tool.x,
+            tool_y: tool.y,
+            tool_rotation: tool.rotation,
         })
     }
 }

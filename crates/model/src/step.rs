@@ -61,6 +61,17 @@ pub struct StepRecord {
     /// wall friction the block mobilises (positive: the block rises along
     /// the face; ω = m φw + α − 90° from the horizontal, (M41)).
     pub face_friction_deg: f64,
+    /// M, the moment of the face force about the tool's pivot (force ×
+    /// length, counter-clockwise positive), the force a third up the
+    /// contact (M56).
+    pub moment: f64,
+    /// x of the tool's pivot (`blade.pivot` from the cutting edge; the
+    /// edge itself by default).
+    pub tool_x: f64,
+    /// y of the tool's pivot.
+    pub tool_y: f64,
+    /// The tool's rotation, degrees (0 for a blade).
+    pub tool_rotation: f64,
 }
 
 /// A column of `history.csv`: its name and a record's value in it.
@@ -71,7 +82,7 @@ impl StepRecord {
     /// `HISTORY`, the C ABI's record and Python's `Step` take them from
     /// here, and so does the finiteness check of `Simulation::step`; a
     /// field becomes a column by one line here).
-    pub const COLUMNS: [Column; 20] = [
+    pub const COLUMNS: [Column; 24] = [
         ("step", |r| r.step as f64),
         ("u", |r| r.u),
         ("u_over_d", |r| r.u_over_d),
@@ -92,6 +103,10 @@ impl StepRecord {
         ("weight", |r| r.weight),
         ("force_factor", |r| r.force_factor),
         ("face_friction_deg", |r| r.face_friction_deg),
+        ("moment", |r| r.moment),
+        ("tool_x", |r| r.tool_x),
+        ("tool_y", |r| r.tool_y),
+        ("tool_rotation", |r| r.tool_rotation),
     ];
 
     /// The first column whose value is not finite, and the value.

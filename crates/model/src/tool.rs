@@ -7,15 +7,19 @@
 //!
 //! The mechanism of today's blade takes the tools that reduce to it
 //! (`straight`, (M55)): a straight profile translating forward at a
-//! constant rotation is a blade of that rake along a depth path. Every
+//! constant rotation is a blade of that rake along a depth path, its
+//! pivot a fixed offset from the cutting edge, about which `moment`
+//! takes the face force at a third of its contact (`moment`, (M56)). Every
 //! other tool is refused by name until its mechanism (the face it takes,
 //! the soil it carries) is built.
 
-mod motion;
+mod moment;
+pub(crate) mod motion;
 mod profile;
 mod shapes;
 mod straight;
 
+pub use moment::{tool_state, ToolState};
 pub use motion::{Motion, Pose};
 pub use profile::Profile;
 pub use shapes::Shape;

@@ -18,6 +18,8 @@ pub fn original(travel_depths: f64, per_depth: f64) -> Case {
             adhesion: 0.0,
             depth_path: Vec::new(),
             width: None,
+            pivot: [0.0, 0.0],
+            rotation: 0.0,
         },
         soil: Soil {
             unit_weight: 1.0,

@@ -43,11 +43,11 @@ static int report(const SoilcutSimulation *sim, const char *what, int code)
 static void print_row(const SoilcutStep *r)
 {
     printf("%" PRIu64
-           ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+           ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
            r->step, r->u, r->u_over_d, r->force, r->force_norm, r->force_h, r->force_v, r->beta_deg,
            r->x_emergence, r->mass, r->y_emergence, r->friction_deg, r->slip, r->dilation_deg,
            r->dilation_area, r->depth, r->mass_spilled, r->weight, r->force_factor,
-           r->face_friction_deg);
+           r->face_friction_deg, r->moment, r->tool_x, r->tool_y, r->tool_rotation);
 }
 
 /* The final surface's highest point, on stderr. */

@@ -7,7 +7,7 @@
 use crate::error::InputError;
 use serde::{Deserialize, Serialize};
 use soilcut_model::tool::{Motion, Shape, Tool};
-use soilcut_model::CaseError;
+use soilcut_model::{Case, CaseError};
 
 /// `tool.shape`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -112,6 +112,24 @@ impl ToolFile {
             pivot,
             motion: Motion::new(&self.motion, "tool.motion")?,
         })
+    }
+
+    /// The motion of the tool as its blade was steered (M55): a pose where
+    /// the steered depth path has a point and at the travel, each the
+    /// cutting edge's place plus the pivot's offset, at the tool's rotation.
+    pub(super) fn steer(&mut self, case: &Case) {
+        let travel = case.run.travel;
+        let inner = case.blade.depth_path.iter().map(|p| p[0]);
+        let mut at: Vec<f64> = std::iter::once(0.0)
+            .chain(inner.filter(|&u| u > 0.0 && u < travel))
+            .chain(std::iter::once(travel))
+            .collect();
+        at.dedup();
+        let [dx, dy] = case.blade.pivot;
+        self.motion = at
+            .into_iter()
+            .map(|u| [u, u + dx, -case.tip_depth(u) + dy, case.blade.rotation])
+            .collect();
     }
 
     /// The tool in a few words: its shape, pivot and poses.

@@ -5,6 +5,7 @@ use super::{
     BandAngleRule, BandStrengthRule, Case, CaseError, FaceFrictionRule, Ground, TimeScheme,
     VertexGround, INITIAL_REACH_DEPTHS,
 };
+use crate::tool::motion::MAX_ROTATION;
 
 /// Largest number of surface nodes a case may need at the start (memory
 /// guard: five f64 per node).
@@ -269,11 +270,32 @@ impl Case {
         Ok(())
     }
 
+    /// The tool's pivot and rotation, which a `[tool]` sets (M55, M56):
+    /// lengths 0 or in [`MAGNITUDE`] either way, a rotation within
+    /// ±`MAX_ROTATION`.
+    fn validate_pivot(&self) -> Result<(), CaseError> {
+        for (key, value) in [
+            ("tool.pivot", self.blade.pivot[0]),
+            ("tool.pivot", self.blade.pivot[1]),
+        ] {
+            in_magnitude(key, finite(key, value)?.abs(), true)?;
+        }
+        let rotation = finite("tool.motion", self.blade.rotation)?;
+        if rotation.abs() > MAX_ROTATION {
+            return Err(CaseError::new(
+                "tool.motion",
+                format!("the rotation must be within ±{MAX_ROTATION}° (got {rotation}°)"),
+            ));
+        }
+        Ok(())
+    }
+
     fn validate_loads(&self) -> Result<(), CaseError> {
         let rake = finite("blade.rake", self.blade.rake)?;
         self.validate_rake(rake)?;
         non_negative("blade.adhesion", self.blade.adhesion)?;
         self.validate_depth_path()?;
+        self.validate_pivot()?;
         if let Some(width) = self.blade.width {
             positive("blade.width", width)?;
             // The search compares P / w: the side crescents' force over a

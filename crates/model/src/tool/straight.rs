@@ -21,6 +21,11 @@ pub struct StraightCut {
     pub depth_path: Vec<[f64; 2]>,
     /// The last pose's s.
     pub travel: f64,
+    /// The pivot from the cutting edge in the world's axes, fixed as the
+    /// tool translates (`Blade::pivot`).
+    pub pivot: [f64; 2],
+    /// θ, the tool's constant rotation, degrees.
+    pub rotation: f64,
 }
 
 impl Tool {
@@ -66,10 +71,14 @@ impl Tool {
             .map(|(i, (s, pose))| self.edge_depth(i, *s, pose, edge))
             .collect::<Result<Vec<_>, _>>()?;
         let constant = path.iter().all(|p| p[1] == depth);
+        let start = poses[0].1;
+        let [x, y] = start.place(self.pivot, edge);
         Ok(StraightCut {
             rake,
             depth_path: if constant { Vec::new() } else { path },
             travel: self.motion.travel(),
+            pivot: [start.x - x, start.y - y],
+            rotation,
         })
     }
 

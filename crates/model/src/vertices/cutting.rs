@@ -27,6 +27,7 @@ use crate::mechanism::Loads;
 use crate::rake::Rake;
 use crate::side_heaps::{Edges, SideHeaps};
 use crate::step::{force_factor, ProfilePoint, StepError, StepRecord};
+use crate::tool::tool_state;
 
 /// Flat fresh ground appended when the search reaches the end, in d.
 const GROW_DEPTHS: f64 = 4.0;
@@ -323,6 +324,7 @@ impl Discretisation for Cutting {
         let (d, u) = (c.blade.depth, self.ground.x[0]);
         // The tip's depth and the face friction of the search's scan.
         let (tip, face) = (scan.depth, scan.face);
+        let face_top = self.ground.y[0];
         let cut = self.cut(c, &pick);
         let moved = match self.ground.apply(&cut) {
             Some(moved) => moved,
@@ -342,14 +344,16 @@ impl Discretisation for Cutting {
         let mobilisation = face.mobilisation(pick.tan_beta, pick.angles.dilation);
         let omega = at.laws.face.angle(mobilisation);
         let force = pick.force * self.per_blade;
+        let (force_h, force_v) = (force * omega.cos(), force * omega.sin());
+        let tool = tool_state(&c.blade, u, tip, face_top, [force_h, force_v]);
         Ok(StepRecord {
             step: at.done + 1,
             u,
             u_over_d: u / d,
             force,
             force_norm: pick.force / c.force_scale(),
-            force_h: force * omega.cos(),
-            force_v: force * omega.sin(),
+            force_h,
+            force_v,
             beta_deg: pick.tan_beta.atan().to_degrees(),
             x_emergence: self.rake.x(pick.x, pick.y, tip),
             mass: self.mass(),
@@ -363,6 +367,10 @@ impl Discretisation for Cutting {
             weight: pick.weight * self.per_blade,
             force_factor: force_factor(pick.force, pick.weight),
             face_friction_deg: mobilisation * c.blade.wall_friction,
+            moment: tool.moment,
+            tool_x: tool.x,
+            tool_y: tool.y,
+            tool_rotation: tool.rotation,
         })
     }
 }

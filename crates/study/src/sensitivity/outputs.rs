@@ -189,6 +189,10 @@ mod tests {
             weight: 1.0,
             force_factor: 1.0,
             face_friction_deg: 0.0,
+            moment: 0.0,
+            tool_x: step as f64,
+            tool_y: -1.0,
+            tool_rotation: 0.0,
         }
     }
 
