@@ -362,3 +362,88 @@ fn random_cases_on_the_vertex_ground_run_and_conserve() {
         }
     });
 }
+
+/// Random straight tools (M55): a straight profile at a random face angle
+/// α0, turned by a constant θ about a random pivot, translating along a
+/// random motion (a path of poses for a vertical face) is the blade of
+/// rake α0 − θ along its edge's depth path; it runs to the end keeping
+/// mass to 1e-11, and its `tool_x`, `tool_y`, `tool_rotation` are the pose
+/// its motion commands at every increment.
+#[test]
+fn random_straight_tools_are_their_blades_and_conserve() {
+    use soilcut_model::tool::{Motion, Pose, Shape, Tool};
+    for_random(3, (20, 16), |draws| {
+        let mut rng = Draws(draws.iter());
+        let mut case = random_case(&mut rng);
+        let (alpha, d) = (case.blade.rake, case.blade.depth);
+        let face = if alpha == 90.0 && rng.chance(0.5) {
+            90.0
+        } else {
+            rng.uniform(alpha, 120.0)
+        };
+        let theta = face - alpha;
+        let pivot = [rng.uniform(-2.0, 2.0) * d, rng.uniform(0.0, 4.0) * d];
+        let shape = Shape::Straight {
+            rake: face,
+            height: 3.0 * d,
+        };
+        let at = |edge: [f64; 2]| {
+            // The pivot's place that puts the edge at `edge`.
+            let turned = Pose {
+                x: 0.0,
+                y: 0.0,
+                rotation: theta,
+            }
+            .place(pivot, [0.0, 0.0]);
+            [edge[0] - turned[0], edge[1] - turned[1]]
+        };
+        let travel = case.run.travel;
+        let depths: Vec<[f64; 2]> = if alpha == 90.0 && !case.blade.depth_path.is_empty() {
+            let mut path = case.blade.depth_path.clone();
+            path.insert(0, [0.0, path[0][1]]);
+            path.dedup_by(|a, b| a[0] == b[0]);
+            path.retain(|p| p[0] < travel);
+            path.push([travel, case.tip_depth(travel)]);
+            path
+        } else {
+            vec![[0.0, d], [travel, d]]
+        };
+        let rows: Vec<[f64; 4]> = depths
+            .iter()
+            .map(|&[s, depth]| {
+                let [x, y] = at([s, -depth]);
+                [s, x, y, theta]
+            })
+            .collect();
+        let tool = Tool {
+            shape,
+            pivot,
+            motion: Motion::new(&rows, "tool.motion").unwrap(),
+        };
+        let cut = tool
+            .straight_cut(d)
+            .unwrap_or_else(|e| panic!("{e}: {rows:?}"));
+        assert!(
+            (cut.rake - alpha).abs() < 1e-9 * alpha,
+            "{} vs {alpha}",
+            cut.rake
+        );
+        case.blade.rake = cut.rake;
+        case.blade.depth_path = cut.depth_path;
+        case.blade.pivot = cut.pivot;
+        case.blade.rotation = cut.rotation;
+        case.run.travel = cut.travel;
+        let mut sim = Simulation::new(&case).unwrap_or_else(|e| panic!("{e}: {case:?}"));
+        while !sim.is_done() {
+            let r = sim.step().unwrap_or_else(|e| panic!("{e}: {case:?}"));
+            assert!(r.not_finite().is_none(), "{r:?}");
+            let pose = tool.motion.at(r.u);
+            let scale = d.max(pose.x.abs());
+            assert!((r.tool_x - pose.x).abs() < 1e-9 * scale, "{r:?} {pose:?}");
+            assert!((r.tool_y - pose.y).abs() < 1e-9 * scale, "{r:?} {pose:?}");
+            assert_eq!(r.tool_rotation, theta);
+        }
+        let drift = (sim.mass() - sim.initial_mass()) / sim.initial_mass();
+        assert!(drift.abs() < 1e-11, "mass drift {drift:e}: {case:?}");
+    });
+}

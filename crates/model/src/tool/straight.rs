@@ -9,7 +9,7 @@
 //! blade is taller than its pile).
 
 use super::{Pose, Shape, Tool};
-use crate::case::CaseError;
+use crate::case::{CaseError, ROUND_OFF};
 
 /// A straight blade's keys, as a translating straight tool gives them.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,7 +54,13 @@ impl Tool {
             Shape::Straight { rake, .. } => *rake,
             _ => profile.edge_angle(),
         };
-        let rake = face - rotation;
+        // A face turned to the vertical is vertical: face − θ rounds (100°
+        // turned by 10° is 90.00000000000001°), and only a vertical blade
+        // may follow a depth path.
+        let rake = match face - rotation {
+            a if (a - 90.0).abs() <= ROUND_OFF * 90.0 => 90.0,
+            a => a,
+        };
         if rake <= 0.0 || rake > 90.0 {
             return Err(CaseError::new(
                 "tool.motion",
@@ -70,7 +76,26 @@ impl Tool {
             .enumerate()
             .map(|(i, (s, pose))| self.edge_depth(i, *s, pose, edge))
             .collect::<Result<Vec<_>, _>>()?;
-        let constant = path.iter().all(|p| p[1] == depth);
+        // Edges at the reference depth to round-off (a turned tool's edge
+        // is at 19.999999999999996 for 20) cut at constant depth.
+        let constant = path
+            .iter()
+            .all(|p| (p[1] - depth).abs() <= ROUND_OFF * depth);
+        if !constant && rake != 90.0 {
+            let i = path
+                .iter()
+                .position(|p| (p[1] - depth).abs() > ROUND_OFF * depth);
+            let [s, d] = path[i.unwrap_or(0)];
+            return Err(CaseError::new(
+                "tool.motion",
+                format!(
+                    "pose {} puts the cutting edge at depth {d} (s = {s}), not blade.depth = \
+                     {depth}: a face leaning back (α = {rake}°) cuts at the constant depth \
+                     blade.depth so far (set blade.depth, or move the edge at it)",
+                    i.unwrap_or(0)
+                ),
+            ));
+        }
         let start = poses[0].1;
         let [x, y] = start.place(self.pivot, edge);
         Ok(StraightCut {
@@ -169,12 +194,50 @@ mod tests {
             .unwrap_err();
         assert!(e.message.contains("cutting edge at x = 34.9"), "{e}");
         let rows = [[0.0, -35.0, 50.0, 30.0], [10.0, -25.0, 50.0, 30.0]];
-        let cut = tool(VERTICAL, [0.0, 70.0], &rows)
-            .straight_cut(20.0)
-            .unwrap();
-        assert!((cut.rake - 60.0).abs() < 1e-12);
+        // The edge 70 cos 30° − 50 deep: a raked blade at that depth, which
+        // must be blade.depth.
         let d = 70.0 * 30f64.to_radians().cos() - 50.0;
-        assert!((cut.depth_path[0][1] - d).abs() < 1e-12);
+        let cut = tool(VERTICAL, [0.0, 70.0], &rows).straight_cut(d).unwrap();
+        assert!((cut.rake - 60.0).abs() < 1e-12);
+        assert!(cut.depth_path.is_empty());
+        let e = tool(VERTICAL, [0.0, 70.0], &rows)
+            .straight_cut(20.0)
+            .unwrap_err();
+        assert!(e.message.contains("set blade.depth"), "{e}");
+    }
+
+    #[test]
+    fn round_off_of_a_turn_is_no_depth_path_and_no_rake() {
+        // A face at 100° turned 10°: vertical, at constant depth, though
+        // 100 − 10 and the turned edge's height round.
+        let shape = Shape::Straight {
+            rake: 100.3,
+            height: 70.0,
+        };
+        let theta = 100.3 - 90.0;
+        let pivot = [0.0, 50.0];
+        let turned = Pose {
+            x: 0.0,
+            y: 0.0,
+            rotation: theta,
+        }
+        .place(pivot, [0.0, 0.0]);
+        let (x, y) = (-turned[0], -20.0 - turned[1]);
+        let rows = [[0.0, x, y, theta], [10.0, 10.0 + x, y, theta]];
+        let cut = tool(shape, pivot, &rows).straight_cut(20.0).unwrap();
+        assert_eq!(cut.rake, 90.0);
+        assert!(cut.depth_path.is_empty(), "{:?}", cut.depth_path);
+        // A raked face that changes depth is refused by its motion.
+        let deeper = [[0.0, 0.0, -20.0, 0.0], [10.0, 10.0, -25.0, 0.0]];
+        let raked = Shape::Straight {
+            rake: 60.0,
+            height: 70.0,
+        };
+        let e = tool(raked, [0.0, 0.0], &deeper)
+            .straight_cut(20.0)
+            .unwrap_err();
+        assert_eq!(e.key, "tool.motion");
+        assert!(e.message.contains("pose 1"), "{e}");
     }
 
     #[test]
