@@ -177,6 +177,15 @@ impl Ground {
             Ground::Nodes => "nodes",
         }
     }
+
+    /// h, the spacing of the vertex ground's points; None on the node
+    /// grid, whose nodes are every increment.
+    pub fn vertex_spacing(&self) -> Option<f64> {
+        match self {
+            Ground::Vertices(v) => Some(v.spacing),
+            Ground::Nodes => None,
+        }
+    }
 }
 
 /// The keys of the vertex ground (docs/model.md §1.2).

@@ -67,10 +67,7 @@ impl Resolution {
     pub fn of(case: &Case) -> Self {
         Resolution {
             increment: case.run.increment,
-            vertex_spacing: match case.run.ground {
-                Ground::Vertices(v) => Some(v.spacing),
-                Ground::Nodes => None,
-            },
+            vertex_spacing: case.run.ground.vertex_spacing(),
         }
     }
 
@@ -128,8 +125,8 @@ impl Refine {
 
     /// What level k runs at on `ground`, in words.
     pub fn describe(self, ground: &Ground) -> &'static str {
-        match (self, ground) {
-            (_, Ground::Nodes) => "increment v0/2^k on the node grid (nodes every increment)",
+        match (self, ground.vertex_spacing()) {
+            (_, None) => "increment v0/2^k on the node grid (nodes every increment)",
             (Refine::Both, _) => "increment v0/2^k and vertex spacing h/2^k on the vertex ground",
             (Refine::Increment, _) => {
                 "increment v0/2^k at the case's vertex spacing h on the vertex ground"
