@@ -169,6 +169,18 @@ fn readme_shell_examples_run_in_order() {
     ] {
         assert!(out.join(made).is_dir(), "out/{made}");
     }
+    // The guide's fit finds its synthetic truth, φp = 38°, to 0.1°.
+    let fit = std::fs::read_to_string(out.join("table1-hs-fit/fit.md")).unwrap();
+    let best: f64 = fit
+        .lines()
+        .find(|l| l.starts_with("| `soil.friction.peak` |"))
+        .and_then(|l| l.split('|').nth(2))
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no best φp in fit.md:\n{fit}"));
+    assert!(
+        (best - 38.0).abs() <= 0.1,
+        "the guide's fit found φp = {best}"
+    );
     // Beside the cases, only out/, which git ignores: nothing lands in
     // the repository's root.
     let mut left: Vec<String> = std::fs::read_dir(tmp.path())
