@@ -39,8 +39,8 @@ pub mod tornado;
 pub use analysis::{Indices, OutputIndices};
 pub use function::Function;
 pub use outputs::{MEANINGS, OUTPUTS, UNITS};
-pub use plan::{Plan, Point, Run};
-pub use runs::{RunRow, SensitivityResult};
+pub use plan::{Plan, Point, Run, RunRow};
+pub use runs::SensitivityResult;
 
 /// The name of the input that no run reads (`dummy`).
 pub const DUMMY: &str = "dummy";

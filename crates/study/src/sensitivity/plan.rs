@@ -2,7 +2,6 @@
 //! that any process can make one alone ([`Model::run`]) and hand its row
 //! back for the analysis ([`Sensitivity::analyse`](super::Sensitivity)).
 
-use super::runs::RunRow;
 use super::tornado::{self, TornadoPoint};
 use super::{design, outputs, Method, Model, Sensitivity};
 use crate::ensemble::{member_offsets, Perturbation};
@@ -38,6 +37,20 @@ pub struct Run {
     /// function's every input, [`DUMMY`](super::DUMMY) too), a tornado
     /// point's one key, or none (the case as it is).
     pub set: Vec<(String, f64)>,
+}
+
+/// A made run's row: member k of a point of the design or the tornado,
+/// and its outputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunRow {
+    /// The point's index, from 0, among the design's or the tornado's.
+    pub point: usize,
+    /// Member k (0 without members).
+    pub k: i32,
+    /// The outputs ([`OUTPUTS`](super::OUTPUTS), then the unit windows', or `f`), or why the run failed.
+    pub outcome: Result<Vec<f64>, String>,
+    /// Wall time of the simulation, s.
+    pub wall_time_s: f64,
 }
 
 /// A study's design and its runs, before any is made.

@@ -1,26 +1,13 @@
 //! The runs of a sensitivity study and the indices of their outputs.
 
 use super::analysis::{output_indices, OutputIndices};
-use super::plan::{Plan, Run};
+use super::plan::{Plan, Run, RunRow};
 use super::tornado::{self, TornadoPoint};
 use super::{outputs, Model, Sensitivity};
 use crate::error::StudyError;
 use crate::Progress;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// One run: member k of design point `point`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RunRow {
-    /// Design point, from 0, in the design's order.
-    pub point: usize,
-    /// Member k (0 without members).
-    pub k: i32,
-    /// The outputs ([`OUTPUTS`](super::OUTPUTS), then the unit windows', or `f`), or why the run failed.
-    pub outcome: Result<Vec<f64>, String>,
-    /// Wall time of the simulation, s.
-    pub wall_time_s: f64,
-}
 
 /// A finished sensitivity study.
 #[derive(Clone, Debug)]
