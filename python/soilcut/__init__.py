@@ -11,6 +11,9 @@ short::
     spread = soilcut.run(case, ensemble=7)  # 7 perturbed members: the spread
     spread.windows["std"]                 # of every unit-window mean force
 
+    study = soilcut.sensitivity(case, {"soil.peak_shear": (1, 3)}, method="morris")
+    study.indices                         # indices.csv as a DataFrame
+
     sim = soilcut.Simulation(case)        # step by step, for a control loop
     for step in sim:
         step.force, step.beta_deg
@@ -26,6 +29,7 @@ degrees, forces per unit width.
 from ._case import Case
 from ._errors import AccuracyWarning, CaseError, CaseFormWarning, SnapshotError, StepError
 from ._run import Ensemble, Frame, RunResult, run
+from ._sensitivity import SensitivityResult, sensitivity
 from ._soilcut import Simulation, Step, __version__
 from ._study import (
     Bounds,
@@ -51,6 +55,7 @@ __all__ = [
     "Landscape",
     "Frame",
     "RunResult",
+    "SensitivityResult",
     "Simulation",
     "SnapshotError",
     "Step",
@@ -63,5 +68,6 @@ __all__ = [
     "LandscapeMap",
     "landscape_map",
     "run",
+    "sensitivity",
     "sweep",
 ]

@@ -25,6 +25,14 @@ FIT_POLISH_ITERATIONS: int
 """Default Nelder-Mead iterations of a fit's polish (``--polish``)."""
 FIT_PROFILE_GRID: int
 """Default grid of a fit's profiles (``--profile-points``)."""
+SENSITIVITY_SOBOL_SAMPLES: int
+"""Default Sobol base points N of a sensitivity study (``--samples``)."""
+SENSITIVITY_TRAJECTORIES: int
+"""Default Morris trajectories r of a sensitivity study (``--samples``)."""
+SENSITIVITY_LEVELS: int
+"""Default levels p of Morris's grid (``--levels``)."""
+SENSITIVITY_MEMBERS: int
+"""Default members K of each point of a sensitivity study (``--members``)."""
 
 class Step:
     """One increment (a row of ``history.csv``): forces per unit width
@@ -272,6 +280,34 @@ class EnsembleRun:
 
 CaseLike = NativeCase | Case | str | os.PathLike[str]
 
+SensitivityRun = tuple[bool, int, int, list[tuple[str, float]]]
+"""A run of a sensitivity study: (tornado, point, k, the keys it sets)."""
+SensitivityRow = tuple[int, int, list[float] | None, str | None, float]
+"""A run's row: (point, k, outputs or None, error or None, wall time s)."""
+
+class SensitivityStudy:
+    """A checked sensitivity study and its plan (:func:`soilcut.sensitivity`
+    runs it)."""
+
+    def __init__(
+        self,
+        case: CaseLike,
+        vary: list[tuple[str, Any]],
+        method: str,
+        samples: int | None,
+        levels: int,
+        members: int,
+        dummy: bool,
+        seed: int,
+        jobs: int,
+    ) -> None: ...
+    def runs(self) -> list[SensitivityRun]: ...
+    def run(self, pictures: str | os.PathLike[str] | None = None) -> dict[str, Any]: ...
+    def analyse(
+        self, rows: list[SensitivityRow], pictures: str | os.PathLike[str] | None = None
+    ) -> dict[str, Any]: ...
+
+def sensitivity_run(case: CaseLike, run: SensitivityRun) -> SensitivityRow: ...
 def run(case: CaseLike) -> RunRecords: ...
 def ensemble(case: CaseLike, members: int, jobs: int) -> EnsembleRun: ...
 def csv_columns(name: str, text: str) -> dict[str, np.ndarray]: ...

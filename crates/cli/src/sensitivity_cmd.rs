@@ -22,11 +22,6 @@ Examples:
   soilcut sensitivity cases/paper/fig5.toml --method sobol --samples 256 --members 3 --dummy \\
       --vary soil.friction.peak=35:45 --vary soil.peak_shear=1:3 --seed 2 --jobs 2";
 
-/// Sobol base points by default.
-const SOBOL_SAMPLES: usize = 512;
-/// Morris trajectories by default.
-const MORRIS_TRAJECTORIES: usize = 20;
-
 #[derive(Args)]
 pub struct SensitivityArgs {
     #[command(flatten)]
@@ -84,20 +79,17 @@ fn prepare(args: &SensitivityArgs) -> Result<(Sensitivity, std::path::PathBuf), 
         Some(name) => (Model::Function(Function::parse(name).map_err(fail)?), 1),
         None => (Model::Case(base), DEFAULT_MEMBERS),
     };
-    let (method, samples) = match args.method {
-        MethodArg::Morris => (
-            Method::Morris {
-                levels: args.levels,
-            },
-            MORRIS_TRAJECTORIES,
-        ),
-        MethodArg::Sobol => (Method::Sobol, SOBOL_SAMPLES),
+    let method = match args.method {
+        MethodArg::Morris => Method::Morris {
+            levels: args.levels,
+        },
+        MethodArg::Sobol => Method::Sobol,
     };
     let study = Sensitivity {
         model,
         ranges,
         method,
-        samples: args.samples.unwrap_or(samples),
+        samples: args.samples.unwrap_or(method.default_samples()),
         members: args.members.unwrap_or(members),
         dummy: args.dummy,
         seed: args.seed,

@@ -13,8 +13,9 @@ use std::path::Path;
 
 /// The command line's options that messages of the study and io crates
 /// name, and the Python arguments that stand for them (`soilcut.sweep`'s
-/// and `soilcut.fit`'s keywords, `save`'s folder), longest first.
-const ARGUMENTS: [(&str, &str); 12] = [
+/// `soilcut.fit`'s and `soilcut.sensitivity`'s keywords, `save`'s folder),
+/// longest first.
+const ARGUMENTS: [(&str, &str); 19] = [
     (
         "give at least one --free key",
         "give at least one key in free",
@@ -23,15 +24,25 @@ const ARGUMENTS: [(&str, &str); 12] = [
         "give at least one --vary key=SPEC",
         "give at least one key in vary",
     ),
+    (
+        "give at least one --vary key=lo:hi",
+        "give at least one key in vary",
+    ),
+    ("--method morris", "method=\"morris\""),
+    ("--dummy's input", "dummy's input"),
     ("--sample lhs:N", "sample=\"lhs:N\""),
     ("e.g. --out out/NAME", "e.g. \"out/NAME\""),
     ("with --set", "with Case.set"),
     ("--objective", "objective"),
     ("--bounds", "bounds"),
+    ("--samples", "samples"),
     ("--sample", "sample"),
     ("--free", "free"),
     ("--vary", "vary"),
     ("--method", "method"),
+    ("--members", "members"),
+    ("--levels", "levels"),
+    ("--jobs", "jobs"),
     ("--out", "folder"),
 ];
 

@@ -10,6 +10,7 @@ mod convert;
 mod ensemble;
 mod errors;
 mod run;
+mod sensitivity;
 mod simulation;
 mod step;
 mod study;
@@ -32,6 +33,13 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("BOUNDS_FLOOR", bounds.floor.name())?;
     m.add("BOUNDS_STRENGTH", bounds.strength.name())?;
     m.add("BOUNDS_FIELD", bounds.field.name())?;
+    // The sensitivity study's defaults, the library's (as `soilcut
+    // sensitivity`'s).
+    use soilcut_study::sensitivity as sens;
+    m.add("SENSITIVITY_SOBOL_SAMPLES", sens::DEFAULT_SOBOL_SAMPLES)?;
+    m.add("SENSITIVITY_TRAJECTORIES", sens::DEFAULT_TRAJECTORIES)?;
+    m.add("SENSITIVITY_LEVELS", sens::DEFAULT_LEVELS)?;
+    m.add("SENSITIVITY_MEMBERS", sens::DEFAULT_MEMBERS)?;
     m.add_class::<case::Case>()?;
     m.add_class::<run::RunRecords>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
@@ -42,6 +50,8 @@ fn _soilcut(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::sweep_check, m)?)?;
     m.add_function(wrap_pyfunction!(study::sweep_row, m)?)?;
     m.add_function(wrap_pyfunction!(study::fit, m)?)?;
+    m.add_class::<sensitivity::SensitivityStudy>()?;
+    m.add_function(wrap_pyfunction!(sensitivity::sensitivity_run, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape, m)?)?;
     m.add_function(wrap_pyfunction!(study::landscape_map, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::bounds, m)?)?;

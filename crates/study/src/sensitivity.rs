@@ -23,12 +23,14 @@ use crate::sample::Vary;
 
 mod analysis;
 pub mod bootstrap;
+mod check;
 pub mod design;
 mod files;
 pub mod function;
 pub mod morris;
 mod outputs;
 mod pictures;
+mod plan;
 mod runs;
 pub mod sequence;
 pub mod sobol;
@@ -37,7 +39,8 @@ pub mod tornado;
 pub use analysis::{Indices, OutputIndices};
 pub use function::Function;
 pub use outputs::{MEANINGS, OUTPUTS, UNITS};
-pub use runs::{RunRow, SensitivityResult};
+pub use plan::{Plan, Point, Run, RunRow};
+pub use runs::SensitivityResult;
 
 /// The name of the input that no run reads (`dummy`).
 pub const DUMMY: &str = "dummy";
@@ -47,6 +50,10 @@ pub const MIN_SOBOL_SAMPLES: usize = 16;
 pub const MIN_TRAJECTORIES: usize = 2;
 /// Morris levels by default.
 pub const DEFAULT_LEVELS: usize = 4;
+/// Sobol base points N by default.
+pub const DEFAULT_SOBOL_SAMPLES: usize = 512;
+/// Morris trajectories r by default.
+pub const DEFAULT_TRAJECTORIES: usize = 20;
 /// Members of each point of a case's study by default: the least K whose
 /// ensemble mean's chaos share is below 5 % of the design's variance for
 /// every force output of Fig. 5, as measured by
@@ -64,6 +71,28 @@ pub enum Method {
     },
     /// Sobol first-order and total indices.
     Sobol,
+}
+
+impl Method {
+    /// `morris` (on `levels` levels) or `sobol`.
+    pub fn named(name: &str, levels: usize) -> Result<Method, StudyError> {
+        match name {
+            "morris" => Ok(Method::Morris { levels }),
+            "sobol" => Ok(Method::Sobol),
+            _ => Err(StudyError::Spec(format!(
+                "--method {name}: expected morris or sobol"
+            ))),
+        }
+    }
+
+    /// Its sample size by default: [`DEFAULT_TRAJECTORIES`] or
+    /// [`DEFAULT_SOBOL_SAMPLES`].
+    pub fn default_samples(self) -> usize {
+        match self {
+            Method::Morris { .. } => DEFAULT_TRAJECTORIES,
+            Method::Sobol => DEFAULT_SOBOL_SAMPLES,
+        }
+    }
 }
 
 /// What each design point runs.
@@ -91,17 +120,25 @@ impl Range {
     pub fn parse(text: &str) -> Result<Range, StudyError> {
         let vary: Vary = text.parse()?;
         match vary.values {
-            crate::sample::Values::Range { lo, hi } if hi > lo => Ok(Range {
-                key: vary.key,
-                lo,
-                hi,
-            }),
-            crate::sample::Values::Range { .. } => Err(StudyError::Spec(format!(
-                "--vary {text}: a range needs lo < hi"
-            ))),
+            crate::sample::Values::Range { lo, hi } => Range::new(&vary.key, lo, hi),
             _ => Err(StudyError::Spec(format!(
                 "--vary {text}: expected key=lo:hi (a sensitivity study samples the interval)"
             ))),
+        }
+    }
+
+    /// `key` over [lo, hi], finite numbers with lo < hi.
+    pub fn new(key: &str, lo: f64, hi: f64) -> Result<Range, StudyError> {
+        if lo.is_finite() && hi.is_finite() && lo < hi {
+            Ok(Range {
+                key: key.to_string(),
+                lo,
+                hi,
+            })
+        } else {
+            Err(StudyError::Spec(format!(
+                "--vary {key}={lo}:{hi}: a range needs finite lo < hi"
+            )))
         }
     }
 }
@@ -156,6 +193,6 @@ impl Sensitivity {
     /// any run: a range with lo ≥ hi, a key the case cannot hold, a sample
     /// size below the method's least, an odd number of levels, too many runs.
     pub fn check(&self) -> Result<(), StudyError> {
-        runs::check(self)
+        check::check(self)
     }
 }

@@ -161,3 +161,42 @@ fn bad_designs_are_refused() {
     s.ranges.pop();
     assert!(s.check().is_err());
 }
+
+/// A short, coarse Morris study of the refined test case, two members a
+/// point: its runs made one by one, in reverse order, by [`Model::run`]
+/// and handed to `analyse` (as an executor of another process would),
+/// give `run`'s files, but for the wall times.
+#[test]
+fn runs_made_one_by_one_and_analysed_are_the_study() {
+    let set = ["run.travel=10", "run.increment=1"].map(|s| s.parse().unwrap());
+    let text = include_str!("../../io/testdata/refined.toml").to_string();
+    let s = Sensitivity {
+        model: Model::Case(soilcut_study::BaseCase::new(text, set.to_vec()).unwrap()),
+        ranges: vec![
+            Range::new("soil.friction.peak", 33.0, 40.0).unwrap(),
+            Range::new("blade.wall_friction", 5.0, 15.0).unwrap(),
+        ],
+        method: Method::Morris { levels: 4 },
+        samples: 2,
+        members: 2,
+        dummy: true,
+        seed: 3,
+        jobs: 2,
+    };
+    let whole = run(&s);
+    let plan = s.plan().unwrap();
+    assert_eq!(plan.runs.len(), s.runs());
+    let mut rows: Vec<_> = plan.runs.iter().rev().map(|r| s.model.run(r)).collect();
+    rows.reverse();
+    let parts = s.analyse(plan.clone(), rows.clone()).unwrap();
+    let without_timing = |r: &SensitivityResult| {
+        let mut files = r.files();
+        files.retain(|(name, _)| *name != "timing.csv");
+        files
+    };
+    assert!(whole.analysis.is_ok());
+    assert_eq!(without_timing(&parts), without_timing(&whole));
+    rows.swap(0, 1);
+    let e = s.analyse(plan, rows).unwrap_err().to_string();
+    assert!(e.contains("row 1"), "{e}");
+}

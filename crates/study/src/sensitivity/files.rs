@@ -3,7 +3,8 @@
 //! `timing.csv`.
 
 use super::analysis::{Indices, OutputIndices};
-use super::runs::{RunRow, SensitivityResult};
+use super::plan::RunRow;
+use super::runs::SensitivityResult;
 use super::{bootstrap, outputs, Method};
 use crate::field::number;
 use soilcut_io::CsvText;

@@ -1,29 +1,13 @@
 //! The runs of a sensitivity study and the indices of their outputs.
 
 use super::analysis::{output_indices, OutputIndices};
+use super::plan::{Plan, Run, RunRow};
 use super::tornado::{self, TornadoPoint};
-use super::{design, outputs, Method, Model, Sensitivity};
-use super::{DEFAULT_LEVELS, MIN_SOBOL_SAMPLES, MIN_TRAJECTORIES};
-use crate::ensemble::{member_offsets, Perturbation};
+use super::{outputs, Model, Sensitivity};
 use crate::error::StudyError;
-use crate::run::{override_of, BaseCase};
-use crate::sample::MAX_RUNS;
 use crate::Progress;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// One run: member k of design point `point`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RunRow {
-    /// Design point, from 0, in the design's order.
-    pub point: usize,
-    /// Member k (0 without members).
-    pub k: i32,
-    /// The outputs ([`OUTPUTS`](super::OUTPUTS), then the unit windows', or `f`), or why the run failed.
-    pub outcome: Result<Vec<f64>, String>,
-    /// Wall time of the simulation, s.
-    pub wall_time_s: f64,
-}
 
 /// A finished sensitivity study.
 #[derive(Clone, Debug)]
@@ -50,144 +34,33 @@ pub struct SensitivityResult {
     pub analysis: Result<Vec<OutputIndices>, String>,
 }
 
-fn spec(message: String) -> StudyError {
-    StudyError::Spec(message)
-}
-
-/// Refuses, before any run: no keys, a key twice, a sample size below the
-/// estimator's least (Sobol: N a power of 2, ≥ 16, at most 10 inputs;
-/// Morris: r ≥ 2, an even p ≥ 2), K = 0, more than [`MAX_RUNS`] runs, a
-/// key no run can set.
-pub fn check(s: &Sensitivity) -> Result<(), StudyError> {
-    let keys = s.keys();
-    if s.ranges.is_empty() {
-        return Err(spec("give at least one --vary key=lo:hi".into()));
-    }
-    if let Some((i, k)) = keys
-        .iter()
-        .enumerate()
-        .find(|(i, k)| keys[..*i].contains(k))
-    {
-        let what = if i == s.ranges.len() {
-            "--dummy's input"
-        } else {
-            "the key"
-        };
-        return Err(spec(format!("--vary {k}: {what} is varied twice")));
-    }
-    let n = s.samples;
-    match s.method {
-        Method::Sobol if n < MIN_SOBOL_SAMPLES || !n.is_power_of_two() => Err(spec(format!(
-            "--samples {n}: Sobol indices need N a power of 2 and at least {MIN_SOBOL_SAMPLES} \
-             (SALib's guidance: 500 or more per input)"
-        ))),
-        Method::Sobol if 2 * keys.len() > super::sequence::MAX_DIMENSIONS => Err(spec(format!(
-            "--vary: {} inputs; Sobol indices take at most {} (the sequence's dimensions / 2): \
-             screen them first with --method morris",
-            keys.len(),
-            super::sequence::MAX_DIMENSIONS / 2
-        ))),
-        Method::Morris { .. } if n < MIN_TRAJECTORIES => Err(spec(format!(
-            "--samples {n}: Morris needs at least {MIN_TRAJECTORIES} trajectories (σ), \
-             10 to 50 usual"
-        ))),
-        Method::Morris { levels } if levels < 2 || levels % 2 == 1 => Err(spec(format!(
-            "--levels {levels}: Morris's grid needs an even number of levels >= 2 \
-             ({DEFAULT_LEVELS} usual)"
-        ))),
-        _ => Ok(()),
-    }?;
-    if s.members == 0 {
-        return Err(spec("--members 0: give 1 (one run a point) or more".into()));
-    }
-    if s.runs() > MAX_RUNS {
-        return Err(spec(format!(
-            "--samples {n}: {} runs; a study takes at most {MAX_RUNS} (1e5 runs)",
-            s.runs()
-        )));
-    }
-    check_model(s)
-}
-
-fn check_model(s: &Sensitivity) -> Result<(), StudyError> {
-    match &s.model {
-        Model::Case(base) => {
-            let keys: Vec<String> = s.ranges.iter().map(|r| r.key.clone()).collect();
-            let values: Vec<toml::Value> =
-                s.ranges.iter().map(|r| toml::Value::Float(r.lo)).collect();
-            crate::sweep::check_keys(base, &keys, &values)
-        }
-        Model::Function(f) if s.members > 1 => Err(spec(format!(
-            "--members {}: a test function ({f:?}) has no chaos to sample",
-            s.members
-        ))),
-        Model::Function(f) => match f.inputs() {
-            Some(n) if n != s.ranges.len() => Err(spec(format!(
-                "--vary: {f:?} takes {n} inputs, {} given",
-                s.ranges.len()
-            ))),
-            _ => Ok(()),
-        },
-    }
-}
-
 impl Sensitivity {
-    /// The design: in the unit cube, and scaled to the keys' ranges
-    /// (`dummy` over [0, 1]).
-    fn design(&self) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
-        let d = self.keys().len();
-        let unit = match self.method {
-            Method::Morris { levels } => design::morris(d, self.samples, levels, self.seed),
-            Method::Sobol => design::saltelli(d, self.samples, self.seed),
+    /// Runs every design point's members, and the tornado's of a case, on
+    /// `jobs` threads, and computes the indices of every output: the
+    /// [`plan`](Sensitivity::plan), each run by [`Model::run`], then
+    /// [`analyse`](Sensitivity::analyse), as any other executor would.
+    pub fn run(&self, progress: Progress) -> Result<SensitivityResult, StudyError> {
+        let plan = self.plan()?;
+        let finished = AtomicUsize::new(0);
+        let total = plan.runs.len();
+        progress(0, total);
+        let one = |run: &Run| {
+            let row = self.model.run(run);
+            progress(finished.fetch_add(1, Ordering::Relaxed) + 1, total);
+            row
         };
-        let scale = |row: &Vec<f64>| {
-            row.iter()
-                .enumerate()
-                .map(|(j, u)| match self.ranges.get(j) {
-                    Some(r) => r.lo + (r.hi - r.lo) * u,
-                    None => *u,
-                })
-                .collect()
-        };
-        let values = unit.iter().map(scale).collect();
-        (unit, values)
+        let rows = crate::pool(self.jobs)?.install(|| plan.runs.par_iter().map(one).collect());
+        self.analyse(plan, rows)
     }
 
-    /// Runs every design point's members, and the tornado's of a case, on
-    /// `jobs` threads, and computes the indices of every output.
-    pub fn run(&self, progress: Progress) -> Result<SensitivityResult, StudyError> {
-        self.check()?;
-        let (unit, values) = self.design();
-        let perturbation = self.perturbation()?;
-        let ks = if self.members > 1 {
-            member_offsets(self.members)
-        } else {
-            vec![0]
-        };
-        let tornado = self.tornado_points();
-        let points = (0..values.len()).map(Job::Design);
-        let points = points.chain((0..tornado.len()).map(Job::Tornado));
-        let jobs: Vec<(Job, i32)> = points
-            .flat_map(|p| ks.iter().map(move |&k| (p, k)))
-            .collect();
-        let finished = AtomicUsize::new(0);
-        progress(0, jobs.len());
-        let one = |&(job, k): &(Job, i32)| {
-            let (point, (outcome, wall_time_s)) = match job {
-                Job::Design(p) => (p, self.run_point(&values[p], k)),
-                Job::Tornado(t) => (t, self.run_tornado(&tornado[t], k)),
-            };
-            progress(finished.fetch_add(1, Ordering::Relaxed) + 1, jobs.len());
-            RunRow {
-                point,
-                k,
-                outcome,
-                wall_time_s,
-            }
-        };
-        let mut runs: Vec<RunRow> =
-            crate::pool(self.jobs)?.install(|| jobs.par_iter().map(one).collect());
-        let mut tornado_runs = runs.split_off(values.len() * ks.len());
+    /// The study from its `plan` and the rows of its runs, in the plan's
+    /// order (from any executor): the outputs' names, the indices (or the
+    /// first failed run) and everything the files say. Refuses rows that
+    /// are not the plan's runs.
+    pub fn analyse(&self, plan: Plan, rows: Vec<RunRow>) -> Result<SensitivityResult, StudyError> {
+        check_rows(&plan, &rows)?;
+        let mut runs = rows;
+        let mut tornado_runs = runs.split_off(plan.design_runs());
         let outputs = match self.model {
             Model::Case(_) => {
                 let windows = common_windows(&runs);
@@ -197,7 +70,8 @@ impl Sensitivity {
             }
             Model::Function(_) => vec!["f".to_string()],
         };
-        let analysis = analyse(self, &unit, &runs, &outputs).and_then(|a| {
+        let tornado = plan.tornado;
+        let analysis = analyse(self, &plan.unit, &runs, &outputs).and_then(|a| {
             failure(&tornado_runs, |row| {
                 self.tornado_run_named(&tornado[row.point], row.k)
             })?;
@@ -207,23 +81,14 @@ impl Sensitivity {
             study: self.clone(),
             keys: self.keys(),
             outputs,
-            design: unit,
-            values,
+            design: plan.unit,
+            values: plan.values,
             runs,
             tornado,
             tornado_runs,
-            perturbation: perturbation.map(|p| p.rule()),
+            perturbation: plan.perturbation,
             analysis,
         })
-    }
-
-    /// The tornado's points: a case's (none for a test function, which
-    /// has no values of its own).
-    fn tornado_points(&self) -> Vec<TornadoPoint> {
-        match self.model {
-            Model::Case(_) => tornado::points(self.ranges.len()),
-            Model::Function(_) => Vec::new(),
-        }
     }
 
     fn tornado_run_named(&self, point: &TornadoPoint, k: i32) -> String {
@@ -232,72 +97,33 @@ impl Sensitivity {
             None => format!("tornado run of the case (member k = {k})"),
         }
     }
-
-    /// The ensembles' rule at the case's own values (for summary.json);
-    /// each point takes it at its own values.
-    fn perturbation(&self) -> Result<Option<Perturbation>, StudyError> {
-        match &self.model {
-            Model::Case(base) if self.members > 1 => Ok(Some(Perturbation::of(&base.load(&[])?)?)),
-            _ => Ok(None),
-        }
-    }
-
-    /// Member k of the design point `values`: its outputs and wall time.
-    fn run_point(&self, values: &[f64], k: i32) -> (Result<Vec<f64>, String>, f64) {
-        match &self.model {
-            Model::Function(f) => (Ok(vec![f.value(values)]), 0.0),
-            Model::Case(base) => {
-                let keys = self.ranges.iter().map(|r| r.key.as_str());
-                let set: Vec<(&str, f64)> = keys.zip(values.iter().copied()).collect();
-                run_member(base, &set, k)
-            }
-        }
-    }
-
-    /// Member k of a tornado point (a case's only).
-    fn run_tornado(&self, point: &TornadoPoint, k: i32) -> (Result<Vec<f64>, String>, f64) {
-        match &self.model {
-            Model::Case(base) => run_member(
-                base,
-                &point.setting(&self.ranges).into_iter().collect::<Vec<_>>(),
-                k,
-            ),
-            Model::Function(_) => (Err("a test function has no tornado".into()), 0.0),
-        }
-    }
 }
 
-/// What a run is: a design point, or a tornado point (their indices).
-#[derive(Clone, Copy, Debug)]
-enum Job {
-    Design(usize),
-    Tornado(usize),
-}
-
-/// Member k of the case with the keys `set` to their values: its outputs
-/// and wall time.
-fn run_member(base: &BaseCase, set: &[(&str, f64)], k: i32) -> (Result<Vec<f64>, String>, f64) {
-    let mut overrides = Vec::new();
-    for (key, v) in set {
-        match override_of(key, &toml::Value::Float(*v)) {
-            Ok(o) => overrides.push(o),
-            Err(e) => return (Err(e), 0.0),
-        }
+/// Refuses `rows` that are not `plan`'s runs, one for one (a caller's
+/// executor that lost or reordered some).
+fn check_rows(plan: &Plan, rows: &[RunRow]) -> Result<(), StudyError> {
+    if rows.len() != plan.runs.len() {
+        return Err(StudyError::Spec(format!(
+            "runs: {} rows for a plan of {} runs",
+            rows.len(),
+            plan.runs.len()
+        )));
     }
-    if k != 0 {
-        let member = base
-            .load(&overrides)
-            .map_err(|e| e.to_string())
-            .and_then(|l| Perturbation::of(&l).map_err(|e| e.to_string()))
-            .and_then(|p| override_of(&p.key, &toml::Value::Float(p.value(k))));
-        match member {
-            Ok(o) => overrides.push(o),
-            Err(e) => return (Err(e), 0.0),
-        }
-    }
-    match base.run(&overrides) {
-        Ok(run) => (Ok(outputs::outputs_of(&run)), run.wall_time_s),
-        Err(e) => (Err(e), 0.0),
+    let stray = plan
+        .runs
+        .iter()
+        .zip(rows)
+        .position(|(run, row)| run.point.index() != row.point || run.k != row.k);
+    match stray {
+        Some(i) => Err(StudyError::Spec(format!(
+            "runs: row {} is point {} member k = {}, the plan's run {:?} member k = {}",
+            i + 1,
+            rows[i].point + 1,
+            rows[i].k,
+            plan.runs[i].point,
+            plan.runs[i].k
+        ))),
+        None => Ok(()),
     }
 }
 
