@@ -11,7 +11,9 @@
 //!
 //! Both were last regenerated for M26's dilation gap (issue 38, commit
 //! 3ca1a29, which changes every refined run with a dilating band; the
-//! first increment, Coulomb's wedge, is unchanged). Regenerate the golden
+//! first increment, Coulomb's wedge, is unchanged), and blessed again when
+//! `history.csv` gained `moment`, `tool_x`, `tool_y`, `tool_rotation`
+//! (issue 51; its first 20 columns unchanged byte for byte). Regenerate the golden
 //! files only deliberately, after a change that is meant to change
 //! results, with
 //!
