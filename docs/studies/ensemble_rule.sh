@@ -4,7 +4,8 @@
 # $soilcut (the binary) and $runs (where the ensembles go) set.
 #
 # ensemble FOLDER CASE [ARGS]: 7 perturbed runs of CASE into FOLDER, unless
-#   FOLDER/ensemble.csv exists (resumable).
+#   FOLDER/ensemble.csv exists (resumable); with JUDGE_ONLY=1 set, none
+#   (it fails where they are missing, and the row says "pending").
 # row NAME CLASS CASE [--set ...]: the reference ensemble (nodes every
 #   increment, the exhaustive search, d/2000) in $runs/NAME/ref-d2000, the
 #   ensemble at the defaults in $runs/NAME/defaults, and the table row of
@@ -14,6 +15,8 @@ ensemble() { # folder, case file, extra arguments
   local folder=$1 file=$2
   shift 2
   [ -f "$folder/ensemble.csv" ] && return
+  # JUDGE_ONLY=1: judge what has run, run nothing.
+  [ -n "${JUDGE_ONLY:-}" ] && return 1
   nice -n 10 "$soilcut" run "$file" --ensemble 7 --jobs 1 "$@" --no-plots --quiet --force --out "$folder"
 }
 
@@ -23,9 +26,11 @@ row() { # name, class, case file, extra --set arguments
   local d v
   d=$(grep -m1 '^depth' "$file" | awk '{print $3}')
   v=$(python3 -c "print(repr($d / 2000))")
-  ensemble "$runs/$name/ref-d2000" "$file" "$@" --set run.ground=nodes \
-    --set run.increment="$v"
-  ensemble "$runs/$name/defaults" "$file" "$@"
+  if ! ensemble "$runs/$name/ref-d2000" "$file" "$@" --set run.ground=nodes \
+    --set run.increment="$v" || ! ensemble "$runs/$name/defaults" "$file" "$@"; then
+    echo "| $name | $class | not run yet | – | – | – | – | – | pending |"
+    return
+  fi
   local ground
   ground=$("$soilcut" check "$file" "$@" | tail -1 | sed -E 's/^ +//; s/\|/\\|/g')
   "$soilcut" accuracy "$runs/$name/defaults" "$runs/$name/ref-d2000" --json |

@@ -678,6 +678,7 @@ fn resolve(mut file: CaseFile) -> Result<LoadedCase, InputError> {
         soil: &soil,
         blade: &blade,
         face_friction: choices.face_friction,
+        in_bin: file.bin.is_some(),
     };
     let (run, notices) = file.run.resolve(class, tool_travel)?;
     let case = Case {

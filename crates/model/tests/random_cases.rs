@@ -317,6 +317,7 @@ fn the_default_grid_is_accurate_on_random_cases() {
                 soil: &case.soil,
                 blade: &case.blade,
                 face_friction: case.choices.face_friction,
+                in_bin: case.bin.length.is_some(),
             };
             let mut default = case.clone();
             default.run = Run::resolve(&keys, class).unwrap();
