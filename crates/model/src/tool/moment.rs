@@ -13,8 +13,10 @@
 //! face at α from the horizontal (leaning back for α < 90°) and the soil
 //! at the face up to y_f,
 //!
-//!     ℓ = max(y_f + t, 0) / 3,   A = (u − ℓ cot α, −t + ℓ)              (M56)
-//!     M = (A_x − O_x) F_y − (A_y − O_y) F_x,   F = (−P_h, P_v)
+//! ```text
+//! ℓ = max(y_f + t, 0) / 3,   A = (u − ℓ cot α, −t + ℓ)              (M56)
+//! M = (A_x − O_x) F_y − (A_y − O_y) F_x,   F = (−P_h, P_v)
+//! ```
 //!
 //! with O the pivot and F the soil's force on the tool (the draft P_h
 //! pushes it back, P_v up); M is counter-clockwise positive, the sense of
