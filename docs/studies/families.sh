@@ -129,6 +129,8 @@ never=(--set soil.friction.residual=40 --set soil.dilation.residual=10)
   against fig5-wall15 ref-d50p1 "$f5" --set blade.wall_friction=15 --set run.ground=nodes --set run.increment=0.01 --set soil.d50=0.606
   against table1-s-d50-0.3 h100 "$s" --set soil.d50=0.3 --set run.vertex_spacing=0.2
   against table1-s-d50-0.3 h200 "$s" --set soil.d50=0.3 --set run.vertex_spacing=0.1
+  against fig5-w20 h100 "$f5" --set blade.width=20 --set run.vertex_spacing=0.2
+  against fig5-w20 h200v700 "$f5" --set blade.width=20 --set run.vertex_spacing=0.1 --set run.increment=0.028571428571428571
   against original-bin8 h50v250 "$o" --set bin.length=160 --set run.vertex_spacing=0.4 --set run.increment=0.08
   against original-bin8 v1000 "$o" --set bin.length=160 --set run.increment=0.02
   against original-bin8 h400v2000 "$o" --set bin.length=160 --set run.vertex_spacing=0.05 --set run.increment=0.01
