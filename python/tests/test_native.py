@@ -50,7 +50,10 @@ def test_a_failed_advance_keeps_its_records(original):
     # A bin two increments longer than the travel: the last increments find
     # no mechanism before the wall.
     inc, d = original["run.increment"], original["blade.depth"]
-    case = original.update({"run.travel": 4 * d, "bin.length": 4 * d + 2 * inc})
+    # (The increment given: in a bin the original model's default is finer.)
+    case = original.update(
+        {"run.travel": 4 * d, "run.increment": inc, "bin.length": 4 * d + 2 * inc}
+    )
     sim = soilcut.Simulation(case)
     sim.advance_to(d)
     before = sim.steps_done

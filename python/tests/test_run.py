@@ -95,7 +95,10 @@ def test_a_run_that_stops_keeps_its_increments(tmp_path, original):
     # A bin two increments longer than the travel: the last increments find
     # no mechanism before the wall.
     inc, d = original["run.increment"], original["blade.depth"]
-    case = original.update({"run.travel": 4 * d, "bin.length": 4 * d + 2 * inc})
+    # (The increment given: in a bin the original model's default is finer.)
+    case = original.update(
+        {"run.travel": 4 * d, "run.increment": inc, "bin.length": 4 * d + 2 * inc}
+    )
     with pytest.raises(soilcut.StepError, match="bin.length") as raised:
         soilcut.run(case)
     result = raised.value.result
