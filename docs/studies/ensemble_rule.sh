@@ -10,6 +10,7 @@
 #   increment, the exhaustive search, d/2000) in $runs/NAME/ref-d2000, the
 #   ensemble at the defaults in $runs/NAME/defaults, and the table row of
 #   `soilcut accuracy` of the second against the first.
+# rows_head: the header of a table of such rows.
 
 ensemble() { # folder, case file, extra arguments
   local folder=$1 file=$2
@@ -50,3 +51,7 @@ print(f"| {name} | {klass} | {ground} | {ours_wall:.3f} | {mean:.4f} ± {sd:.4f}
 ' "$name" "$class" "$ground" "$runs"
 }
 
+rows_head() {
+  echo "| case | class | defaults (\`soilcut check\`) | median wall time a member (s) | whole-run mean ± sd | reference's median wall time (s) | reference (d/2000) mean ± sd | worst deviation / tolerance | accurate |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+}

@@ -23,8 +23,7 @@ mkdir -p "$runs" "$(dirname "$out")"
 source docs/studies/ensemble_rule.sh
 
 {
-  echo "| case | class | defaults (\`soilcut check\`) | median wall time a member (s) | whole-run mean ± sd | reference's median wall time (s) | reference (d/2000) mean ± sd | worst deviation / tolerance | accurate |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  rows_head
   row table1-s "refined, softening" cases/paper/table1-s.toml
   row table1-hs "refined, hardening-softening" cases/paper/table1-hs.toml
   row fig5 "refined, hardening-softening" cases/paper/fig5.toml

@@ -52,8 +52,7 @@ f8=cases/paper/fig8b.toml vv=cases/validation/vertical.toml vd=cases/validation/
 o=cases/paper/original.toml sc=cases/tools/scoop.toml dp=cases/tools/deepening.toml
 never=(--set soil.friction.residual=40 --set soil.dilation.residual=10)
 {
-  echo "| case | class | defaults (\`soilcut check\`) | median wall time a member (s) | whole-run mean ± sd | reference's median wall time (s) | reference (d/2000) mean ± sd | worst deviation / tolerance | accurate |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  rows_head
   row table1-s "softening, vertical" "$s"
   row table1-s-d50-0.3 "softening, vertical" "$s" --set soil.d50=0.3
   row table1-hs "softening, vertical" "$hs"

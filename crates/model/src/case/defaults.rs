@@ -15,13 +15,17 @@ use super::{
 /// "tine", "dozer"; on the node grid `docs/studies/ensemble-accuracy/`).
 pub const ORIGINAL_INCREMENTS_PER_DEPTH: f64 = 250.0;
 
-/// Increments and vertex spacings per blade depth of the original model in
-/// a soil bin: d/1000 and h = d/100. As its slip line nears the end wall
-/// the force climbs steeply, and d/250 with d/50 missed Fig. 5's soil in an
-/// 8 d bin by 2.96 of its tolerance in the last unit window; these hold
-/// every bin of the family with margin, at most 0.42 of it
-/// (`docs/studies/every-class/families.md`).
-pub const ORIGINAL_BIN_PER_DEPTH: [f64; 2] = [1000.0, 100.0];
+/// Increments per blade depth of the original model in a soil bin: d/1000,
+/// with vertices `ORIGINAL_BIN_VERTICES_PER_DEPTH`. As its slip line nears
+/// the end wall the force climbs steeply, and d/250 with d/50 missed
+/// Fig. 5's soil in an 8 d bin by 2.96 of its tolerance in the last unit
+/// window; these hold every bin of the family with margin, at most 0.42 of
+/// it (`docs/studies/every-class/families.md`).
+pub const ORIGINAL_BIN_INCREMENTS_PER_DEPTH: f64 = 1000.0;
+
+/// Vertex spacings per blade depth of the original model in a soil bin:
+/// h = d/100 (`ORIGINAL_BIN_INCREMENTS_PER_DEPTH`).
+pub const ORIGINAL_BIN_VERTICES_PER_DEPTH: f64 = 100.0;
 
 /// Increments per blade depth on the vertex ground of the refined model in
 /// softening soil with the midpoint force: d/350, the coarsest of d/250 to
@@ -161,7 +165,7 @@ fn vertex_ground(keys: &RunKeys, class: Class<'_>) -> VertexGround {
     let softens = class.soil.softens();
     let d = class.blade.depth;
     let per_depth = match (softens, class.blade.rake == 90.0) {
-        _ if class.model == Model::Original && class.in_bin => ORIGINAL_BIN_PER_DEPTH[1],
+        _ if class.model == Model::Original && class.in_bin => ORIGINAL_BIN_VERTICES_PER_DEPTH,
         (false, _) => NON_SOFTENING_VERTICES_PER_DEPTH,
         (true, true) => VERTICES_PER_DEPTH,
         (true, false) => RAKED_VERTICES_PER_DEPTH,
@@ -189,7 +193,7 @@ fn vertex_ground(keys: &RunKeys, class: Class<'_>) -> VertexGround {
 fn increments_per_depth(ground: &Ground, class: Class<'_>) -> f64 {
     let softens = class.soil.softens();
     match (ground, class.model) {
-        (_, Model::Original) if class.in_bin => ORIGINAL_BIN_PER_DEPTH[0],
+        (_, Model::Original) if class.in_bin => ORIGINAL_BIN_INCREMENTS_PER_DEPTH,
         (_, Model::Original) => ORIGINAL_INCREMENTS_PER_DEPTH,
         (Ground::Vertices(v), _) => match v.time_scheme {
             TimeScheme::Explicit => VERTEX_EXPLICIT_INCREMENTS_PER_DEPTH,

@@ -24,6 +24,7 @@
 //! (per blade with `blade.width`).
 
 use crate::case::Blade;
+use crate::rake::Rake;
 
 /// The tool's columns of an increment: its pose and the moment on it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,12 +45,7 @@ pub struct ToolState {
 pub fn tool_state(blade: &Blade, u: f64, tip: f64, face_top: f64, force: [f64; 2]) -> ToolState {
     let [force_h, force_v] = force;
     let lever = (face_top + tip).max(0.0) / 3.0;
-    let cot = if blade.rake == 90.0 {
-        0.0
-    } else {
-        1.0 / blade.rake.to_radians().tan()
-    };
-    let at = [u - lever * cot, -tip + lever];
+    let at = [u - lever * Rake::new(blade.rake).cot, -tip + lever];
     let pivot = [u + blade.pivot[0], -tip + blade.pivot[1]];
     ToolState {
         moment: (at[0] - pivot[0]) * force_v + (at[1] - pivot[1]) * force_h,

@@ -78,21 +78,17 @@ impl Tool {
             .collect::<Result<Vec<_>, _>>()?;
         // Edges at the reference depth to round-off (a turned tool's edge
         // is at 19.999999999999996 for 20) cut at constant depth.
-        let constant = path
+        let off_depth = path
             .iter()
-            .all(|p| (p[1] - depth).abs() <= ROUND_OFF * depth);
-        if !constant && rake != 90.0 {
-            let i = path
-                .iter()
-                .position(|p| (p[1] - depth).abs() > ROUND_OFF * depth);
-            let [s, d] = path[i.unwrap_or(0)];
+            .position(|p| (p[1] - depth).abs() > ROUND_OFF * depth);
+        if let (Some(i), true) = (off_depth, rake != 90.0) {
+            let [s, d] = path[i];
             return Err(CaseError::new(
                 "tool.motion",
                 format!(
-                    "pose {} puts the cutting edge at depth {d} (s = {s}), not blade.depth = \
+                    "pose {i} puts the cutting edge at depth {d} (s = {s}), not blade.depth = \
                      {depth}: a face leaning back (α = {rake}°) cuts at the constant depth \
-                     blade.depth so far (set blade.depth, or move the edge at it)",
-                    i.unwrap_or(0)
+                     blade.depth so far (set blade.depth, or move the edge at it)"
                 ),
             ));
         }
@@ -100,7 +96,11 @@ impl Tool {
         let [x, y] = start.place(self.pivot, edge);
         Ok(StraightCut {
             rake,
-            depth_path: if constant { Vec::new() } else { path },
+            depth_path: if off_depth.is_none() {
+                Vec::new()
+            } else {
+                path
+            },
             travel: self.motion.travel(),
             pivot: [start.x - x, start.y - y],
             rotation,
