@@ -15,7 +15,9 @@
 #
 # SOILCUT the binary, RUNS where the ensembles go (resumable: a finished
 # ensemble is judged again, not rerun; JUDGE_ONLY=1 judges what has run and
-# marks the rest pending). Writes
+# marks the rest pending). A row whose runs are not in RUNS but which
+# families.md already judges keeps its line, so the study resumes on another
+# machine; delete a line to have its row run again. Writes
 # docs/studies/every-class/families.md. About five hours of one core, most
 # of it the reference ensembles.
 set -euo pipefail
@@ -28,11 +30,22 @@ mkdir -p "$runs" "$(dirname "$out")"
 # shellcheck source=docs/studies/ensemble_rule.sh
 source docs/studies/ensemble_rule.sh
 
+# kept NAME SECOND: the judged line of families.md whose first two cells are
+# NAME and SECOND, when RUNS has no runs of NAME.
+kept() {
+  [ -f "$out" ] && [ ! -d "$runs/$1" ] || return 1
+  grep -m1 -F "| $1 | $2 |" "$out" | grep -v pending
+}
+
+# family_row: row, or its line kept from families.md.
+family_row() { kept "$1" "$2" || row "$@"; }
+
 # against NAME TAG CASE [ARGS]: an ensemble of CASE with ARGS, judged
 # against NAME's reference ensemble.
 against() {
   local name=$1 tag=$2 file=$3
   shift 3
+  kept "$name" "$tag" && return
   if ! ensemble "$runs/$name/$tag" "$file" "$@"; then
     echo "| $name | $tag | \`$*\` | not run yet | pending |"
     return
@@ -53,51 +66,51 @@ o=cases/paper/original.toml sc=cases/tools/scoop.toml dp=cases/tools/deepening.t
 never=(--set soil.friction.residual=40 --set soil.dilation.residual=10)
 {
   rows_head
-  row table1-s "softening, vertical" "$s"
-  row table1-s-d50-0.3 "softening, vertical" "$s" --set soil.d50=0.3
-  row table1-hs "softening, vertical" "$hs"
-  row table1-hs-wall15 "softening, vertical" "$hs" --set blade.wall_friction=15
-  row fig5 "softening, vertical" "$f5"
-  row fig5-wall15 "softening, vertical" "$f5" --set blade.wall_friction=15
-  row fig5-rake45 "softening, raked" "$f5" --set blade.rake=45
-  row fig5-rake60 "softening, raked" "$f5" --set blade.rake=60
-  row fig5-rake75 "softening, raked" "$f5" --set blade.rake=75
-  row table1-s-rake45 "softening, raked" "$s" --set blade.rake=45
-  row table1-s-rake60 "softening, raked" "$s" --set blade.rake=60
-  row table1-hs-rake60 "softening, raked" "$hs" --set blade.rake=60
-  row fig5-bin8 "softening, bin" "$f5" --set bin.length=160
-  row fig5-bin10 "softening, bin" "$f5" --set bin.length=200
-  row table1-s-bin6 "softening, bin" "$s" --set bin.length=120
-  row table1-hs-bin8 "softening, bin" "$hs" --set bin.length=160
-  row validation-vertical "softening, bin" "$vv"
-  row validation-deep "softening, bin" "$vd"
-  row fig8b "never softening" "$f8"
-  row fig8b-rake45 "never softening" "$f8" --set blade.rake=45
-  row fig8b-rake60 "never softening" "$f8" --set blade.rake=60
-  row fig8b-rake75 "never softening" "$f8" --set blade.rake=75
-  row fig5-never "never softening" "$f5" "${never[@]}"
-  row table1-hs-never "never softening" "$hs" --set soil.friction.residual=35
-  row original "original model" "$o"
-  row original-rake60 "original model" "$o" --set blade.rake=60
-  row original-phi40 "original model" "$o" --set soil.friction.peak=40 --set soil.friction.residual=34
-  row original-bin8 "original model" "$o" --set bin.length=160
-  row original-bin10 "original model" "$o" --set bin.length=200
-  row original-phi40-bin8 "original model" "$o" --set soil.friction.peak=40 --set soil.friction.residual=34 --set bin.length=160
-  row original-bin7-travel4 "original model" "$o" --set bin.length=140 --set run.travel=80
-  row tine "original model" cases/tools/tine.toml
-  row dozer "original model" cases/tools/dozer.toml
-  row scoop "depth path" "$sc"
-  row scoop-wall15 "depth path" "$sc" --set blade.wall_friction=15
-  row deepening "depth path" "$dp"
-  row deepening-phi40 "depth path" "$dp" --set soil.friction.peak=40 --set soil.friction.residual=34
-  row fig5-rising "depth path" "$f5" --set 'blade.depth_path=[[0.0, 20.0], [50.0, 12.0]]'
-  row table1-s-deepening "depth path" "$s" --set 'blade.depth_path=[[0.0, 8.0], [60.0, 20.0]]'
-  row fig5-w20 "finite width" "$f5" --set blade.width=20
-  row fig5-w40 "finite width" "$f5" --set blade.width=40
-  row fig5-w80 "finite width" "$f5" --set blade.width=80
-  row table1-s-w40 "finite width" "$s" --set blade.width=40
-  row table1-hs-w40 "finite width" "$hs" --set blade.width=40
-  row fig8b-w40 "finite width" "$f8" --set blade.width=40
+  family_row table1-s "softening, vertical" "$s"
+  family_row table1-s-d50-0.3 "softening, vertical" "$s" --set soil.d50=0.3
+  family_row table1-hs "softening, vertical" "$hs"
+  family_row table1-hs-wall15 "softening, vertical" "$hs" --set blade.wall_friction=15
+  family_row fig5 "softening, vertical" "$f5"
+  family_row fig5-wall15 "softening, vertical" "$f5" --set blade.wall_friction=15
+  family_row fig5-rake45 "softening, raked" "$f5" --set blade.rake=45
+  family_row fig5-rake60 "softening, raked" "$f5" --set blade.rake=60
+  family_row fig5-rake75 "softening, raked" "$f5" --set blade.rake=75
+  family_row table1-s-rake45 "softening, raked" "$s" --set blade.rake=45
+  family_row table1-s-rake60 "softening, raked" "$s" --set blade.rake=60
+  family_row table1-hs-rake60 "softening, raked" "$hs" --set blade.rake=60
+  family_row fig5-bin8 "softening, bin" "$f5" --set bin.length=160
+  family_row fig5-bin10 "softening, bin" "$f5" --set bin.length=200
+  family_row table1-s-bin6 "softening, bin" "$s" --set bin.length=120
+  family_row table1-hs-bin8 "softening, bin" "$hs" --set bin.length=160
+  family_row validation-vertical "softening, bin" "$vv"
+  family_row validation-deep "softening, bin" "$vd"
+  family_row fig8b "never softening" "$f8"
+  family_row fig8b-rake45 "never softening" "$f8" --set blade.rake=45
+  family_row fig8b-rake60 "never softening" "$f8" --set blade.rake=60
+  family_row fig8b-rake75 "never softening" "$f8" --set blade.rake=75
+  family_row fig5-never "never softening" "$f5" "${never[@]}"
+  family_row table1-hs-never "never softening" "$hs" --set soil.friction.residual=35
+  family_row original "original model" "$o"
+  family_row original-rake60 "original model" "$o" --set blade.rake=60
+  family_row original-phi40 "original model" "$o" --set soil.friction.peak=40 --set soil.friction.residual=34
+  family_row original-bin8 "original model" "$o" --set bin.length=160
+  family_row original-bin10 "original model" "$o" --set bin.length=200
+  family_row original-phi40-bin8 "original model" "$o" --set soil.friction.peak=40 --set soil.friction.residual=34 --set bin.length=160
+  family_row original-bin7-travel4 "original model" "$o" --set bin.length=140 --set run.travel=80
+  family_row tine "original model" cases/tools/tine.toml
+  family_row dozer "original model" cases/tools/dozer.toml
+  family_row scoop "depth path" "$sc"
+  family_row scoop-wall15 "depth path" "$sc" --set blade.wall_friction=15
+  family_row deepening "depth path" "$dp"
+  family_row deepening-phi40 "depth path" "$dp" --set soil.friction.peak=40 --set soil.friction.residual=34
+  family_row fig5-rising "depth path" "$f5" --set 'blade.depth_path=[[0.0, 20.0], [50.0, 12.0]]'
+  family_row table1-s-deepening "depth path" "$s" --set 'blade.depth_path=[[0.0, 8.0], [60.0, 20.0]]'
+  family_row fig5-w20 "finite width" "$f5" --set blade.width=20
+  family_row fig5-w40 "finite width" "$f5" --set blade.width=40
+  family_row fig5-w80 "finite width" "$f5" --set blade.width=80
+  family_row table1-s-w40 "finite width" "$s" --set blade.width=40
+  family_row table1-hs-w40 "finite width" "$hs" --set blade.width=40
+  family_row fig8b-w40 "finite width" "$f8" --set blade.width=40
 } > "$out.rows"
 {
   echo "# Each class's defaults over a family of cases"

@@ -222,7 +222,9 @@ struct FrictionFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     initial: Option<f64>,
     peak: f64,
-    residual: f64,
+    /// Left out: the peak (a soil that never softens); written back.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    residual: Option<f64>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -230,7 +232,9 @@ struct FrictionFile {
 struct AngleFile {
     initial: f64,
     peak: f64,
-    residual: f64,
+    /// Left out: the peak (a soil that never softens); written back.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    residual: Option<f64>,
 }
 
 /// A case read from a file: the model's [`Case`] and its resolved file form.
@@ -624,8 +628,11 @@ fn resolve_refined(soil: &mut SoilFile) -> Result<(f64, AngleLaw, f64, f64), Inp
     let dilation = AngleLaw {
         initial: dilation.initial,
         peak: dilation.peak,
-        residual: dilation.residual,
+        residual: dilation.residual.unwrap_or(dilation.peak),
     };
+    if let Some(d) = soil.dilation.as_mut() {
+        d.residual = Some(dilation.residual);
+    }
     Ok((initial, dilation, peak_shear, band_width))
 }
 
@@ -727,7 +734,8 @@ fn blade_motion(file: &mut CaseFile) -> Result<Option<StraightCut>, InputError> 
 /// angle the residual friction, no cohesion or surcharge; the original
 /// model's initial friction its peak, without dilation or a band.
 fn resolve_soil(soil: &mut SoilFile, model: Model) -> Result<Soil, InputError> {
-    let repose = *soil.repose.get_or_insert(soil.friction.residual);
+    let residual = *soil.friction.residual.get_or_insert(soil.friction.peak);
+    let repose = *soil.repose.get_or_insert(residual);
     let cohesion = *soil.cohesion.get_or_insert(0.0);
     let surcharge = *soil.surcharge.get_or_insert(0.0);
     let (initial, dilation, peak_shear, band_width) = match model {
@@ -747,7 +755,7 @@ fn resolve_soil(soil: &mut SoilFile, model: Model) -> Result<Soil, InputError> {
         friction: AngleLaw {
             initial,
             peak: soil.friction.peak,
-            residual: soil.friction.residual,
+            residual,
         },
         dilation,
         peak_shear,
@@ -1220,6 +1228,25 @@ mod tests {
             e.key, "soil.band_width_d50",
             "dB = 24 > d is named as written"
         );
+    }
+
+    #[test]
+    fn a_soil_without_residual_values_never_softens() {
+        let hardening = REFINED
+            .replace("peak = 35, residual = 30 }", "peak = 35 }")
+            .replace("peak = 5, residual = 0 }", "peak = 5 }");
+        let left_out = loaded(&hardening, &[]);
+        let given = loaded(
+            REFINED,
+            &["soil.friction.residual=35", "soil.dilation.residual=5"],
+        );
+        assert_eq!(left_out.case.soil, given.case.soil);
+        assert_eq!(left_out.case.soil.repose, 35.0, "the repose follows φr");
+        let text = left_out.resolved_toml();
+        assert_eq!(loaded(&text, &[]).case, left_out.case, "written back");
+        assert!(text.contains("residual = 35.0"), "{text}");
+        let e = key_error(&hardening, &["soil.friction.initial=36"]);
+        assert_eq!(e.key, "soil.friction.initial", "φc <= φp = φr still");
     }
 
     #[test]
