@@ -26,13 +26,17 @@ class SensitivityResult:
             (95 % bootstrap intervals) or Morris's ``mu_star``,
             ``mu_star_low``, ``mu_star_high``, ``sigma``, ``mu`` (in the
             output's unit); no rows if a run failed.
+        indices2: ``indices2.csv`` as a DataFrame (``second_order=True``
+            only, else None): per output and pair of keys (``key``,
+            ``key2``), ``S2``, ``S2_low``, ``S2_high``.
         samples: ``samples.csv``: every design run (``run``, ``point``,
             ``k``, the inputs, ``status``, ``error``, the outputs).
         tornado: ``tornado.csv``: the one-at-a-time runs at each key's ends.
         summary: ``summary.json`` as a dict: the study, each output's unit
             and chaos share, ``complete`` (False if a run failed) and
             ``stopped`` (which, and why).
-        files: every file's text by name (``indices.csv``, ``samples.csv``,
+        files: every file's text by name (``indices.csv``, ``indices2.csv``
+            with second-order indices, ``samples.csv``,
             ``tornado.csv``, ``summary.json``, ``sensitivity.md``,
             ``timing.csv``), byte for byte as the command line writes them.
         pictures: the paths of ``indices.png``, ``morris.png`` and
@@ -49,6 +53,7 @@ class SensitivityResult:
             return pd.read_csv(io.StringIO(self.files[name]))
 
         self.indices = frame("indices.csv")
+        self.indices2 = frame("indices2.csv") if "indices2.csv" in self.files else None
         self.samples = frame("samples.csv")
         self.tornado = frame("tornado.csv")
 
@@ -75,6 +80,7 @@ def sensitivity(
     vary: Mapping[str, Range],
     *,
     method: str = "sobol",
+    second_order: bool = False,
     samples: int | None = None,
     levels: int = _soilcut.SENSITIVITY_LEVELS,
     members: int = _soilcut.SENSITIVITY_MEMBERS,
@@ -102,9 +108,12 @@ def sensitivity(
         method: ``"sobol"`` (first-order and total indices, Saltelli's
             design on a scrambled Sobol sequence) or ``"morris"``
             (elementary effects μ*, σ, μ).
+        second_order: Sobol: also the second-order index S2 of every pair
+            of keys (``indices2``), at N (2 keys + 2) design runs instead of
+            N (keys + 2); refused with Morris.
         samples: Sobol: base points N, a power of 2 ≥ 16 (512 if None);
             Morris: trajectories r ≥ 2 (20 if None). The study makes
-            N (keys + 2) or r (keys + 1) design runs, and the tornado's
+            N (keys + 2), N (2 keys + 2) or r (keys + 1) design runs, and the tornado's
             2 keys + 1, each times ``members``.
         levels: Morris: levels p of the grid (even).
         members: members K of each point's ensemble (1: one run a point).
@@ -125,7 +134,16 @@ def sensitivity(
     pandas("soilcut.sensitivity (DataFrames)")  # before the runs, not after them
     case = case_of(case)
     study = _soilcut.SensitivityStudy(
-        native_of(case), list(vary.items()), method, samples, levels, members, dummy, seed, jobs
+        native_of(case),
+        list(vary.items()),
+        method,
+        samples,
+        levels,
+        second_order,
+        members,
+        dummy,
+        seed,
+        jobs,
     )
     if executor is None:
         return SensitivityResult(study.run(pictures))

@@ -296,6 +296,7 @@ class SensitivityStudy:
         method: str,
         samples: int | None,
         levels: int,
+        second_order: bool,
         members: int,
         dummy: bool,
         seed: int,

@@ -56,6 +56,19 @@ def test_sobol_indices_equal_salib_s(cli, tmp_path):
     assert np.all(np.abs(half / si["S1_conf"] - 1) < 0.3)
 
 
+def test_second_order_indices_equal_salib_s(cli, tmp_path):
+    samples, indices = study(cli, tmp_path, "sobol", 1024, "--second-order")
+    y = samples["f"].to_numpy()
+    assert len(y) == 1024 * (2 * len(KEYS) + 2)
+    si = sobol.analyze(PROBLEM, y, calc_second_order=True)
+    np.testing.assert_allclose(indices["S1"], si["S1"], rtol=0, atol=1e-10)
+    np.testing.assert_allclose(indices["ST"], si["ST"], rtol=0, atol=1e-10)
+    pairs = pd.read_csv(tmp_path / "sobol" / "indices2.csv")
+    theirs = [si["S2"][KEYS.index(a), KEYS.index(b)] for a, b in zip(pairs["key"], pairs["key2"])]
+    assert list(zip(pairs["key"], pairs["key2"])) == [("x1", "x2"), ("x1", "x3"), ("x2", "x3")]
+    np.testing.assert_allclose(pairs["S2"], theirs, rtol=0, atol=1e-10)
+
+
 def test_morris_indices_equal_salib_s(cli, tmp_path):
     samples, indices = study(cli, tmp_path, "morris", 30, "--levels", "4")
     x = samples[KEYS].to_numpy()

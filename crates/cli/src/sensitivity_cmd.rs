@@ -33,10 +33,14 @@ pub struct SensitivityArgs {
     #[arg(long, value_enum)]
     method: MethodArg,
     /// Morris: trajectories r (20 when not given); Sobol: base points N, a power of 2 (512 when
-    /// not given); the runs are r (keys + 1) or N (keys + 2), and the tornado's 2 keys + 1, times
-    /// --members.
+    /// not given); the runs are r (keys + 1) or N (keys + 2) (N (2 keys + 2) with
+    /// --second-order), and the tornado's 2 keys + 1, times --members.
     #[arg(long, value_name = "N")]
     samples: Option<usize>,
+    /// Sobol: also the second-order index S2 of every pair of inputs, in indices2.csv (N (2 keys
+    /// + 2) runs instead of N (keys + 2)).
+    #[arg(long)]
+    second_order: bool,
     /// Levels p of Morris's grid (even).
     #[arg(long, value_name = "P", default_value_t = DEFAULT_LEVELS)]
     levels: usize,
@@ -79,12 +83,11 @@ fn prepare(args: &SensitivityArgs) -> Result<(Sensitivity, std::path::PathBuf), 
         Some(name) => (Model::Function(Function::parse(name).map_err(fail)?), 1),
         None => (Model::Case(base), DEFAULT_MEMBERS),
     };
-    let method = match args.method {
-        MethodArg::Morris => Method::Morris {
-            levels: args.levels,
-        },
-        MethodArg::Sobol => Method::Sobol,
+    let name = match args.method {
+        MethodArg::Morris => "morris",
+        MethodArg::Sobol => "sobol",
     };
+    let method = Method::named(name, args.levels, args.second_order).map_err(fail)?;
     let study = Sensitivity {
         model,
         ranges,

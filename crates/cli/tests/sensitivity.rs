@@ -217,6 +217,11 @@ fn bad_designs_exit_2_naming_the_argument_before_any_run() {
             ["--vary", "soil.friction.peak=35:45", "--samples", "12"],
             "--samples 12",
         ),
+        // φr = 30 of Fig. 5 above φp where φp < 30: refused, not run to it.
+        (
+            ["--vary", "soil.friction.peak=25:45", "--samples", "16"],
+            "soil.friction.residual: must be <= soil.friction.peak",
+        ),
     ] {
         let mut args = vec!["sensitivity", &case, "--method", "sobol", "--out", &o];
         args.extend(extra);

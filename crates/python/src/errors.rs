@@ -15,7 +15,7 @@ use std::path::Path;
 /// name, and the Python arguments that stand for them (`soilcut.sweep`'s
 /// `soilcut.fit`'s and `soilcut.sensitivity`'s keywords, `save`'s folder),
 /// longest first.
-const ARGUMENTS: [(&str, &str); 19] = [
+const ARGUMENTS: [(&str, &str); 21] = [
     (
         "give at least one --free key",
         "give at least one key in free",
@@ -29,6 +29,8 @@ const ARGUMENTS: [(&str, &str); 19] = [
         "give at least one key in vary",
     ),
     ("--method morris", "method=\"morris\""),
+    ("--method sobol", "method=\"sobol\""),
+    ("--second-order", "second_order=True"),
     ("--dummy's input", "dummy's input"),
     ("--sample lhs:N", "sample=\"lhs:N\""),
     ("e.g. --out out/NAME", "e.g. \"out/NAME\""),

@@ -59,12 +59,13 @@ impl SensitivityStudy {
         method: &str,
         samples: Option<usize>,
         levels: usize,
+        second_order: bool,
         members: usize,
         dummy: bool,
         seed: u64,
         jobs: usize,
     ) -> PyResult<Self> {
-        let method = Method::named(method, levels).map_err(|e| study_error(py, e))?;
+        let method = Method::named(method, levels, second_order).map_err(|e| study_error(py, e))?;
         let study = Sensitivity {
             model: Model::Case(Case::extract(case)?.get().base(py)?),
             ranges: vary

@@ -1,8 +1,8 @@
 //! Variance-based sensitivity of a case's outputs to its keys: Morris
 //! screening (elementary effects μ*, σ, μ) and Sobol first-order and total
 //! indices (Saltelli's design on a scrambled Sobol sequence, Saltelli's
-//! 2010 S1 and Jansen's ST estimators), each with seeded bootstrap
-//! intervals; SALib gives the same indices on the same samples
+//! 2010 S1 and Jansen's ST estimators) and, on request, second-order
+//! indices (Saltelli 2002), each with seeded bootstrap intervals; SALib gives the same indices on the same samples
 //! (python/tests/test_sensitivity.py).
 //!
 //! Chaos-aware: with `members` K > 1 each design point is an ensemble of K
@@ -69,16 +69,25 @@ pub enum Method {
         /// p, the levels of the grid.
         levels: usize,
     },
-    /// Sobol first-order and total indices.
-    Sobol,
+    /// Sobol first-order and total indices, and with `second_order` those
+    /// of every pair of inputs.
+    Sobol {
+        /// Also S2 of every pair (2d + 2 runs a base point, not d + 2).
+        second_order: bool,
+    },
 }
 
 impl Method {
-    /// `morris` (on `levels` levels) or `sobol`.
-    pub fn named(name: &str, levels: usize) -> Result<Method, StudyError> {
+    /// `morris` (on `levels` levels) or `sobol` (with the second-order
+    /// indices if `second_order`; refused with morris, whose design has
+    /// none).
+    pub fn named(name: &str, levels: usize, second_order: bool) -> Result<Method, StudyError> {
         match name {
+            "morris" if second_order => Err(StudyError::Spec(
+                "--second-order: second-order indices are Sobol's; use --method sobol".into(),
+            )),
             "morris" => Ok(Method::Morris { levels }),
-            "sobol" => Ok(Method::Sobol),
+            "sobol" => Ok(Method::Sobol { second_order }),
             _ => Err(StudyError::Spec(format!(
                 "--method {name}: expected morris or sobol"
             ))),
@@ -90,7 +99,7 @@ impl Method {
     pub fn default_samples(self) -> usize {
         match self {
             Method::Morris { .. } => DEFAULT_TRAJECTORIES,
-            Method::Sobol => DEFAULT_SOBOL_SAMPLES,
+            Method::Sobol { .. } => DEFAULT_SOBOL_SAMPLES,
         }
     }
 }
@@ -174,13 +183,16 @@ impl Sensitivity {
         keys
     }
 
-    /// Runs the study will make: design points and, for a case, the
-    /// tornado's 2 k + 1 points (k keys), each × members.
+    /// Runs the study will make: design points (r (d + 1) Morris, N (d + 2)
+    /// or N (2d + 2) Sobol, d inputs) and, for a case, the tornado's 2 k + 1
+    /// points (k keys), each × members.
     pub fn runs(&self) -> usize {
         let d = self.keys().len();
         let points = match self.method {
             Method::Morris { .. } => self.samples.saturating_mul(d + 1),
-            Method::Sobol => self.samples.saturating_mul(d + 2),
+            Method::Sobol { second_order } => self
+                .samples
+                .saturating_mul(design::rows_per_point(d, second_order)),
         };
         let tornado = match self.model {
             Model::Case(_) => 2 * self.ranges.len() + 1,

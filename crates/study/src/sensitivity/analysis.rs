@@ -4,7 +4,7 @@
 
 use super::bootstrap;
 use super::morris::{morris_indices, MorrisIndex};
-use super::sobol::{sobol_indices, SobolIndex};
+use super::sobol::{sobol_indices, SobolIndices};
 use super::{Method, Sensitivity};
 use crate::figures::mean;
 
@@ -13,8 +13,9 @@ use crate::figures::mean;
 pub enum Indices {
     /// μ*, μ, σ per input.
     Morris(Vec<MorrisIndex>),
-    /// S1, ST per input; `None` for an output that does not vary.
-    Sobol(Option<Vec<SobolIndex>>),
+    /// S1, ST per input (and S2 per pair); `None` for an output that does
+    /// not vary.
+    Sobol(Option<SobolIndices>),
     /// No indices: the output is not defined in this many runs (a band
     /// spacing where a run has fewer than two force peaks).
     Undefined {
@@ -62,7 +63,9 @@ pub fn output_indices(
         Method::Morris { levels } => {
             Indices::Morris(morris_indices(unit, &means, d, levels, resamples, seed))
         }
-        Method::Sobol => Indices::Sobol(sobol_indices(&means, d, resamples, seed)),
+        Method::Sobol { second_order } => {
+            Indices::Sobol(sobol_indices(&means, d, second_order, resamples, seed))
+        }
     };
     OutputIndices {
         name: name.to_string(),

@@ -32,16 +32,20 @@ pub fn check(s: &Sensitivity) -> Result<(), StudyError> {
     }
     let n = s.samples;
     match s.method {
-        Method::Sobol if n < MIN_SOBOL_SAMPLES || !n.is_power_of_two() => Err(spec(format!(
+        Method::Sobol { .. } if n < MIN_SOBOL_SAMPLES || !n.is_power_of_two() => {
+            Err(spec(format!(
             "--samples {n}: Sobol indices need N a power of 2 and at least {MIN_SOBOL_SAMPLES} \
              (SALib's guidance: 500 or more per input)"
-        ))),
-        Method::Sobol if 2 * keys.len() > super::sequence::MAX_DIMENSIONS => Err(spec(format!(
+        )))
+        }
+        Method::Sobol { .. } if 2 * keys.len() > super::sequence::MAX_DIMENSIONS => {
+            Err(spec(format!(
             "--vary: {} inputs; Sobol indices take at most {} (the sequence's dimensions / 2): \
              screen them first with --method morris",
             keys.len(),
             super::sequence::MAX_DIMENSIONS / 2
-        ))),
+        )))
+        }
         Method::Morris { .. } if n < MIN_TRAJECTORIES => Err(spec(format!(
             "--samples {n}: Morris needs at least {MIN_TRAJECTORIES} trajectories (σ), \
              10 to 50 usual"

@@ -10,23 +10,38 @@ use rand_chacha::ChaCha8Rng;
 /// indices of `d` inputs: `n` points of the scrambled Sobol sequence in 2d
 /// dimensions, A = their first d coordinates, B = their last d; for each
 /// point i the rows A_i, A_B^(1)_i … A_B^(d)_i (A_i with coordinate j taken
-/// from B_i), B_i: n (d + 2) rows, in the order SALib's
-/// `sobol.analyze(..., calc_second_order=False)` reads them.
-pub fn saltelli(d: usize, n: usize, seed: u64) -> Vec<Vec<f64>> {
+/// from B_i), then with `second_order` B_A^(1)_i … B_A^(d)_i (B_i with
+/// coordinate j taken from A_i), and B_i: n (d + 2), or n (2d + 2), rows in
+/// the order SALib's `sobol.analyze(..., calc_second_order=...)` reads them.
+pub fn saltelli(d: usize, n: usize, second_order: bool, seed: u64) -> Vec<Vec<f64>> {
     let sequence = Sequence::new(2 * d, Some(seed));
-    let mut rows = Vec::with_capacity(n * (d + 2));
+    let mut rows = Vec::with_capacity(n * rows_per_point(d, second_order));
+    let crossed = |to: &[f64], from: &[f64], j: usize| {
+        let mut row = to.to_vec();
+        row[j] = from[j];
+        row
+    };
     for i in 0..n {
         let point = sequence.point(i as u32);
         let (a, b) = point.split_at(d);
         rows.push(a.to_vec());
-        for j in 0..d {
-            let mut ab = a.to_vec();
-            ab[j] = b[j];
-            rows.push(ab);
+        rows.extend((0..d).map(|j| crossed(a, b, j)));
+        if second_order {
+            rows.extend((0..d).map(|j| crossed(b, a, j)));
         }
         rows.push(b.to_vec());
     }
     rows
+}
+
+/// Rows of Saltelli's design a base point: d + 2, or 2d + 2 with the
+/// second-order rows.
+pub fn rows_per_point(d: usize, second_order: bool) -> usize {
+    if second_order {
+        2 * d + 2
+    } else {
+        d + 2
+    }
 }
 
 /// The step Δ = p / (2 (p − 1)) of a Morris design on `levels` = p levels
@@ -68,15 +83,28 @@ mod tests {
     use super::*;
 
     #[test]
-    fn saltelli_rows_take_one_coordinate_from_b() {
-        let rows = saltelli(3, 4, 1);
-        assert_eq!(rows.len(), 4 * 5);
-        for point in rows.chunks(5) {
-            let (a, b) = (&point[0], &point[4]);
+    fn saltelli_rows_take_one_coordinate_from_the_other_matrix() {
+        assert_eq!(
+            saltelli(3, 4, false, 1),
+            {
+                let all = saltelli(3, 4, true, 1);
+                let first: Vec<Vec<f64>> = all
+                    .chunks(8)
+                    .flat_map(|p| [&p[..4], &p[7..]].concat())
+                    .collect();
+                first
+            },
+            "the second-order rows come between A_B and B, the rest unchanged"
+        );
+        let rows = saltelli(3, 4, true, 1);
+        assert_eq!(rows.len(), 4 * 8);
+        for point in rows.chunks(8) {
+            let (a, b) = (&point[0], &point[7]);
             for j in 0..3 {
                 for k in 0..3 {
-                    let from = if k == j { b } else { a };
-                    assert_eq!(point[1 + j][k], from[k]);
+                    let (ab, ba) = if k == j { (b, a) } else { (a, b) };
+                    assert_eq!(point[1 + j][k], ab[k]);
+                    assert_eq!(point[4 + j][k], ba[k]);
                 }
             }
         }

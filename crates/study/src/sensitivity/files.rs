@@ -1,6 +1,6 @@
-//! The files of a sensitivity study: `indices.csv`, `samples.csv`,
-//! `tornado.csv` (a case's), `summary.json`, `sensitivity.md`,
-//! `timing.csv`.
+//! The files of a sensitivity study: `indices.csv`, `indices2.csv` (the
+//! second-order indices, when asked for), `samples.csv`, `tornado.csv` (a
+//! case's), `summary.json`, `sensitivity.md`, `timing.csv`.
 
 use super::analysis::{Indices, OutputIndices};
 use super::plan::RunRow;
@@ -16,7 +16,7 @@ impl SensitivityResult {
     /// not have; no rows if a run failed.
     pub fn indices_csv(&self) -> String {
         let header = match self.study.method {
-            Method::Sobol => "output,key,S1,S1_low,S1_high,ST,ST_low,ST_high",
+            Method::Sobol { .. } => "output,key,S1,S1_low,S1_high,ST,ST_low,ST_high",
             Method::Morris { .. } => "output,key,mu_star,mu_star_low,mu_star_high,sigma,mu",
         };
         let mut out = CsvText::new(header);
@@ -28,6 +28,31 @@ impl SensitivityResult {
                         .iter()
                         .map(|&x| number(x)),
                 );
+                out.fields(&fields);
+            }
+        }
+        out.finish()
+    }
+
+    /// `indices2.csv`: `output,key,key2,S2,S2_low,S2_high`, a row per pair
+    /// of inputs (key before key2 in the inputs' order) of every output;
+    /// empty fields for an output without indices; no rows if a run failed.
+    pub fn indices2_csv(&self) -> String {
+        let mut out = CsvText::new("output,key,key2,S2,S2_low,S2_high");
+        let d = self.keys.len();
+        for o in self.analysis.as_deref().unwrap_or(&[]) {
+            let pairs = match &o.indices {
+                Indices::Sobol(Some(all)) => all.pairs.clone(),
+                _ => Vec::new(),
+            };
+            for (p, (j, k)) in (0..d)
+                .flat_map(|j| (j + 1..d).map(move |k| (j, k)))
+                .enumerate()
+            {
+                let s2 = pairs.get(p).map(|p| p.s2);
+                let numbers = s2.map_or([f64::NAN; 3], |i| [i.value, i.low, i.high]);
+                let mut fields = vec![o.name.clone(), self.keys[j].clone(), self.keys[k].clone()];
+                fields.extend(numbers.iter().map(|&x| number(x)));
                 out.fields(&fields);
             }
         }
@@ -119,9 +144,9 @@ impl SensitivityResult {
     /// unit, chaos share and the runs that lack it.
     pub fn summary_json(&self) -> String {
         let s = &self.study;
-        let (method, levels) = match s.method {
-            Method::Sobol => ("sobol", None),
-            Method::Morris { levels } => ("morris", Some(levels)),
+        let (method, levels, second_order) = match s.method {
+            Method::Sobol { second_order } => ("sobol", None, second_order),
+            Method::Morris { levels } => ("morris", Some(levels), false),
         };
         let ranges: Vec<serde_json::Value> = s
             .ranges
@@ -147,7 +172,7 @@ impl SensitivityResult {
         let all = self.runs.iter().chain(&self.tornado_runs);
         let failed = all.filter(|r| r.outcome.is_err()).count();
         let json = serde_json::json!({
-            "method": method, "levels": levels, "samples": s.samples, "members": s.members,
+            "method": method, "levels": levels, "second_order": second_order, "samples": s.samples, "members": s.members,
             "perturbation": self.perturbation, "seed": s.seed, "dummy": s.dummy,
             "keys": ranges, "design_points": self.design.len(), "runs": self.runs.len(),
             "tornado_points": self.tornado.len(), "tornado_runs": self.tornado_runs.len(),
@@ -164,10 +189,11 @@ impl SensitivityResult {
     /// The files, name and contents (timing.csv last; tornado.csv for a
     /// case only).
     pub fn files(&self) -> Vec<(&'static str, String)> {
-        let mut files = vec![
-            ("indices.csv", self.indices_csv()),
-            ("samples.csv", self.samples_csv()),
-        ];
+        let mut files = vec![("indices.csv", self.indices_csv())];
+        if let Method::Sobol { second_order: true } = self.study.method {
+            files.push(("indices2.csv", self.indices2_csv()));
+        }
+        files.push(("samples.csv", self.samples_csv()));
         if !self.tornado.is_empty() {
             files.push(("tornado.csv", self.tornado_csv()));
         }
@@ -184,11 +210,11 @@ impl SensitivityResult {
 fn index_fields(method: Method, indices: &Indices, j: usize) -> Vec<f64> {
     match indices {
         Indices::Undefined { .. } => match method {
-            Method::Sobol => vec![f64::NAN; 6],
+            Method::Sobol { .. } => vec![f64::NAN; 6],
             Method::Morris { .. } => vec![f64::NAN; 5],
         },
         Indices::Sobol(Some(all)) => {
-            let i = &all[j];
+            let i = &all.inputs[j];
             vec![
                 i.s1.value, i.s1.low, i.s1.high, i.st.value, i.st.low, i.st.high,
             ]
@@ -255,7 +281,9 @@ impl SensitivityResult {
         md += &format!("Chaos share: {share}.\n\n");
         let method = self.study.method;
         let head = match method {
-            Method::Sobol => "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n",
+            Method::Sobol { .. } => {
+                "| key | S1 | S1 95 % | ST | ST 95 % |\n|---|---|---|---|---|\n"
+            }
             Method::Morris { .. } => "| key | μ* | μ* 95 % | σ | μ |\n|---|---|---|---|---|\n",
         };
         md += head;
@@ -269,7 +297,7 @@ impl SensitivityResult {
                 }
             };
             let cells = match method {
-                Method::Sobol => [
+                Method::Sobol { .. } => [
                     n(f[0]),
                     format!("{} to {}", n(f[1]), n(f[2])),
                     n(f[3]),
@@ -284,7 +312,26 @@ impl SensitivityResult {
             };
             md += &format!("| {key} | {} |\n", cells.join(" | "));
         }
-        md + &self.tornado_table(o)
+        md + &self.pairs_table(o) + &self.tornado_table(o)
+    }
+
+    /// Output `o`'s second-order indices, if the study has them.
+    fn pairs_table(&self, o: &OutputIndices) -> String {
+        let Indices::Sobol(Some(all)) = &o.indices else {
+            return String::new();
+        };
+        if all.pairs.is_empty() {
+            return String::new();
+        }
+        let mut md = String::from("\n| keys | S2 | S2 95 % |\n|---|---|---|\n");
+        for p in &all.pairs {
+            let i = p.s2;
+            md += &format!(
+                "| {} × {} | {:.4} | {:.4} to {:.4} |\n",
+                self.keys[p.j], self.keys[p.k], i.value, i.low, i.high
+            );
+        }
+        md
     }
 
     /// Output `o`'s tornado in words: the case's value, each key's at its

@@ -68,8 +68,8 @@ impl SensitivityResult {
         let (series, x_label) = match &o.indices {
             Indices::Sobol(Some(all)) => (
                 vec![
-                    series("S1", all.iter().map(|i| interval(&i.s1)).collect()),
-                    series("ST", all.iter().map(|i| interval(&i.st)).collect()),
+                    series("S1", all.inputs.iter().map(|i| interval(&i.s1)).collect()),
+                    series("ST", all.inputs.iter().map(|i| interval(&i.st)).collect()),
                 ],
                 format!("{}: S1, ST (–)", o.name),
             ),

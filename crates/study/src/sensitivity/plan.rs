@@ -108,7 +108,7 @@ impl Sensitivity {
             let set = t.setting(&self.ranges).map(|(key, v)| (key.to_string(), v));
             (Point::Tornado(i), set.into_iter().collect())
         });
-        let runs = design
+        let runs: Vec<Run> = design
             .chain(ends)
             .flat_map(|(point, set)| {
                 ks.iter().map(move |&k| Run {
@@ -118,6 +118,9 @@ impl Sensitivity {
                 })
             })
             .collect();
+        if let Model::Case(base) = &self.model {
+            check_points(base, &runs)?;
+        }
         Ok(Plan {
             unit,
             values,
@@ -142,7 +145,9 @@ impl Sensitivity {
         let d = self.keys().len();
         let unit = match self.method {
             Method::Morris { levels } => design::morris(d, self.samples, levels, self.seed),
-            Method::Sobol => design::saltelli(d, self.samples, self.seed),
+            Method::Sobol { second_order } => {
+                design::saltelli(d, self.samples, second_order, self.seed)
+            }
         };
         let scale = |row: &Vec<f64>| {
             row.iter()
@@ -178,6 +183,35 @@ impl Model {
             wall_time_s,
         }
     }
+}
+
+/// Refuses, before any run, the first point of the design or the tornado
+/// whose values make no valid case (φr > φp where the ranges of both
+/// overlap, a band wider than the depth): the ranges' box must hold valid
+/// cases only, or the study would stop at that point's run.
+fn check_points(base: &BaseCase, runs: &[Run]) -> Result<(), StudyError> {
+    let mut last = None;
+    for run in runs {
+        if last == Some(run.point) {
+            continue;
+        }
+        last = Some(run.point);
+        let overrides = run
+            .set
+            .iter()
+            .map(|(key, v)| override_of(key, &toml::Value::Float(*v)))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(StudyError::Spec)?;
+        if let Err(e) = base.load(&overrides) {
+            let at: Vec<String> = run.set.iter().map(|(k, v)| format!("{k}={v}")).collect();
+            return Err(StudyError::Spec(format!(
+                "--vary: the point {} of the design is no valid case ({e}): narrow the \
+                 ranges so that every combination of them is one",
+                at.join(", ")
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Member k of the case with the keys `set` to their values: its outputs
