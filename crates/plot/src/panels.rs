@@ -127,9 +127,9 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     let (y0, y1) = range(all().map(|p| p.1));
     let labelled = panel.series.iter().any(|s| !s.label.is_empty());
     let legend = legend_box(panel, area);
-    let (y1, corner) = match labelled {
+    let ((x1, y1), corner) = match labelled {
         true => legend_room(panel, (x0, x1), (y0, y1), legend),
-        false => (y1, SeriesLabelPosition::UpperLeft),
+        false => ((x1, y1), SeriesLabelPosition::UpperLeft),
     };
     // Counts (levels, runs) across: a tick between them means nothing.
     let whole = all().all(|p| p.0.fract() == 0.0) && x1 - x0 <= 20.0;
@@ -164,7 +164,11 @@ fn draw_panel<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
         .draw()
         .map_err(text)?;
     for (i, s) in panel.series.iter().enumerate() {
-        draw_series(&mut chart, s, SERIES[i % SERIES.len()])?;
+        let look = Look {
+            colour: SERIES[i % SERIES.len()],
+            shape: i / SERIES.len(),
+        };
+        draw_series(&mut chart, s, look)?;
     }
     if labelled {
         chart
@@ -218,20 +222,57 @@ fn superscript(n: i32) -> String {
 /// A series: dots (smaller where there are many), or a line broken where a value is missing (a lone
 /// point between gaps is a dot, which a line of one point would not
 /// show); its legend entry drawn as the series is.
+/// A series' colour, and its dots' shape: a circle for the palette's
+/// first round of series, then a triangle, a square and a cross, so that
+/// more series than colours (a study's fifteen keys) stay apart.
+#[derive(Clone, Copy)]
+struct Look {
+    colour: RGBColor,
+    shape: usize,
+}
+
+/// The styles of a dot's four shapes (circle, triangle, square, cross),
+/// all transparent but `look`'s own (or all, for no dot).
+fn shape_styles(look: Option<Look>) -> [ShapeStyle; 4] {
+    let mut styles = [TRANSPARENT.filled(); 4];
+    if let Some(look) = look {
+        styles[look.shape % 4] = match look.shape % 4 {
+            3 => look.colour.stroke_width(2),
+            _ => look.colour.filled(),
+        };
+    }
+    styles
+}
+
+/// A dot of the shape `styles` draws at `$at` (a data point or a pixel of
+/// the legend), `$r` pixels: one element type for every shape, so that
+/// the series and its legend entry are drawn alike.
+macro_rules! marker {
+    ($at:expr, $styles:expr, $r:expr) => {{
+        let [circle, triangle, square, cross] = $styles;
+        EmptyElement::at($at)
+            + Circle::new((0, 0), $r, circle)
+            + TriangleMarker::new((0, 0), $r + 1, triangle)
+            + Rectangle::new([(-$r, -$r), ($r, $r)], square)
+            + Cross::new((0, 0), $r, cross)
+    }};
+}
+
 fn draw_series<'a, DB: DrawingBackend + 'a>(
     chart: &mut PanelChart<'a, DB>,
     s: &Series,
-    colour: RGBColor,
+    look: Look,
 ) -> DrawResult {
+    let colour = look.colour;
     // Many dots shrink, so that a line drawn over them (a fit over the
     // measured points) stays visible.
     let radius = if s.points.len() > 60 { 2 } else { 4 };
-    let dot = move |p: (f64, f64)| Circle::new(p, radius, colour.filled());
+    let dots = shape_styles(Some(look));
     for run in finite_runs(&s.points) {
         match (s.mark, run) {
             (SeriesMark::Points, _) | (SeriesMark::Line, [_]) => {
                 chart
-                    .draw_series(run.iter().map(|&p| dot(p)))
+                    .draw_series(run.iter().map(|&p| marker!(p, dots, radius)))
                     .map_err(text)?;
             }
             (SeriesMark::Line, _) => {
@@ -243,17 +284,15 @@ fn draw_series<'a, DB: DrawingBackend + 'a>(
     if !s.label.is_empty() {
         // One element type for both marks: the one not drawn is transparent.
         let (dot, line) = match s.mark {
-            SeriesMark::Points => (colour.filled(), TRANSPARENT.stroke_width(0)),
-            SeriesMark::Line => (TRANSPARENT.filled(), colour.stroke_width(3)),
+            SeriesMark::Points => (dots, TRANSPARENT.stroke_width(0)),
+            SeriesMark::Line => (shape_styles(None), colour.stroke_width(3)),
         };
         chart
             .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
             .map_err(text)?
             .label(s.label.as_str())
             .legend(move |(x, y)| {
-                EmptyElement::at((x, y))
-                    + Circle::new((10, 0), 5, dot)
-                    + PathElement::new([(0, 0), (20, 0)], line)
+                marker!((x + 10, y), dot, 5) + PathElement::new([(-10, 0), (10, 0)], line)
             });
     }
     Ok(())
@@ -289,24 +328,33 @@ fn legend_box<DB: DrawingBackend>(panel: &Panel, area: &DrawingArea<DB, Shift>) 
     (box_w / plot_w, box_h / plot_h)
 }
 
-/// The top of the y axis and the legend's corner: the corner whose box
-/// covers no point of the series if one does; else the axis is raised
-/// until the box fits above every point, in an upper corner (a legend
-/// over the start of a curve hid it, issue 41).
+/// The ends (x1, y1) of the axes and the legend's corner: the corner
+/// whose box covers no point of the series if one does; else the y axis is
+/// raised until the box fits above every point, in an upper corner (a
+/// legend over the start of a curve hid it, issue 41), or, for a box too
+/// tall for that (many series), the x axis is widened until it fits beside
+/// them, on the right.
 fn legend_room(
     panel: &Panel,
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
     (w, h): (f64, f64),
-) -> (f64, SeriesLabelPosition) {
+) -> ((f64, f64), SeriesLabelPosition) {
     let (corner, covered) = legend_corner(panel, (x0, x1), (y0, y1), (w, h));
-    // A gap of 2 % of the raised axis between the curves and the box.
-    if covered == 0 || h >= 0.5 {
-        return (y1, corner);
+    if covered == 0 {
+        return ((x1, y1), corner);
     }
-    let raised = y0 + (y1 - y0) / (0.98 - h);
-    let (corner, _) = legend_corner(panel, (x0, x1), (y0, raised), (w, h));
-    (raised, corner)
+    // A gap of 2 % of the widened axis between the points and the box.
+    if h < 0.5 {
+        let raised = y0 + (y1 - y0) / (0.98 - h);
+        let (corner, _) = legend_corner(panel, (x0, x1), (y0, raised), (w, h));
+        return ((x1, raised), corner);
+    }
+    if w < 0.5 {
+        let widened = x0 + (x1 - x0) / (0.98 - w);
+        return ((widened, y1), SeriesLabelPosition::UpperRight);
+    }
+    ((x1, y1), corner)
 }
 
 /// The corner of the plotting area whose legend box of `size` (fractions
@@ -480,11 +528,31 @@ mod tests {
         let panel = xy(series);
         let (_, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
         assert!(covered > 0, "the test needs crowded corners");
-        let (top, corner) = legend_room(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
+        let ((_, top), corner) = legend_room(&panel, (0.0, 10.0), (0.0, 10.0), (0.4, 0.3));
         assert!(top > 10.0, "the axis rose: {top}");
         let (again, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, top), (0.4, 0.3));
         assert_eq!(covered, 0, "the legend covers no point");
         assert_eq!(format!("{again:?}"), format!("{corner:?}"));
+    }
+
+    #[test]
+    fn a_legend_too_tall_to_rise_above_the_points_goes_beside_them() {
+        // Fifteen keys' dots, as a Morris panel's, over the whole panel: a
+        // box of 0.7 of its height covers some wherever it sits.
+        let series = (0..15)
+            .map(|i| {
+                let v = f64::from(i) * 10.0 / 14.0;
+                Series::points("key", vec![(v, v), (10.0 - v, v)])
+            })
+            .collect();
+        let panel = xy(series);
+        let (_, covered) = legend_corner(&panel, (0.0, 10.0), (0.0, 10.0), (0.3, 0.7));
+        assert!(covered > 0, "the test needs crowded corners");
+        let ((right, top), _) = legend_room(&panel, (0.0, 10.0), (0.0, 10.0), (0.3, 0.7));
+        assert_eq!(top, 10.0, "no rise would be enough");
+        assert!(right > 10.0, "the x axis widened: {right}");
+        let (_, covered) = legend_corner(&panel, (0.0, right), (0.0, 10.0), (0.3, 0.7));
+        assert_eq!(covered, 0, "the legend covers no point");
     }
 
     /// A single column is as wide as the run's pictures, and the title
