@@ -80,7 +80,7 @@ never=(--set soil.friction.residual=40 --set soil.dilation.residual=10)
   family_row table1-hs-rake60 "softening, raked" "$hs" --set blade.rake=60
   family_row fig5-bin8 "softening, bin" "$f5" --set bin.length=160
   family_row fig5-bin10 "softening, bin" "$f5" --set bin.length=200
-  family_row table1-s-bin6 "softening, bin" "$s" --set bin.length=120
+  family_row table1-s-bin6-travel3 "softening, bin" "$s" --set bin.length=120 --set run.travel=60
   family_row table1-hs-bin8 "softening, bin" "$hs" --set bin.length=160
   family_row validation-vertical "softening, bin" "$vv"
   family_row validation-deep "softening, bin" "$vd"
