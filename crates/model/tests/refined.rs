@@ -20,6 +20,31 @@ fn first_increment_is_coulomb_with_initial_friction() {
     }
 }
 
+/// Without cohesion or surcharge every force is γ0 times a geometric
+/// quantity, so P/(γ0 d²) does not depend on the unit weight (the
+/// sensitivity study leaves `soil.unit_weight` out for this): Fig. 5's
+/// soil over 1.5 d at γ0 = 1 and 2.7, the same normalised force to
+/// round-off at every increment.
+#[test]
+fn the_normalised_force_does_not_depend_on_the_unit_weight() {
+    let case = common::refined("fig5", 1.5, 100.0);
+    let mut heavier = case.clone();
+    heavier.soil.unit_weight *= 2.7;
+    let (a, _) = common::run(&case);
+    let (b, _) = common::run(&heavier);
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert!(
+            (x.force_norm - y.force_norm).abs() <= 1e-12 * x.force_norm,
+            "step {}: {} vs {}",
+            x.step,
+            x.force_norm,
+            y.force_norm
+        );
+        assert_eq!(x.x_emergence, y.x_emergence, "step {}", x.step);
+    }
+}
+
 #[test]
 fn a_band_narrower_than_a_node_is_the_original_slip_line() {
     let original = common::original(1.5, 100.0);
