@@ -42,7 +42,7 @@ mm/s, SETTINGS grains.settings()), in results/bucket (or results/OUT):
   with the records so far).
 
 Checkpoints as cut.py's: Yade's state and the recorder's in
-checkpoints/RUN.{yade.gz,pkl} (not committed); --resume continues from them
+checkpoints/RUN.{yade.gz,pkl} (committed at a session's end: README.md); --resume continues from them
 (or starts from the bed when there is none).
 """
 
