@@ -219,9 +219,6 @@ fn superscript(n: i32) -> String {
         .collect()
 }
 
-/// A series: dots (smaller where there are many), or a line broken where a value is missing (a lone
-/// point between gaps is a dot, which a line of one point would not
-/// show); its legend entry drawn as the series is.
 /// A series' colour, and its dots' shape: a circle for the palette's
 /// first round of series, then a triangle, a square and a cross, so that
 /// more series than colours (a study's fifteen keys) stay apart.
@@ -258,6 +255,9 @@ macro_rules! marker {
     }};
 }
 
+/// A series: dots (smaller where there are many), or a line broken where a value is missing (a lone
+/// point between gaps is a dot, which a line of one point would not
+/// show); its legend entry drawn as the series is.
 fn draw_series<'a, DB: DrawingBackend + 'a>(
     chart: &mut PanelChart<'a, DB>,
     s: &Series,

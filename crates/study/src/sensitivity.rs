@@ -2,7 +2,8 @@
 //! screening (elementary effects μ*, σ, μ) and Sobol first-order and total
 //! indices (Saltelli's design on a scrambled Sobol sequence, Saltelli's
 //! 2010 S1 and Jansen's ST estimators) and, on request, second-order
-//! indices (Saltelli 2002), each with seeded bootstrap intervals; SALib gives the same indices on the same samples
+//! indices (Saltelli 2002), each with seeded bootstrap intervals; SALib
+//! gives the same indices on the same samples
 //! (python/tests/test_sensitivity.py).
 //!
 //! Chaos-aware: with `members` K > 1 each design point is an ensemble of K

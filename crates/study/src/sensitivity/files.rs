@@ -5,7 +5,7 @@
 use super::analysis::{Indices, OutputIndices};
 use super::plan::RunRow;
 use super::runs::SensitivityResult;
-use super::{bootstrap, outputs, Method};
+use super::{bootstrap, outputs, sobol, Method};
 use crate::field::number;
 use soilcut_io::CsvText;
 
@@ -39,17 +39,13 @@ impl SensitivityResult {
     /// empty fields for an output without indices; no rows if a run failed.
     pub fn indices2_csv(&self) -> String {
         let mut out = CsvText::new("output,key,key2,S2,S2_low,S2_high");
-        let d = self.keys.len();
         for o in self.analysis.as_deref().unwrap_or(&[]) {
-            let pairs = match &o.indices {
-                Indices::Sobol(Some(all)) => all.pairs.clone(),
-                _ => Vec::new(),
+            let found = match &o.indices {
+                Indices::Sobol(Some(all)) => all.pairs.as_slice(),
+                _ => &[],
             };
-            for (p, (j, k)) in (0..d)
-                .flat_map(|j| (j + 1..d).map(move |k| (j, k)))
-                .enumerate()
-            {
-                let s2 = pairs.get(p).map(|p| p.s2);
+            for (p, (j, k)) in sobol::pairs(self.keys.len()).enumerate() {
+                let s2 = found.get(p).map(|p| p.s2);
                 let numbers = s2.map_or([f64::NAN; 3], |i| [i.value, i.low, i.high]);
                 let mut fields = vec![o.name.clone(), self.keys[j].clone(), self.keys[k].clone()];
                 fields.extend(numbers.iter().map(|&x| number(x)));

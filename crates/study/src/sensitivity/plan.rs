@@ -7,6 +7,7 @@ use super::{design, outputs, Method, Model, Sensitivity};
 use crate::ensemble::{member_offsets, Perturbation};
 use crate::error::StudyError;
 use crate::run::{override_of, BaseCase};
+use soilcut_io::Override;
 
 /// Which point a run belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -196,12 +197,7 @@ fn check_points(base: &BaseCase, runs: &[Run]) -> Result<(), StudyError> {
             continue;
         }
         last = Some(run.point);
-        let overrides = run
-            .set
-            .iter()
-            .map(|(key, v)| override_of(key, &toml::Value::Float(*v)))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(StudyError::Spec)?;
+        let overrides = overrides_of(&run.set).map_err(StudyError::Spec)?;
         if let Err(e) = base.load(&overrides) {
             let at: Vec<String> = run.set.iter().map(|(k, v)| format!("{k}={v}")).collect();
             return Err(StudyError::Spec(format!(
@@ -214,16 +210,20 @@ fn check_points(base: &BaseCase, runs: &[Run]) -> Result<(), StudyError> {
     Ok(())
 }
 
+/// The overrides that set the keys `set` to their values.
+fn overrides_of(set: &[(String, f64)]) -> Result<Vec<Override>, String> {
+    set.iter()
+        .map(|(key, v)| override_of(key, &toml::Value::Float(*v)))
+        .collect()
+}
+
 /// Member k of the case with the keys `set` to their values: its outputs
 /// and wall time.
 fn run_member(base: &BaseCase, set: &[(String, f64)], k: i32) -> (Result<Vec<f64>, String>, f64) {
-    let mut overrides = Vec::new();
-    for (key, v) in set {
-        match override_of(key, &toml::Value::Float(*v)) {
-            Ok(o) => overrides.push(o),
-            Err(e) => return (Err(e), 0.0),
-        }
-    }
+    let mut overrides = match overrides_of(set) {
+        Ok(o) => o,
+        Err(e) => return (Err(e), 0.0),
+    };
     if k != 0 {
         let member = base
             .load(&overrides)

@@ -63,6 +63,12 @@ impl Blocks {
     }
 }
 
+/// The pairs j < k of `d` inputs, in the order (0, 1), (0, 2), … of
+/// [`SobolIndices::pairs`] and `indices2.csv`.
+pub fn pairs(d: usize) -> impl Iterator<Item = (usize, usize)> {
+    (0..d).flat_map(move |j| (j + 1..d).map(move |k| (j, k)))
+}
+
 fn pick(v: &[f64], take: &[usize]) -> Vec<f64> {
     take.iter().map(|&i| v[i]).collect()
 }
@@ -176,11 +182,10 @@ pub fn sobol_indices(
             s2: Interval::of(second_order_index(&blocks, j, k, &all), &replicates),
         }
     };
-    let pairs = (0..d).flat_map(|j| (j + 1..d).map(move |k| (j, k)));
     Some(SobolIndices {
         inputs: (0..d).map(index).collect(),
         pairs: if second_order {
-            pairs.map(pair).collect()
+            pairs(d).map(pair).collect()
         } else {
             Vec::new()
         },
