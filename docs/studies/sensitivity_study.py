@@ -99,11 +99,9 @@ def summary(path):
 
 def same_keys(s, keys):
     """Whether summary `s` is of the ranges `keys` (KEY=lo:hi)."""
-    held = [f"{k['key']}={k['lo']:g}:{k['hi']:g}" for k in s["keys"]]
-    return held == [
-        f"{k.split('=')[0]}={float(k.split('=')[1].split(':')[0]):g}:{float(k.split(':')[1]):g}"
-        for k in keys
-    ]
+    held = [(k["key"], k["lo"], k["hi"]) for k in s["keys"]]
+    given = [(key, *map(float, span.split(":"))) for key, span in (k.split("=") for k in keys)]
+    return held == given
 
 
 def study(args, soil, phase, method, samples, members, keys, extra=()):
